@@ -1,0 +1,214 @@
+//! The topology and geometry arenas of a part.
+
+use serde::{Deserialize, Serialize};
+use thinwall_geom::{BoundingBox, CurveKind, NurbsCurve, Point3, Surface, Tolerances};
+
+macro_rules! index_type {
+    ($($name:ident),*) => {$(
+        /// An index into the part's arena of that kind.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+        pub struct $name(pub u32);
+        impl $name {
+            pub fn index(self) -> usize { self.0 as usize }
+        }
+    )*};
+}
+index_type!(BodyId, FaceId, LoopId, EdgeId, VertexId);
+
+/// Length and angle units of the source file; the model itself is always in
+/// millimetres and radians.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Units {
+    /// The file's length unit name (`millimetre`, `inch`, …).
+    pub length: String,
+    /// Millimetres per file length unit.
+    pub mm_per_unit: f64,
+    /// The file's angle unit name (`radian`, `degree`).
+    pub angle: String,
+    /// Radians per file angle unit.
+    pub rad_per_unit: f64,
+}
+
+impl Default for Units {
+    fn default() -> Self {
+        Self {
+            length: "millimetre".into(),
+            mm_per_unit: 1.0,
+            angle: "radian".into(),
+            rad_per_unit: 1.0,
+        }
+    }
+}
+
+/// What kind of STEP item a body came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyKind {
+    /// `MANIFOLD_SOLID_BREP`
+    ManifoldSolid,
+    /// `BREP_WITH_VOIDS`
+    SolidWithVoids,
+    /// A `SHELL_BASED_SURFACE_MODEL` whose shells are all closed.
+    ClosedSurfaceModel,
+}
+
+/// A solid body.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Body {
+    /// Entity id of the solid (or surface model).
+    pub step_id: u64,
+    pub name: String,
+    pub kind: BodyKind,
+    pub shells: Vec<Shell>,
+    /// The product occurrence path placing it, when it came from an assembly.
+    pub placement: Option<String>,
+}
+
+/// A shell of a body: the outer one, or a cavity.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Shell {
+    pub step_id: u64,
+    /// A cavity (void) shell.
+    pub is_void: bool,
+    pub faces: Vec<FaceId>,
+}
+
+/// A face: one STEP face.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Face {
+    /// Entity id of the `ADVANCED_FACE` (or `FACE_SURFACE`).
+    pub step_id: u64,
+    pub name: String,
+    pub body: BodyId,
+    pub surface: Surface,
+    /// `true` when the face's outward normal (pointing out of the material)
+    /// is the surface's own normal; face, shell and cavity orientations are
+    /// all folded in.
+    pub same_sense: bool,
+    /// Outer loop(s) first. Each loop runs with the face on its left seen
+    /// from the outward normal.
+    pub loops: Vec<LoopId>,
+}
+
+/// A face boundary.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Loop {
+    pub face: FaceId,
+    /// The file marked it `FACE_OUTER_BOUND`.
+    pub is_outer: bool,
+    pub coedges: Vec<Coedge>,
+    /// For a `VERTEX_LOOP` (a cone apex, a sphere pole): its vertex.
+    pub vertex: Option<VertexId>,
+}
+
+/// One use of an edge by a loop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Coedge {
+    pub edge: EdgeId,
+    /// The loop runs along the edge from its start to its end.
+    pub forward: bool,
+}
+
+/// An edge.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Edge {
+    /// Entity id of the `EDGE_CURVE`.
+    pub step_id: u64,
+    pub start: VertexId,
+    pub end: VertexId,
+    pub curve: CurveKind,
+    /// The exact curve between the vertices, start → end; `None` when the
+    /// reader could not derive it (reported as a read issue).
+    pub nurbs: Option<NurbsCurve>,
+}
+
+/// A vertex.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Vertex {
+    /// Entity id of the `VERTEX_POINT`.
+    pub step_id: u64,
+    pub point: Point3,
+}
+
+/// Surface geometry that is not part of any solid (an `OPEN_SHELL` of a
+/// surface model beside the solid, as some NIST files carry). Counted and
+/// reported, never mixed into the solid's faces, graph or recognition.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Supplemental {
+    /// Entity ids of the surface models.
+    pub surface_models: Vec<u64>,
+    /// Number of faces in them.
+    pub face_count: usize,
+}
+
+/// A part: everything read from one STEP file.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Part {
+    pub units: Units,
+    pub bodies: Vec<Body>,
+    pub faces: Vec<Face>,
+    pub loops: Vec<Loop>,
+    pub edges: Vec<Edge>,
+    pub vertices: Vec<Vertex>,
+    pub supplemental: Supplemental,
+}
+
+impl Part {
+    pub fn face(&self, id: FaceId) -> &Face {
+        &self.faces[id.index()]
+    }
+
+    pub fn edge(&self, id: EdgeId) -> &Edge {
+        &self.edges[id.index()]
+    }
+
+    pub fn vertex(&self, id: VertexId) -> &Vertex {
+        &self.vertices[id.index()]
+    }
+
+    pub fn loop_(&self, id: LoopId) -> &Loop {
+        &self.loops[id.index()]
+    }
+
+    /// Ids of every face, in order.
+    pub fn face_ids(&self) -> impl Iterator<Item = FaceId> + '_ {
+        (0..self.faces.len() as u32).map(FaceId)
+    }
+
+    /// Number of faces of the solid bodies.
+    pub fn solid_face_count(&self) -> usize {
+        self.faces.len()
+    }
+
+    /// The first face whose `ADVANCED_FACE` entity id is `step_id`.
+    pub fn face_by_step_id(&self, step_id: u64) -> Option<FaceId> {
+        self.faces
+            .iter()
+            .position(|f| f.step_id == step_id)
+            .map(|i| FaceId(i as u32))
+    }
+
+    /// The bounding box of all vertices and edge control hulls (a cover of
+    /// the part, exact for straight-edged parts).
+    pub fn bounding_box(&self) -> BoundingBox {
+        let mut b = BoundingBox::empty();
+        for v in &self.vertices {
+            b.add_point(&v.point);
+        }
+        for e in &self.edges {
+            if let Some(n) = &e.nurbs {
+                for (a, bb) in n.spans() {
+                    for k in 0..=4 {
+                        b.add_point(&n.point(a + (bb - a) * k as f64 / 4.0));
+                    }
+                }
+            }
+        }
+        b
+    }
+
+    /// Tolerances scaled to this part.
+    pub fn tolerances(&self) -> Tolerances {
+        Tolerances::for_part(self.bounding_box().diagonal())
+    }
+}

@@ -1,0 +1,219 @@
+//! Integration over a free-form face in its parameter space.
+//!
+//! The face's loops are sampled along their edges, projected onto the
+//! surface (point inversion, each from the previous parameter), and the
+//! resulting polygons are triangulated with spade's constrained Delaunay
+//! triangulation. Triangles whose centre lies inside the loops (even–odd)
+//! make up the face; each is integrated adaptively (midpoint rule,
+//! subdivided until two levels agree to 1e-7 relative).
+
+use crate::model::{Face, Part};
+use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+use thinwall_geom::{BoundingBox, NurbsSurface, Point3, Vector3};
+
+/// Area, centroid and box of a free-form face.
+pub struct MeshIntegral {
+    pub area: f64,
+    pub centroid: Point3,
+    pub bbox: BoundingBox,
+    pub warnings: Vec<String>,
+}
+
+/// Samples per knot span of a boundary edge.
+const SAMPLES_PER_SPAN: usize = 8;
+/// Deepest adaptive subdivision of a triangle.
+const MAX_DEPTH: u32 = 7;
+/// Relative agreement at which subdivision stops.
+const REL_TOL: f64 = 1e-7;
+
+/// The loops of `face` as polygons in the parameter space of `s`.
+pub fn parameter_loops(
+    part: &Part,
+    face: &Face,
+    s: &NurbsSurface,
+    warnings: &mut Vec<String>,
+) -> Vec<Vec<[f64; 2]>> {
+    let ((u0, u1), (v0, v1)) = s.domain();
+    let mut loops = Vec::new();
+    let mut max_dist: f64 = 0.0;
+    let mut wraps = false;
+    for &l in &face.loops {
+        let mut poly: Vec<[f64; 2]> = Vec::new();
+        let mut hint = None;
+        for ce in &part.loop_(l).coedges {
+            let Some(c) = &part.edge(ce.edge).nurbs else {
+                continue;
+            };
+            let mut ts: Vec<f64> = Vec::new();
+            for (a, b) in c.spans() {
+                for k in 0..SAMPLES_PER_SPAN {
+                    ts.push(a + (b - a) * k as f64 / SAMPLES_PER_SPAN as f64);
+                }
+            }
+            ts.push(c.domain().1);
+            if !ce.forward {
+                ts.reverse();
+            }
+            ts.pop(); // the next coedge starts there
+            for t in ts {
+                let (u, v, d) = s.invert(&c.point(t), hint);
+                max_dist = max_dist.max(d);
+                if let Some(&[pu, pv]) = poly.last() {
+                    if (u - pu).abs() > 0.5 * (u1 - u0) || (v - pv).abs() > 0.5 * (v1 - v0) {
+                        wraps = true;
+                    }
+                }
+                hint = Some((u, v));
+                poly.push([u, v]);
+            }
+        }
+        if poly.len() >= 3 {
+            loops.push(poly);
+        }
+    }
+    if wraps {
+        warnings.push("a loop crosses the seam of a closed surface; area is approximate".into());
+    }
+    let size = (s.eval(u0, v0).point - s.eval(u1, v1).point)
+        .norm()
+        .max(1.0);
+    if max_dist > 1e-3 * size {
+        warnings.push(format!(
+            "boundary lies up to {max_dist:.3e} mm off the surface"
+        ));
+    }
+    loops
+}
+
+fn inside(loops: &[Vec<[f64; 2]>], p: [f64; 2]) -> bool {
+    let mut c = false;
+    for poly in loops {
+        let n = poly.len();
+        for i in 0..n {
+            let a = poly[i];
+            let b = poly[(i + 1) % n];
+            if (a[1] > p[1]) != (b[1] > p[1]) {
+                let x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+                if p[0] < x {
+                    c = !c;
+                }
+            }
+        }
+    }
+    c
+}
+
+/// `∫ g` and `∫ S·g` over a parameter triangle with the 3-midpoint rule.
+fn triangle_rule(s: &NurbsSurface, t: &[[f64; 2]; 3]) -> (f64, Vector3) {
+    let jac = 0.5
+        * ((t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]))
+            .abs();
+    let mut a = 0.0;
+    let mut m = Vector3::zeros();
+    for (i, j) in [(0, 1), (1, 2), (2, 0)] {
+        let u = 0.5 * (t[i][0] + t[j][0]);
+        let v = 0.5 * (t[i][1] + t[j][1]);
+        let sp = s.eval(u, v);
+        let g = sp.du.cross(&sp.dv).norm();
+        a += g;
+        m += sp.point.coords * g;
+    }
+    (a * jac / 3.0, m * (jac / 3.0))
+}
+
+fn adaptive(
+    s: &NurbsSurface,
+    t: [[f64; 2]; 3],
+    whole: (f64, Vector3),
+    depth: u32,
+) -> (f64, Vector3) {
+    let mid = |a: [f64; 2], b: [f64; 2]| [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let (m01, m12, m20) = (mid(t[0], t[1]), mid(t[1], t[2]), mid(t[2], t[0]));
+    let parts = [
+        [t[0], m01, m20],
+        [m01, t[1], m12],
+        [m20, m12, t[2]],
+        [m01, m12, m20],
+    ];
+    let subs: Vec<(f64, Vector3)> = parts.iter().map(|p| triangle_rule(s, p)).collect();
+    let sum_a: f64 = subs.iter().map(|x| x.0).sum();
+    let sum_m: Vector3 = subs.iter().map(|x| x.1).sum();
+    if depth >= MAX_DEPTH || (sum_a - whole.0).abs() <= REL_TOL * sum_a.abs().max(1e-12) {
+        return (sum_a, sum_m);
+    }
+    parts
+        .iter()
+        .zip(subs)
+        .map(|(p, w)| adaptive(s, *p, w, depth + 1))
+        .fold((0.0, Vector3::zeros()), |acc, x| (acc.0 + x.0, acc.1 + x.1))
+}
+
+/// Integrate area and first moments of a free-form face.
+pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshIntegral, String> {
+    let mut warnings = Vec::new();
+    let loops = parameter_loops(part, face, s, &mut warnings);
+    if loops.is_empty() {
+        return Err("no boundary loop could be mapped to the surface".into());
+    }
+    let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
+    let mut failed_constraints = 0usize;
+    for poly in &loops {
+        let mut handles = Vec::with_capacity(poly.len());
+        for p in poly {
+            if !(p[0].is_finite() && p[1].is_finite()) {
+                return Err("non-finite parameter on the boundary".into());
+            }
+            let h = cdt
+                .insert(Point2::new(p[0], p[1]))
+                .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
+            handles.push(h);
+        }
+        for i in 0..handles.len() {
+            let (a, b) = (handles[i], handles[(i + 1) % handles.len()]);
+            if a != b && cdt.try_add_constraint(a, b).is_empty() && !cdt.exists_constraint(a, b) {
+                failed_constraints += 1;
+            }
+        }
+    }
+    if failed_constraints > 0 {
+        warnings.push(format!(
+            "{failed_constraints} boundary segments cross each other in parameter space"
+        ));
+    }
+    let mut area = 0.0;
+    let mut moment = Vector3::zeros();
+    let mut bbox = BoundingBox::empty();
+    for f in cdt.inner_faces() {
+        let v = f.vertices();
+        let t = [
+            [v[0].position().x, v[0].position().y],
+            [v[1].position().x, v[1].position().y],
+            [v[2].position().x, v[2].position().y],
+        ];
+        let c = [
+            (t[0][0] + t[1][0] + t[2][0]) / 3.0,
+            (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+        ];
+        if !inside(&loops, c) {
+            continue;
+        }
+        for p in &t {
+            bbox.add_point(&s.eval(p[0], p[1]).point);
+        }
+        let whole = triangle_rule(s, &t);
+        let (a, m) = adaptive(s, t, whole, 0);
+        area += a;
+        moment += m;
+    }
+    let centroid = if area > 0.0 {
+        Point3::from(moment / area)
+    } else {
+        Point3::origin()
+    };
+    Ok(MeshIntegral {
+        area,
+        centroid,
+        bbox,
+        warnings,
+    })
+}

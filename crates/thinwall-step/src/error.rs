@@ -1,0 +1,48 @@
+//! Errors of the STEP reader. Each names the file, and the entity where
+//! there is one.
+
+use thiserror::Error;
+
+/// Why a STEP file could not be read into a part.
+#[derive(Debug, Error)]
+pub enum StepError {
+    #[error("{file}: cannot read file: {source}")]
+    Io {
+        file: String,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("{file}: not a readable ISO 10303-21 file: {message}")]
+    Syntax { file: String, message: String },
+    #[error("{file}: no B-rep solid in the file{detail}")]
+    NoBrep { file: String, detail: String },
+    #[error("{file}: solid #{solid} is bounded by shell #{shell}, which is not closed")]
+    OpenShell {
+        file: String,
+        solid: u64,
+        shell: u64,
+    },
+    #[error("{file}: entity ids could not be matched to the model ({keyword}: {found} in the file, {expected} read)")]
+    IdMismatch {
+        file: String,
+        keyword: &'static str,
+        expected: usize,
+        found: usize,
+    },
+    #[error("{file}: internal error while reading: {message}")]
+    Internal { file: String, message: String },
+}
+
+impl StepError {
+    /// A stable machine-readable code for the error kind.
+    pub fn code(&self) -> &'static str {
+        match self {
+            StepError::Io { .. } => "io",
+            StepError::Syntax { .. } => "syntax",
+            StepError::NoBrep { .. } => "no_brep",
+            StepError::OpenShell { .. } => "open_shell",
+            StepError::IdMismatch { .. } => "id_mismatch",
+            StepError::Internal { .. } => "internal",
+        }
+    }
+}
