@@ -132,11 +132,12 @@ pub fn compute_face_props(part: &Part, id: FaceId) -> FaceProps {
             .warnings
             .push(format!("surface {keyword} is not supported: no area")),
         revolution => {
-            let frame = *revolution.frame().expect("analytic surface has a frame");
+            let surface_frame = *revolution.frame().expect("analytic surface has a frame");
             let rev = Revolution::of(revolution).expect("surface of revolution");
-            props.axis = Some((frame.origin, frame.z));
+            props.axis = Some((surface_frame.origin, surface_frame.z));
             props.radius = Some(rev.radius_for_report());
             let r = revolution_integrals(part, face, revolution, &rev, sigma);
+            let frame = r.frame;
             props.warnings.extend(r.warnings);
             if let Some(pole) = r.pole {
                 props.bbox.add_point(&frame.to_world(&pole));
@@ -251,14 +252,35 @@ impl Revolution {
         }
     }
 
-    /// The `v` of the pole a winding loop closes on (`winding` > 0: the top).
+    /// `v` of the point where the potentials are made to vanish, so that
+    /// a boundary running through it (a cone apex, a sphere's north pole)
+    /// contributes nothing there. `None`: no such point.
+    fn anchor(&self) -> Option<f64> {
+        match *self {
+            Revolution::Sphere { .. } => Some(PI / 2.0),
+            Revolution::Cone { r, t, .. } if t.abs() > 1e-6 => Some(-r / t),
+            _ => None,
+        }
+    }
+
+    /// `(G, ρ·g, K)` with `G` and `K` shifted to vanish at the anchor.
+    fn anchored_terms(&self, v: f64, anchor: Option<(f64, f64)>) -> (f64, f64, f64) {
+        let (g, rg, k) = self.terms(v);
+        match anchor {
+            Some((ga, ka)) => (g - ga, rg, k - ka),
+            None => (g, rg, k),
+        }
+    }
+
+    /// The pole a loop winding `winding` times closes on, if its potential
+    /// does not vanish there: `(v, local point)`.
     fn pole(&self, winding: i64) -> Option<(f64, Vector3)> {
         match *self {
             Revolution::Sphere { r } => {
                 let v = if winding > 0 { PI / 2.0 } else { -PI / 2.0 };
                 Some((v, Vector3::new(0.0, 0.0, r * v.sin())))
             }
-            Revolution::Cone { r, t, .. } if t.abs() > 1e-12 => {
+            Revolution::Cone { r, t, .. } if t.abs() > 1e-6 => {
                 let v = -r / t;
                 Some((v, Vector3::new(0.0, 0.0, v)))
             }
@@ -268,12 +290,70 @@ impl Revolution {
 }
 
 struct RevolutionIntegrals {
+    /// The frame the integrals are expressed in (a sphere's may be turned).
+    frame: thinwall_geom::Frame,
     area: f64,
     mx: f64,
     my: f64,
     mz: f64,
     pole: Option<Vector3>,
     warnings: Vec<String>,
+}
+
+/// Candidate axes for a sphere's integration frame.
+fn sphere_axes(frame: &thinwall_geom::Frame) -> Vec<Vector3> {
+    let mut axes = Vec::new();
+    for a in [-1.0, 0.0, 1.0] {
+        for b in [-1.0, 0.0, 1.0] {
+            for c in [0.0, 1.0] {
+                if c == 0.0 && (b < 0.0 || (b == 0.0 && a <= 0.0)) {
+                    continue;
+                }
+                axes.push((frame.x * a + frame.y * b + frame.z * c).normalize());
+            }
+        }
+    }
+    axes
+}
+
+/// A frame at the sphere's centre whose axis stays as far as possible from
+/// every boundary sample, so no loop passes near a pole of the
+/// parametrisation (where `u` jumps).
+fn sphere_frame(frame: &thinwall_geom::Frame, points: &[Point3]) -> thinwall_geom::Frame {
+    let mut best = (frame.z, f64::NEG_INFINITY);
+    for axis in sphere_axes(frame) {
+        let min_rho = points
+            .iter()
+            .map(|p| (p - frame.origin).cross(&axis).norm())
+            .fold(f64::INFINITY, f64::min);
+        if min_rho > best.1 + 1e-12 {
+            best = (axis, min_rho);
+        }
+    }
+    thinwall_geom::Frame::from_axis(frame.origin, best.0, Some(frame.x)).unwrap_or(*frame)
+}
+
+/// Centre of the branch for torus `v` angles: opposite the middle of the
+/// largest gap between the sampled angles, so a face never straddles the cut.
+fn branch_centre(angles: &mut [f64]) -> f64 {
+    if angles.is_empty() {
+        return 0.0;
+    }
+    angles.sort_by(f64::total_cmp);
+    let mut gap = (
+        angles[0] + TAU - angles[angles.len() - 1],
+        angles[angles.len() - 1],
+    );
+    for w in angles.windows(2) {
+        if w[1] - w[0] > gap.0 {
+            gap = (w[1] - w[0], w[0]);
+        }
+    }
+    gap.1 + 0.5 * gap.0 + PI
+}
+
+fn wrap_to(v: f64, centre: f64) -> f64 {
+    v - TAU * ((v - centre) / TAU).round()
 }
 
 fn revolution_integrals(
@@ -283,43 +363,66 @@ fn revolution_integrals(
     rev: &Revolution,
     sigma: f64,
 ) -> RevolutionIntegrals {
-    let frame = surface.frame().expect("analytic");
+    let mut nodes: Vec<(Point3, Vector3, f64)> = Vec::new();
+    for_each_boundary_node(part, face, |p, d, w| nodes.push((*p, *d, w)));
+    let mut frame = *surface.frame().expect("analytic");
+    if let Revolution::Sphere { .. } = rev {
+        let pts: Vec<Point3> = nodes.iter().map(|n| n.0).collect();
+        frame = sphere_frame(&frame, &pts);
+    }
+    let v_of = |l: &Vector3| -> f64 {
+        match rev {
+            Revolution::Cylinder { .. } | Revolution::Cone { .. } => l.z,
+            Revolution::Sphere { .. } => l.z.atan2(l.x.hypot(l.y)),
+            Revolution::Torus { big, .. } => l.z.atan2(l.x.hypot(l.y) - big),
+        }
+    };
+    let centre = match rev {
+        Revolution::Torus { .. } => {
+            let mut vs: Vec<f64> = nodes.iter().map(|n| v_of(&frame.to_local(&n.0))).collect();
+            branch_centre(&mut vs)
+        }
+        _ => 0.0,
+    };
+    let anchor = rev.anchor().map(|va| {
+        let (g, _, k) = rev.terms(va);
+        (g, k)
+    });
     let (mut a, mut mx, mut my, mut mz, mut wind) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    let has_edges = face
-        .loops
-        .iter()
-        .any(|&l| !part.loop_(l).coedges.is_empty());
-    for_each_boundary_node(part, face, |p, d, w| {
+    let has_edges = !nodes.is_empty();
+    for (p, d, w) in &nodes {
         let l = frame.to_local(p);
         let dl = frame.vector_to_local(d);
         let rho2 = l.x * l.x + l.y * l.y;
         if rho2 < 1e-24 {
-            return; // on the axis: du is undefined, the forms vanish there
+            continue; // on the axis: du is undefined, the forms vanish there
         }
         let rho = rho2.sqrt();
         let du = (l.x * dl.y - l.y * dl.x) / rho2;
         let u = l.y.atan2(l.x);
         let drho = (l.x * dl.x + l.y * dl.y) / rho;
-        let (v, dv) = match rev {
-            Revolution::Cylinder { .. } | Revolution::Cone { .. } => (l.z, dl.z),
-            Revolution::Sphere { .. } => (
-                l.z.atan2(rho),
-                (rho * dl.z - l.z * drho) / (rho2 + l.z * l.z),
-            ),
+        let dv = match rev {
+            Revolution::Cylinder { .. } | Revolution::Cone { .. } => dl.z,
+            Revolution::Sphere { .. } => (rho * dl.z - l.z * drho) / (rho2 + l.z * l.z),
             Revolution::Torus { big, .. } => {
                 let q = rho - big;
-                (l.z.atan2(q), (q * dl.z - l.z * drho) / (q * q + l.z * l.z))
+                (q * dl.z - l.z * drho) / (q * q + l.z * l.z)
             }
         };
-        let (g, rho_g, k) = rev.terms(v);
+        let v = match rev {
+            Revolution::Torus { .. } => wrap_to(v_of(&l), centre),
+            _ => v_of(&l),
+        };
+        let (g, rho_g, k) = rev.anchored_terms(v, anchor);
         let (su, cu) = u.sin_cos();
         a -= w * g * du;
         mx += w * rho_g * su * dv;
         my -= w * rho_g * cu * dv;
         mz -= w * k * du;
         wind += w * du;
-    });
+    }
     let mut out = RevolutionIntegrals {
+        frame,
         area: sigma * a,
         mx: sigma * mx,
         my: sigma * my,
@@ -345,7 +448,7 @@ fn revolution_integrals(
     if winding != 0 {
         match rev.pole(winding) {
             Some((v, at)) => {
-                let (g, _, k) = rev.terms(v);
+                let (g, _, k) = rev.anchored_terms(v, anchor);
                 out.area += TAU * winding as f64 * g;
                 out.mz += TAU * winding as f64 * k;
                 out.pole = Some(at);

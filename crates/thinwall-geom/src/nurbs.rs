@@ -231,13 +231,67 @@ impl NurbsCurve {
         self.eval(t).0
     }
 
-    /// The curve moved by a rigid transform and scaled.
+    /// The same curve run the other way (parameter `t` ↦ `a + b − t`).
+    pub fn reversed(&self) -> Self {
+        let (a, b) = (self.knots[0], self.knots[self.knots.len() - 1]);
+        Self {
+            degree: self.degree,
+            knots: self.knots.iter().rev().map(|k| a + b - k).collect(),
+            control: self.control.iter().rev().copied().collect(),
+        }
+    }
+
+    /// Move every control point.
     pub fn map_points(&mut self, f: impl Fn(Point3) -> Point3) {
         for c in &mut self.control {
             let w = c[3];
             let q = f(Point3::new(c[0] / w, c[1] / w, c[2] / w));
             *c = [q.x * w, q.y * w, q.z * w, w];
         }
+    }
+}
+
+impl NurbsCurve {
+    /// The exact arc of the ellipse `C + a cos θ·x + b sin θ·y` (a circle
+    /// when `a = b`) from `start` sweeping `sweep` radians (negative:
+    /// clockwise about `frame.z`), as rational quadratic pieces of at most
+    /// 90° (Piegl & Tiller A7.1). `None` for a zero sweep or bad axes.
+    pub fn ellipse_arc(
+        frame: &crate::Frame,
+        a: f64,
+        b: f64,
+        start: f64,
+        sweep: f64,
+    ) -> Option<Self> {
+        if !(a > 0.0 && b > 0.0 && sweep.is_finite() && sweep.abs() > 1e-12) {
+            return None;
+        }
+        let pieces = (sweep.abs() / std::f64::consts::FRAC_PI_2 - 1e-9)
+            .ceil()
+            .max(1.0) as usize;
+        let step = sweep / pieces as f64;
+        let w_mid = (0.5 * step).cos();
+        let at = |theta: f64, scale: f64| {
+            let p = frame.origin
+                + frame.x * (a * scale * theta.cos())
+                + frame.y * (b * scale * theta.sin());
+            [p.x, p.y, p.z]
+        };
+        let mut points = vec![at(start, 1.0)];
+        let mut weights = vec![1.0];
+        let mut knots = vec![0.0; 3];
+        for i in 0..pieces {
+            let t0 = start + step * i as f64;
+            points.push(at(t0 + 0.5 * step, 1.0 / w_mid));
+            weights.push(w_mid);
+            points.push(at(t0 + step, 1.0));
+            weights.push(1.0);
+            let k = (i + 1) as f64 / pieces as f64;
+            knots.push(k);
+            knots.push(k);
+        }
+        knots.push(1.0);
+        Self::new(2, knots, &points, &weights).ok()
     }
 }
 
@@ -446,6 +500,36 @@ mod tests {
         let h = 1e-6;
         let fd = (c.point(0.3 + h) - c.point(0.3 - h)) / (2.0 * h);
         assert!((fd - c.eval(0.3).1).norm() < 1e-6);
+    }
+
+    #[test]
+    fn ellipse_arcs_are_exact_and_run_the_right_way() {
+        let f = crate::Frame::world();
+        let full = NurbsCurve::ellipse_arc(&f, 3.0, 3.0, 0.0, std::f64::consts::TAU).unwrap();
+        assert_eq!(full.spans().len(), 4);
+        for i in 0..=40 {
+            let (t0, t1) = full.domain();
+            let p = full.point(t0 + (t1 - t0) * i as f64 / 40.0);
+            assert!((p.coords.norm() - 3.0).abs() < 1e-12);
+        }
+        // Clockwise quarter from +x ends at -y.
+        let cw = NurbsCurve::ellipse_arc(&f, 2.0, 1.0, 0.0, -std::f64::consts::FRAC_PI_2).unwrap();
+        let end = cw.point(cw.domain().1);
+        assert!((end - Point3::new(0.0, -1.0, 0.0)).norm() < 1e-12);
+        let mid = cw.point(0.5);
+        assert!(mid.y < 0.0 && ((mid.x / 2.0).powi(2) + mid.y.powi(2) - 1.0).abs() < 1e-12);
+        assert!(NurbsCurve::ellipse_arc(&f, 1.0, 1.0, 0.0, 0.0).is_none());
+    }
+
+    #[test]
+    fn reversed_curve_runs_backwards() {
+        let c = quarter_circle();
+        let r = c.reversed();
+        assert_eq!(r.domain(), c.domain());
+        for i in 0..=10 {
+            let t = i as f64 / 10.0;
+            assert!((r.point(t) - c.point(1.0 - t)).norm() < 1e-12);
+        }
     }
 
     #[test]

@@ -543,13 +543,53 @@ impl<'s, 'm> Builder<'s, 'm> {
             c.map_points(|p| place.point(&[p.x, p.y, p.z]).unwrap_or(p));
             Some(c)
         });
-        if nurbs.is_none() {
-            self.issue(
-                Some(step_id),
-                "edge curve could not be evaluated; treated as missing",
-            );
-        }
         let curve = self.curve_kind(edge.curve(), place);
+        // step-io returns a closed edge (start = end vertex) as its whole
+        // curve in the curve's own direction, even when the edge runs
+        // against it.
+        let nurbs = match nurbs {
+            Some(n) if start == end && !edge.same_sense() => Some(n.reversed()),
+            Some(n) => Some(n),
+            None => {
+                let arc = self.conic_arc(&curve, start, end, edge.same_sense());
+                if arc.is_some() {
+                    self.issue(
+                        Some(step_id),
+                        format!(
+                            "{} edge built by Thinwall (step-io could not convert it)",
+                            curve.name()
+                        ),
+                    );
+                } else {
+                    self.issue(
+                        Some(step_id),
+                        "edge curve could not be evaluated; treated as missing",
+                    );
+                }
+                arc
+            }
+        };
+        let nurbs = match (&curve, nurbs) {
+            // The curve is the geometry: a vertex off its line is a gap for
+            // the vertex tolerance to cover, not a bend of the edge (as
+            // OpenCascade reads it too). step-io spans vertex to vertex.
+            (CurveKind::Line { origin, direction }, Some(_)) => {
+                let on_line = |v: VertexId| {
+                    let p = self.part.vertex(v).point;
+                    let t = (p - origin).dot(direction);
+                    let q = origin + direction * t;
+                    [q.x, q.y, q.z]
+                };
+                NurbsCurve::new(
+                    1,
+                    vec![0.0, 0.0, 1.0, 1.0],
+                    &[on_line(start), on_line(end)],
+                    &[1.0, 1.0],
+                )
+                .ok()
+            }
+            (_, n) => n,
+        };
         let id = EdgeId(self.part.edges.len() as u32);
         self.part.edges.push(Edge {
             step_id,
@@ -560,6 +600,43 @@ impl<'s, 'm> Builder<'s, 'm> {
         });
         edges.insert(edge.key(), id);
         Some(id)
+    }
+
+    /// The arc of a circle or ellipse edge between its vertices; with
+    /// `same_sense` it runs the way the curve is parametrised.
+    fn conic_arc(
+        &self,
+        curve: &CurveKind,
+        start: VertexId,
+        end: VertexId,
+        same_sense: bool,
+    ) -> Option<NurbsCurve> {
+        let (frame, a, b) = match curve {
+            CurveKind::Circle { frame, radius } => (frame, *radius, *radius),
+            CurveKind::Ellipse {
+                frame,
+                semi_axis_1,
+                semi_axis_2,
+            } => (frame, *semi_axis_1, *semi_axis_2),
+            _ => return None,
+        };
+        let angle = |v: VertexId| {
+            let l = frame.to_local(&self.part.vertex(v).point);
+            (l.y / b).atan2(l.x / a)
+        };
+        let (t0, t1) = (angle(start), angle(end));
+        let tau = std::f64::consts::TAU;
+        let mut sweep = (t1 - t0).rem_euclid(tau);
+        if start == end || sweep < 1e-12 {
+            sweep = tau;
+        }
+        if !same_sense {
+            sweep -= tau;
+            if sweep.abs() < 1e-12 {
+                sweep = -tau;
+            }
+        }
+        NurbsCurve::ellipse_arc(frame, a, b, t0, sweep)
     }
 
     fn curve_kind(&self, curve: step_io::scene::Curve<'s>, place: &Place) -> CurveKind {
