@@ -141,6 +141,9 @@ pub struct Supplemental {
     pub face_count: usize,
 }
 
+/// Samples per knot span of a curved edge for the part's bounding box.
+const BOX_SAMPLES_PER_SPAN: usize = 32;
+
 /// A part: everything read from one STEP file.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Part {
@@ -188,8 +191,9 @@ impl Part {
             .map(|i| FaceId(i as u32))
     }
 
-    /// The bounding box of all vertices and edge control hulls (a cover of
-    /// the part, exact for straight-edged parts).
+    /// The bounding box of the vertices and samples of the curved edges
+    /// (within ~2e-4 of a circular edge's radius; exact for straight edges).
+    /// Interior bulges of curved faces beyond their edges are not included.
     pub fn bounding_box(&self) -> BoundingBox {
         let mut b = BoundingBox::empty();
         for v in &self.vertices {
@@ -197,9 +201,14 @@ impl Part {
         }
         for e in &self.edges {
             if let Some(n) = &e.nurbs {
+                if n.degree == 1 && n.is_polynomial() {
+                    continue; // straight pieces: the vertices bound them
+                }
                 for (a, bb) in n.spans() {
-                    for k in 0..=4 {
-                        b.add_point(&n.point(a + (bb - a) * k as f64 / 4.0));
+                    for k in 0..=BOX_SAMPLES_PER_SPAN {
+                        b.add_point(
+                            &n.point(a + (bb - a) * k as f64 / BOX_SAMPLES_PER_SPAN as f64),
+                        );
                     }
                 }
             }

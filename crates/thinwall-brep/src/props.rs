@@ -76,8 +76,8 @@ fn boundary_box(part: &Part, face: &Face) -> BoundingBox {
             if let Some(c) = &e.nurbs {
                 if c.degree > 1 || !c.is_polynomial() {
                     for (a, b) in c.spans() {
-                        for k in 1..8 {
-                            bb.add_point(&c.point(a + (b - a) * k as f64 / 8.0));
+                        for k in 1..32 {
+                            bb.add_point(&c.point(a + (b - a) * k as f64 / 32.0));
                         }
                     }
                 }

@@ -67,7 +67,10 @@ fn check_knots(degree: usize, n_ctrl: usize, knots: &[f64]) -> Result<(), NurbsE
             found: knots.len(),
         });
     }
-    if knots.windows(2).any(|w| !(w[1] >= w[0])) || knots[degree] >= knots[n_ctrl] {
+    let increasing = knots
+        .windows(2)
+        .all(|w| w[1].partial_cmp(&w[0]).is_some_and(|o| o.is_ge()));
+    if !increasing || knots[degree] >= knots[n_ctrl] {
         return Err(NurbsError::NotIncreasing);
     }
     Ok(())

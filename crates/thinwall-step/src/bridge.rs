@@ -75,19 +75,24 @@ fn no_brep(model: &StepModel, file: &str, report: &ReadReport) -> StepError {
         + model.all::<m::TessellatedShell>().len()
         + model.all::<m::TessellatedFace>().len();
     let faces = model.all::<m::AdvancedFace>().len();
+    let root_cause = report
+        .dropped
+        .iter()
+        .find(|d| !d.message.starts_with("cascade"))
+        .or_else(|| report.dropped.first());
     let detail = if tessellated > 0 {
         format!(
             " (it holds tessellated geometry only: {tessellated} tessellated items; a mesh is not a B-rep)"
         )
-    } else if faces > 0 {
-        format!(" ({faces} faces, but no solid or closed shell uses them)")
-    } else if let Some(d) = report.dropped.first() {
+    } else if let Some(d) = root_cause {
         format!(
-            " ({} entities dropped, first #{}: {})",
+            " ({} entities dropped as unreadable, starting with #{}: {})",
             report.dropped.len(),
             d.entity.unwrap_or(0),
             d.message
         )
+    } else if faces > 0 {
+        format!(" ({faces} faces, but no solid or closed shell uses them)")
     } else {
         String::new()
     };
