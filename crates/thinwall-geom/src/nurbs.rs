@@ -112,11 +112,20 @@ fn find_span(n_ctrl: usize, p: usize, u: f64, knots: &[f64]) -> usize {
     lo
 }
 
-/// Non-zero basis functions at `u` and their first derivatives.
-fn basis_with_derivative(span: usize, u: f64, p: usize, knots: &[f64]) -> ([f64; M], [f64; M]) {
-    let mut ndu = [[0.0f64; M]; M];
-    let mut left = [0.0f64; M];
-    let mut right = [0.0f64; M];
+/// Scratch size for the common degrees (< 8): small arrays keep evaluation
+/// cheap; higher degrees use [`M`].
+const SMALL: usize = 8;
+
+/// Non-zero basis functions at `u` and their first derivatives (`p < N`).
+fn basis_with_derivative<const N: usize>(
+    span: usize,
+    u: f64,
+    p: usize,
+    knots: &[f64],
+) -> ([f64; N], [f64; N]) {
+    let mut ndu = [[0.0f64; N]; N];
+    let mut left = [0.0f64; N];
+    let mut right = [0.0f64; N];
     ndu[0][0] = 1.0;
     for j in 1..=p {
         left[j] = u - knots[span + 1 - j];
@@ -134,8 +143,8 @@ fn basis_with_derivative(span: usize, u: f64, p: usize, knots: &[f64]) -> ([f64;
         }
         ndu[j][j] = saved;
     }
-    let mut n = [0.0f64; M];
-    let mut dn = [0.0f64; M];
+    let mut n = [0.0f64; N];
+    let mut dn = [0.0f64; N];
     for r in 0..=p {
         n[r] = ndu[r][p];
         let mut d = 0.0;
@@ -213,9 +222,17 @@ impl NurbsCurve {
 
     /// The point at `t` and the derivative there.
     pub fn eval(&self, t: f64) -> (Point3, Vector3) {
+        if self.degree < SMALL {
+            self.eval_n::<SMALL>(t)
+        } else {
+            self.eval_n::<M>(t)
+        }
+    }
+
+    fn eval_n<const N: usize>(&self, t: f64) -> (Point3, Vector3) {
         let p = self.degree;
         let span = find_span(self.control.len(), p, t, &self.knots);
-        let (n, dn) = basis_with_derivative(span, t, p, &self.knots);
+        let (n, dn) = basis_with_derivative::<N>(span, t, p, &self.knots);
         let mut a = [0.0; 4];
         let mut da = [0.0; 4];
         for r in 0..=p {
@@ -363,11 +380,19 @@ impl NurbsSurface {
 
     /// Point and first partial derivatives at `(u, v)`.
     pub fn eval(&self, u: f64, v: f64) -> SurfacePoint {
+        if self.degree_u.max(self.degree_v) < SMALL {
+            self.eval_n::<SMALL>(u, v)
+        } else {
+            self.eval_n::<M>(u, v)
+        }
+    }
+
+    fn eval_n<const N: usize>(&self, u: f64, v: f64) -> SurfacePoint {
         let (pu, pv) = (self.degree_u, self.degree_v);
         let su = find_span(self.n_u(), pu, u, &self.knots_u);
         let sv = find_span(self.n_v(), pv, v, &self.knots_v);
-        let (nu, dnu) = basis_with_derivative(su, u, pu, &self.knots_u);
-        let (nv, dnv) = basis_with_derivative(sv, v, pv, &self.knots_v);
+        let (nu, dnu) = basis_with_derivative::<N>(su, u, pu, &self.knots_u);
+        let (nv, dnv) = basis_with_derivative::<N>(sv, v, pv, &self.knots_v);
         let mut a = [0.0; 4];
         let mut au = [0.0; 4];
         let mut av = [0.0; 4];
@@ -396,47 +421,62 @@ impl NurbsSurface {
         }
     }
 
-    /// Parameters of the point of the surface nearest to `p`, starting from
-    /// `hint` when given, else from the nearest of a coarse grid. Returns
-    /// `(u, v, distance)`.
-    pub fn invert(&self, p: &Point3, hint: Option<(f64, f64)>) -> (f64, f64, f64) {
+    /// Gauss–Newton from `(u, v)` towards the foot of `p`, clamped to the
+    /// domain. Returns `(u, v, distance, stationary)`; `stationary` when the
+    /// residual is orthogonal to both tangents (a true foot point).
+    fn newton(&self, p: &Point3, mut u: f64, mut v: f64) -> (f64, f64, f64, bool) {
         let ((u0, u1), (v0, v1)) = self.domain();
-        let newton = |mut u: f64, mut v: f64| {
-            for _ in 0..30 {
-                let s = self.eval(u, v);
-                let r = s.point - p;
-                let a11 = s.du.dot(&s.du);
-                let a12 = s.du.dot(&s.dv);
-                let a22 = s.dv.dot(&s.dv);
-                let b1 = -s.du.dot(&r);
-                let b2 = -s.dv.dot(&r);
-                let det = a11 * a22 - a12 * a12;
-                if det.abs() < 1e-300 {
-                    break;
-                }
-                let du = (b1 * a22 - b2 * a12) / det;
-                let dv = (a11 * b2 - a12 * b1) / det;
-                let nu = (u + du).clamp(u0, u1);
-                let nv = (v + dv).clamp(v0, v1);
-                let step = (nu - u).abs() / (u1 - u0) + (nv - v).abs() / (v1 - v0);
-                u = nu;
-                v = nv;
-                if step < 1e-14 {
-                    break;
-                }
+        let mut stationary = false;
+        for _ in 0..30 {
+            let s = self.eval(u, v);
+            let r = s.point - p;
+            let a11 = s.du.dot(&s.du);
+            let a12 = s.du.dot(&s.dv);
+            let a22 = s.dv.dot(&s.dv);
+            let b1 = -s.du.dot(&r);
+            let b2 = -s.dv.dot(&r);
+            let rn = r.norm();
+            if b1.abs() <= 1e-10 * a11.sqrt() * rn.max(1e-12) + 1e-15
+                && b2.abs() <= 1e-10 * a22.sqrt() * rn.max(1e-12) + 1e-15
+            {
+                stationary = true;
+                break;
             }
-            let d = (self.eval(u, v).point - p).norm();
-            (u, v, d)
-        };
-        if let Some((hu, hv)) = hint {
-            let r = newton(hu, hv);
-            if r.2 < 1e-6 * (1.0 + p.coords.norm()) {
-                return r;
+            let det = a11 * a22 - a12 * a12;
+            if det.abs() < 1e-300 {
+                break;
+            }
+            let du = (b1 * a22 - b2 * a12) / det;
+            let dv = (a11 * b2 - a12 * b1) / det;
+            let nu = (u + du).clamp(u0, u1);
+            let nv = (v + dv).clamp(v0, v1);
+            let step = (nu - u).abs() / (u1 - u0) + (nv - v).abs() / (v1 - v0);
+            u = nu;
+            v = nv;
+            if step < 1e-13 {
+                stationary = true;
+                break;
             }
         }
-        // Coarse grid: a few samples per knot span in each direction.
-        let gu = (self.n_u() * 3).clamp(8, 60);
-        let gv = (self.n_v() * 3).clamp(8, 60);
+        let d = (self.eval(u, v).point - p).norm();
+        (u, v, d, stationary)
+    }
+
+    /// Parameters of the point of the surface nearest to `p`, starting from
+    /// `hint` when given (a neighbouring point's parameters), else from the
+    /// nearest of a coarse grid. Returns `(u, v, distance)`.
+    pub fn invert(&self, p: &Point3, hint: Option<(f64, f64)>) -> (f64, f64, f64) {
+        let ((u0, u1), (v0, v1)) = self.domain();
+        if let Some((hu, hv)) = hint {
+            let (u, v, d, stationary) = self.newton(p, hu, hv);
+            let moved = (u - hu).abs() / (u1 - u0) + (v - hv).abs() / (v1 - v0);
+            if stationary && moved < 0.25 {
+                return (u, v, d);
+            }
+        }
+        // Coarse grid: a few samples per control point in each direction.
+        let gu = (self.n_u() * 2).clamp(6, 32);
+        let gv = (self.n_v() * 2).clamp(6, 32);
         let mut best = (u0, v0, f64::INFINITY);
         for i in 0..=gu {
             let u = u0 + (u1 - u0) * i as f64 / gu as f64;
@@ -448,18 +488,8 @@ impl NurbsSurface {
                 }
             }
         }
-        let r = newton(best.0, best.1);
-        match hint {
-            Some((hu, hv)) => {
-                let h = newton(hu, hv);
-                if h.2 <= r.2 * (1.0 + 1e-9) + 1e-12 {
-                    h
-                } else {
-                    r
-                }
-            }
-            None => r,
-        }
+        let (u, v, d, _) = self.newton(p, best.0, best.1);
+        (u, v, d)
     }
 
     /// Move every control point.
@@ -533,6 +563,19 @@ mod tests {
             let t = i as f64 / 10.0;
             assert!((r.point(t) - c.point(1.0 - t)).norm() < 1e-12);
         }
+    }
+
+    #[test]
+    fn high_degree_curves_evaluate_like_low_degree_ones() {
+        // A straight line as a degree-9 Bézier (evenly spaced control
+        // points) takes the large-scratch path.
+        let pts: Vec<[f64; 3]> = (0..10).map(|i| [i as f64, 2.0 * i as f64, 0.0]).collect();
+        let mut knots = vec![0.0; 10];
+        knots.extend(vec![1.0; 10]);
+        let c = NurbsCurve::new(9, knots, &pts, &[1.0; 10]).unwrap();
+        let (p, d) = c.eval(0.25);
+        assert!((p - Point3::new(2.25, 4.5, 0.0)).norm() < 1e-12);
+        assert!((d - Vector3::new(9.0, 18.0, 0.0)).norm() < 1e-9);
     }
 
     #[test]

@@ -150,9 +150,24 @@ impl AdjacencyGraph {
 
 use petgraph::visit::EdgeRef;
 
-fn outward_normal(part: &Part, face: FaceId, p: &Point3) -> Option<Vector3> {
+/// Outward normal of `face` at `p`. For a free-form face the foot point is
+/// searched from `hint` (the previous sample's parameters on that face),
+/// which is updated.
+fn outward_normal(
+    part: &Part,
+    face: FaceId,
+    p: &Point3,
+    hint: &mut Option<(f64, f64)>,
+) -> Option<Vector3> {
     let f = part.face(face);
-    let n = f.surface.normal_at(p)?;
+    let n = match &f.surface {
+        Surface::Freeform { nurbs, .. } => {
+            let (u, v, _) = nurbs.invert(p, *hint);
+            *hint = Some((u, v));
+            thinwall_geom::surface::nurbs_normal(nurbs, u, v)?
+        }
+        s => s.normal_at(p)?,
+    };
     Some(if f.same_sense { n } else { -n })
 }
 
@@ -183,11 +198,14 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
     let (a, b) = curve.domain();
     let (mut convex, mut concave, mut smooth) = (0, 0, 0);
     let (mut amin, mut amax) = (f64::INFINITY, f64::NEG_INFINITY);
+    let (mut hint1, mut hint2) = (None, None);
     for k in 0..n_samples {
         let t = a + (b - a) * (k as f64 + 0.5) / n_samples as f64;
         let (p, d) = curve.eval(t);
-        let (Some(n1), Some(n2)) = (outward_normal(part, f1, &p), outward_normal(part, f2, &p))
-        else {
+        let (Some(n1), Some(n2)) = (
+            outward_normal(part, f1, &p, &mut hint1),
+            outward_normal(part, f2, &p, &mut hint2),
+        ) else {
             continue;
         };
         let Some(t1) = (if fwd1 { d } else { -d }).try_normalize(1e-300) else {
