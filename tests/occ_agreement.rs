@@ -165,33 +165,32 @@ fn check_file(set: &str, oracle: &Oracle, data: &Path, tally: &mut Tally) {
             "{set}/{} #{} ({})",
             oracle.file, part.faces[i].step_id, of.surface
         );
-        let worst = if of.surface == "plane" {
-            &mut tally.worst_plane
-        } else {
-            &mut tally.worst_curved
-        };
-        if rel > worst.0 {
-            *worst = (rel, label.clone());
-        }
         let (gap, perimeter) = vertex_gap(&part, i);
-        if rel > area_tolerance(&of.surface)
-            && gap > 1e-6 * diag
-            && (props[i].area - of.area).abs() <= 4.0 * gap * perimeter
-        {
-            *tally
-                .explained
-                .entry("area: vertices off their curves (file within its uncertainty)")
-                .or_default() += 1;
-        } else if rel > area_tolerance(&of.surface) && stc_agrees(oracle, of, props[i].area) {
-            *tally
-                .explained
-                .entry("area: OpenCascade gives the same face another area in the STC file")
-                .or_default() += 1;
-        } else if rel > area_tolerance(&of.surface) {
+        let cause = if rel <= area_tolerance(&of.surface) {
+            None
+        } else if gap > 1e-6 * diag && (props[i].area - of.area).abs() <= 4.0 * gap * perimeter {
+            Some("area: vertices off their curves (file within its uncertainty)")
+        } else if stc_agrees(oracle, of, props[i].area) {
+            Some("area: OpenCascade gives the same face another area in the STC file")
+        } else {
             tally.area_failures.push(format!(
                 "{label}: area {:.9} vs OCC {:.9} (rel {rel:.2e}), centroid {} vs {:?}",
                 props[i].area, of.area, props[i].centroid, of.centroid
             ));
+            None
+        };
+        match cause {
+            Some(c) => *tally.explained.entry(c).or_default() += 1,
+            None => {
+                let worst = if of.surface == "plane" {
+                    &mut tally.worst_plane
+                } else {
+                    &mut tally.worst_curved
+                };
+                if rel > worst.0 {
+                    *worst = (rel, label);
+                }
+            }
         }
     }
     let graph = AdjacencyGraph::build(&part, &part.tolerances());
