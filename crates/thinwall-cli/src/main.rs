@@ -34,6 +34,51 @@ enum Command {
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
     },
+    /// Recognize stiffness features: walls (web, rib, flange), thinness,
+    /// holes, cut-outs, notches, fillets, chamfers.
+    Recognize {
+        /// The STEP file.
+        part: PathBuf,
+        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+        up: Option<[f64; 3]>,
+        /// TOML file with recognition settings (see docs/RECOGNITION.md).
+        #[arg(long)]
+        config: Option<PathBuf>,
+        /// Only report these kinds (comma separated).
+        #[arg(long, value_delimiter = ',')]
+        include: Vec<String>,
+        /// Never report these kinds (comma separated).
+        #[arg(long, value_delimiter = ',')]
+        exclude: Vec<String>,
+        /// Maximum milling force, N.
+        #[arg(long)]
+        force: Option<f64>,
+        /// Allowed deflection, mm.
+        #[arg(long)]
+        allowed_deflection: Option<f64>,
+        /// Preferred tool diameter, mm.
+        #[arg(long)]
+        tool_diameter: Option<f64>,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "json")]
+        format: Format,
+    },
+}
+
+fn parse_vector(s: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(format!("expected X,Y,Z, got '{s}'"));
+    }
+    let mut v = [0.0f64; 3];
+    for (i, p) in parts.iter().enumerate() {
+        v[i] = p.parse().map_err(|_| format!("'{p}' is not a number"))?;
+    }
+    if v.iter().all(|c| *c == 0.0) || v.iter().any(|c| !c.is_finite()) {
+        return Err(format!("'{s}' is not a direction"));
+    }
+    Ok(v)
 }
 
 fn main() -> ExitCode {
@@ -60,9 +105,50 @@ fn run(cli: Cli) -> Result<(), String> {
                     serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n"
                 }
             };
-            std::io::stdout()
-                .write_all(text.as_bytes())
-                .map_err(|e| format!("cannot write output: {e}"))
+            write_out(&text)
+        }
+        Command::Recognize { part, up, config, include, exclude, force, allowed_deflection, tool_diameter, format } => {
+            let mut cfg = match &config {
+                Some(path) => {
+                    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+                    thinwall_recognize::Config::from_toml(&text, &path.display().to_string()).map_err(|e| e.to_string())?
+                }
+                None => thinwall_recognize::Config::default(),
+            };
+            if let Some(u) = up {
+                cfg.up = u;
+            }
+            for (list, names) in [(&mut cfg.include, &include), (&mut cfg.exclude, &exclude)] {
+                for n in names.iter().filter(|n| !n.is_empty()) {
+                    list.push(thinwall_recognize::Kind::parse(n).ok_or_else(|| format!("unknown feature kind '{n}'"))?);
+                }
+            }
+            if let Some(f) = force {
+                cfg.thinness.force_n = f;
+            }
+            if let Some(d) = allowed_deflection {
+                cfg.thinness.allowed_deflection_mm = d;
+            }
+            if let Some(d) = tool_diameter {
+                cfg.thresholds.preferred_tool_diameter_mm = d;
+            }
+            cfg.validate().map_err(|e| e.to_string())?;
+            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+            let graph = AdjacencyGraph::build(&model, &model.tolerances());
+            let r = thinwall_recognize::recognize(&model, &graph, &cfg);
+            let u = cfg.up_unit();
+            let report = thinwall_report::recognition_report(&part.display().to_string(), &model, [u.x, u.y, u.z], &r, Vec::new());
+            let text = match format {
+                Format::Text => report.to_text(),
+                Format::Json => serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n",
+            };
+            write_out(&text)
         }
     }
+}
+
+fn write_out(text: &str) -> Result<(), String> {
+    std::io::stdout()
+        .write_all(text.as_bytes())
+        .map_err(|e| format!("cannot write output: {e}"))
 }

@@ -3,5 +3,7 @@
 //! faces over these.
 
 pub mod inspect;
+pub mod recognize;
 
 pub use inspect::{inspect, InspectReport};
+pub use recognize::{recognition_report, Connection, RecognitionReport};

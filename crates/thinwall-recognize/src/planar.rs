@@ -1,0 +1,273 @@
+//! Planar faces as polygons: their loops sampled into 3D polylines, and
+//! projected into the 2D frame of any plane for overlap tests (geo).
+
+use geo::{Area, BooleanOps, Coord, LineString, MultiPolygon, Orient, Polygon};
+use thinwall_brep::{FaceId, Part};
+use thinwall_geom::{Frame, Point3, Surface, Vector3};
+
+/// Samples per knot span of a curved edge.
+const SAMPLES_PER_SPAN: usize = 8;
+
+/// A face's loops as closed 3D polylines (outer loops first).
+#[derive(Clone, Debug)]
+pub struct FaceLoops {
+    pub outer: Vec<Vec<Point3>>,
+    pub inner: Vec<Vec<Point3>>,
+}
+
+/// Whether loop `i` of a face is an outer boundary: the file says so, or,
+/// when the file marks no loop outer (all `FACE_BOUND`s), it is the loop
+/// spanning the largest extent.
+pub fn is_outer_loop(part: &Part, face: FaceId, i: usize) -> bool {
+    let f = part.face(face);
+    if f.loops.iter().any(|&l| part.loop_(l).is_outer) {
+        return part.loop_(f.loops[i]).is_outer;
+    }
+    let extent = |l: thinwall_brep::LoopId| {
+        let mut b = thinwall_geom::BoundingBox::empty();
+        for ce in &part.loop_(l).coedges {
+            let e = part.edge(ce.edge);
+            b.add_point(&part.vertex(e.start).point);
+            b.add_point(&part.vertex(e.end).point);
+            if let Some(c) = &e.nurbs {
+                let (t0, t1) = c.domain();
+                for k in 1..4 {
+                    b.add_point(&c.point(t0 + (t1 - t0) * k as f64 / 4.0));
+                }
+            }
+        }
+        b.diagonal()
+    };
+    let largest = (0..f.loops.len()).max_by(|&a, &b| extent(f.loops[a]).total_cmp(&extent(f.loops[b])));
+    largest == Some(i)
+}
+
+/// Sample the loops of a face.
+pub fn face_loops(part: &Part, face: FaceId) -> FaceLoops {
+    let f = part.face(face);
+    let mut out = FaceLoops {
+        outer: Vec::new(),
+        inner: Vec::new(),
+    };
+    for (i, &l) in f.loops.iter().enumerate() {
+        let lp = part.loop_(l);
+        let mut pts = Vec::new();
+        for ce in &lp.coedges {
+            let e = part.edge(ce.edge);
+            let Some(c) = &e.nurbs else {
+                pts.push(part.vertex(if ce.forward { e.start } else { e.end }).point);
+                continue;
+            };
+            let mut ts = Vec::new();
+            let straight = c.degree == 1 && c.is_polynomial();
+            for (a, b) in c.spans() {
+                let n = if straight { 1 } else { SAMPLES_PER_SPAN };
+                for k in 0..n {
+                    ts.push(a + (b - a) * k as f64 / n as f64);
+                }
+            }
+            ts.push(c.domain().1);
+            if !ce.forward {
+                ts.reverse();
+            }
+            ts.pop();
+            pts.extend(ts.into_iter().map(|t| c.point(t)));
+        }
+        if pts.len() < 3 {
+            continue;
+        }
+        if is_outer_loop(part, face, i) {
+            out.outer.push(pts);
+        } else {
+            out.inner.push(pts);
+        }
+    }
+    out
+}
+
+/// A planar face: its plane (z = outward normal) and loops.
+#[derive(Clone, Debug)]
+pub struct PlanarFace {
+    pub face: FaceId,
+    pub frame: Frame,
+    pub loops: FaceLoops,
+}
+
+impl PlanarFace {
+    pub fn new(part: &Part, face: FaceId) -> Option<Self> {
+        let f = part.face(face);
+        let Surface::Plane { frame } = &f.surface else {
+            return None;
+        };
+        let mut frame = *frame;
+        if !f.same_sense {
+            frame = Frame {
+                origin: frame.origin,
+                x: frame.x,
+                y: -frame.y,
+                z: -frame.z,
+            };
+        }
+        Some(Self {
+            face,
+            frame,
+            loops: face_loops(part, face),
+        })
+    }
+
+    pub fn normal(&self) -> Vector3 {
+        self.frame.z
+    }
+
+    /// Signed offset of the plane along its normal.
+    pub fn offset(&self) -> f64 {
+        self.frame.origin.coords.dot(&self.frame.z)
+    }
+
+    /// This face as a polygon in `frame`'s xy coordinates.
+    pub fn polygon_in(&self, frame: &Frame) -> MultiPolygon<f64> {
+        project_loops(&self.loops, frame)
+    }
+}
+
+/// Loops projected into a frame's xy plane as a (valid, oriented) polygon.
+pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
+    let ring = |pts: &Vec<Point3>| {
+        let mut cs: Vec<Coord<f64>> = pts
+            .iter()
+            .map(|p| {
+                let l = frame.to_local(p);
+                Coord { x: l.x, y: l.y }
+            })
+            .collect();
+        cs.push(cs[0]);
+        LineString::new(cs)
+    };
+    let mut result = MultiPolygon::new(vec![]);
+    for o in &loops.outer {
+        let poly = Polygon::new(ring(o), vec![]).orient(geo::orient::Direction::Default);
+        result = if result.0.is_empty() {
+            MultiPolygon::new(vec![poly])
+        } else {
+            result.union(&poly)
+        };
+    }
+    for i in &loops.inner {
+        let hole = Polygon::new(ring(i), vec![]).orient(geo::orient::Direction::Default);
+        if hole.unsigned_area() > 0.0 {
+            result = result.difference(&hole);
+        }
+    }
+    result
+}
+
+/// Narrowest width of a region: the smaller of its minimum-area rectangle's
+/// short side and `4·area/perimeter` (which is small for thin strips and
+/// crosses whose rectangle is wide).
+pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
+    use geo::{Euclidean, Length, MinimumRotatedRect};
+    let area = region.unsigned_area();
+    if area <= 0.0 {
+        return 0.0;
+    }
+    let perimeter: f64 = region
+        .0
+        .iter()
+        .map(|p| {
+            p.exterior().length::<Euclidean>() + p.interiors().iter().map(|r| r.length::<Euclidean>()).sum::<f64>()
+        })
+        .sum();
+    let strip = if perimeter > 0.0 { 4.0 * area / perimeter } else { 0.0 };
+    let rect = region
+        .minimum_rotated_rect()
+        .map(|r| {
+            let c: Vec<Coord<f64>> = r.exterior().coords().copied().collect();
+            let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
+            let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
+            a.min(b)
+        })
+        .unwrap_or(0.0);
+    strip.min(rect)
+}
+
+/// Radius of the largest circle inside `region` (approximate: a grid
+/// search refined around the best point), mm.
+pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
+    use geo::{BoundingRect, Contains, Distance, Euclidean, Point};
+    let Some(b) = region.bounding_rect() else {
+        return 0.0;
+    };
+    let dist = |x: f64, y: f64| -> f64 {
+        let p = Point::new(x, y);
+        if !region.contains(&p) {
+            return 0.0;
+        }
+        let mut d = f64::INFINITY;
+        for poly in &region.0 {
+            d = d.min(Euclidean::distance(&p, poly.exterior()));
+            for r in poly.interiors() {
+                d = d.min(Euclidean::distance(&p, r));
+            }
+        }
+        d
+    };
+    let n = 12;
+    let (mut w, mut h) = (b.width(), b.height());
+    let mut best = (b.min().x, b.min().y, 0.0);
+    for i in 0..=n {
+        for j in 0..=n {
+            let (x, y) = (b.min().x + w * i as f64 / n as f64, b.min().y + h * j as f64 / n as f64);
+            let d = dist(x, y);
+            if d > best.2 {
+                best = (x, y, d);
+            }
+        }
+    }
+    for _ in 0..4 {
+        w /= n as f64 / 2.0;
+        h /= n as f64 / 2.0;
+        let (cx, cy) = (best.0, best.1);
+        for i in 0..=n {
+            for j in 0..=n {
+                let x = cx - w / 2.0 + w * i as f64 / n as f64;
+                let y = cy - h / 2.0 + h * j as f64 / n as f64;
+                let d = dist(x, y);
+                if d > best.2 {
+                    best = (x, y, d);
+                }
+            }
+        }
+    }
+    best.2
+}
+
+/// `a ∩ b`, empty when either is empty.
+pub fn intersect(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    if a.0.is_empty() || b.0.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    a.intersection(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> MultiPolygon<f64> {
+        MultiPolygon::new(vec![Polygon::new(
+            LineString::from(vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]),
+            vec![],
+        )])
+    }
+
+    #[test]
+    fn widths_and_inscribed_circles() {
+        assert!((narrow_width(&rect(0.0, 0.0, 100.0, 2.0)) - 2.0).abs() < 1e-9);
+        assert!((narrow_width(&rect(0.0, 0.0, 40.0, 40.0)) - 40.0).abs() < 1e-9);
+        // A cross of two 2-wide strips is narrow although its box is wide.
+        let cross = rect(0.0, 49.0, 100.0, 51.0).union(&rect(49.0, 0.0, 51.0, 100.0));
+        assert!(narrow_width(&cross) < 4.1);
+        let r = inscribed_radius(&rect(0.0, 0.0, 80.0, 40.0));
+        assert!((r - 20.0).abs() < 0.05, "{r}");
+    }
+}
