@@ -44,7 +44,9 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
         let is_wall = !t.side_faces.is_empty();
         let hit = ours.iter().find(|f| {
             if is_wall {
-                f.side_faces.as_deref().is_some_and(|s| set(s) == set(&t.side_faces))
+                f.side_faces
+                    .as_deref()
+                    .is_some_and(|s| set(s) == set(&t.side_faces))
             } else {
                 set(&f.faces) == set(&t.faces)
             }
@@ -55,16 +57,28 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
                 matched.insert(f.id.clone());
                 id_of.insert(t.id.clone(), f.id.clone());
                 if f.kind.name() != t.kind {
-                    problems.push(format!("{}: {} is {} here, {} in the truth", truth.part, t.id, f.kind.name(), t.kind));
+                    problems.push(format!(
+                        "{}: {} is {} here, {} in the truth",
+                        truth.part,
+                        t.id,
+                        f.kind.name(),
+                        t.kind
+                    ));
                 }
                 if let Some(thin) = t.thin {
                     if f.thin != Some(thin) {
-                        problems.push(format!("{}: {} thin {:?}, truth {thin}", truth.part, t.id, f.thin));
+                        problems.push(format!(
+                            "{}: {} thin {:?}, truth {thin}",
+                            truth.part, t.id, f.thin
+                        ));
                     }
                 }
                 if let Some(th) = t.thickness {
                     if (f.thickness.unwrap_or(0.0) - th).abs() > 1e-6 {
-                        problems.push(format!("{}: {} thickness {:?}, truth {th}", truth.part, t.id, f.thickness));
+                        problems.push(format!(
+                            "{}: {} thickness {:?}, truth {th}",
+                            truth.part, t.id, f.thickness
+                        ));
                     }
                 }
             }
@@ -75,13 +89,25 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
         if let (Some(w), Some(ours_id)) = (&t.wall, id_of.get(&t.id)) {
             let f = ours.iter().find(|f| &f.id == ours_id).unwrap();
             if f.wall.as_ref() != id_of.get(w) {
-                problems.push(format!("{}: {} is in {:?}, truth {w} ({:?})", truth.part, t.id, f.wall, id_of.get(w)));
+                problems.push(format!(
+                    "{}: {} is in {:?}, truth {w} ({:?})",
+                    truth.part,
+                    t.id,
+                    f.wall,
+                    id_of.get(w)
+                ));
             }
         }
     }
     for f in ours {
         if f.thin == Some(true) && !matched.contains(&f.id) {
-            problems.push(format!("{}: {} {} {:?} reported thin, not in the truth", truth.part, f.kind.name(), f.id, f.side_faces));
+            problems.push(format!(
+                "{}: {} {} {:?} reported thin, not in the truth",
+                truth.part,
+                f.kind.name(),
+                f.id,
+                f.side_faces
+            ));
         }
     }
     problems
@@ -94,10 +120,16 @@ fn thinwall_parts_match_the_ground_truth() {
     let mut checked = 0;
     for f in common::step_files(&dir) {
         let stem = f.file_stem().unwrap().to_string_lossy().to_string();
-        let truth: Truth = serde_json::from_str(&std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap()).unwrap();
+        let truth: Truth = serde_json::from_str(
+            &std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap(),
+        )
+        .unwrap();
         let (part, _) = thinwall_step::read_file(&f).unwrap();
         let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-        let config = Config { up: truth.up, ..Config::default() };
+        let config = Config {
+            up: truth.up,
+            ..Config::default()
+        };
         let r = recognize(&part, &graph, &config);
         problems.extend(compare(&truth, &r.features));
         checked += truth.features.len();
@@ -106,5 +138,9 @@ fn thinwall_parts_match_the_ground_truth() {
         println!("{p}");
     }
     assert!(checked > 40, "{checked} truth features");
-    assert!(problems.is_empty(), "{} differences from the ground truth", problems.len());
+    assert!(
+        problems.is_empty(),
+        "{} differences from the ground truth",
+        problems.len()
+    );
 }

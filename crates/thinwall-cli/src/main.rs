@@ -107,11 +107,23 @@ fn run(cli: Cli) -> Result<(), String> {
             };
             write_out(&text)
         }
-        Command::Recognize { part, up, config, include, exclude, force, allowed_deflection, tool_diameter, format } => {
+        Command::Recognize {
+            part,
+            up,
+            config,
+            include,
+            exclude,
+            force,
+            allowed_deflection,
+            tool_diameter,
+            format,
+        } => {
             let mut cfg = match &config {
                 Some(path) => {
-                    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-                    thinwall_recognize::Config::from_toml(&text, &path.display().to_string()).map_err(|e| e.to_string())?
+                    let text = std::fs::read_to_string(path)
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                    thinwall_recognize::Config::from_toml(&text, &path.display().to_string())
+                        .map_err(|e| e.to_string())?
                 }
                 None => thinwall_recognize::Config::default(),
             };
@@ -120,7 +132,10 @@ fn run(cli: Cli) -> Result<(), String> {
             }
             for (list, names) in [(&mut cfg.include, &include), (&mut cfg.exclude, &exclude)] {
                 for n in names.iter().filter(|n| !n.is_empty()) {
-                    list.push(thinwall_recognize::Kind::parse(n).ok_or_else(|| format!("unknown feature kind '{n}'"))?);
+                    list.push(
+                        thinwall_recognize::Kind::parse(n)
+                            .ok_or_else(|| format!("unknown feature kind '{n}'"))?,
+                    );
                 }
             }
             if let Some(f) = force {
@@ -137,10 +152,18 @@ fn run(cli: Cli) -> Result<(), String> {
             let graph = AdjacencyGraph::build(&model, &model.tolerances());
             let r = thinwall_recognize::recognize(&model, &graph, &cfg);
             let u = cfg.up_unit();
-            let report = thinwall_report::recognition_report(&part.display().to_string(), &model, [u.x, u.y, u.z], &r, Vec::new());
+            let report = thinwall_report::recognition_report(
+                &part.display().to_string(),
+                &model,
+                [u.x, u.y, u.z],
+                &r,
+                Vec::new(),
+            );
             let text = match format {
                 Format::Text => report.to_text(),
-                Format::Json => serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n",
+                Format::Json => {
+                    serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n"
+                }
             };
             write_out(&text)
         }

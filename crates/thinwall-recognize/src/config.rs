@@ -132,7 +132,13 @@ impl Default for Config {
             up: [0.0, 0.0, 1.0],
             include: Vec::new(),
             exclude: Vec::new(),
-            priority: vec![Kind::Hole, Kind::Cutout, Kind::Notch, Kind::Fillet, Kind::Chamfer],
+            priority: vec![
+                Kind::Hole,
+                Kind::Cutout,
+                Kind::Notch,
+                Kind::Fillet,
+                Kind::Chamfer,
+            ],
             thinness: Thinness::default(),
             thresholds: Thresholds::default(),
         }
@@ -163,7 +169,10 @@ impl Config {
     pub fn validate(&self) -> Result<(), ConfigError> {
         let n = (self.up[0].powi(2) + self.up[1].powi(2) + self.up[2].powi(2)).sqrt();
         if !(n.is_finite() && n > 1e-9) {
-            return Err(ConfigError::Invalid(format!("up direction {:?} has no length", self.up)));
+            return Err(ConfigError::Invalid(format!(
+                "up direction {:?} has no length",
+                self.up
+            )));
         }
         let t = &self.thinness;
         for (name, v) in [
@@ -171,10 +180,15 @@ impl Config {
             ("youngs_modulus_n_mm2", t.youngs_modulus_n_mm2),
             ("allowed_deflection_mm", t.allowed_deflection_mm),
             ("effective_length_factor", t.effective_length_factor),
-            ("preferred_tool_diameter_mm", self.thresholds.preferred_tool_diameter_mm),
+            (
+                "preferred_tool_diameter_mm",
+                self.thresholds.preferred_tool_diameter_mm,
+            ),
         ] {
             if !(v.is_finite() && v > 0.0) {
-                return Err(ConfigError::Invalid(format!("{name} must be positive, got {v}")));
+                return Err(ConfigError::Invalid(format!(
+                    "{name} must be positive, got {v}"
+                )));
             }
         }
         Ok(())

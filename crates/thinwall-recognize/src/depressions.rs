@@ -59,7 +59,15 @@ pub fn within_slab(part: &Part, wall: &Wall, f: FaceId, tol: f64) -> bool {
 
 /// Holes of wall `w`: from each inner loop of a side face, the faces beyond
 /// it, flooded while they stay within the slab.
-pub fn holes(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], w: usize, taken: &mut HashSet<FaceId>, any_side: &HashSet<FaceId>, tol: f64) -> Vec<Depression> {
+pub fn holes(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    walls: &[Wall],
+    w: usize,
+    taken: &mut HashSet<FaceId>,
+    any_side: &HashSet<FaceId>,
+    tol: f64,
+) -> Vec<Depression> {
     let wall = &walls[w];
     let mut out = Vec::new();
     for s in 0..2 {
@@ -84,7 +92,11 @@ pub fn holes(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], w: usize, take
                     continue;
                 }
                 let touches = |side: usize| {
-                    set.iter().any(|&h| graph.neighbours(h).any(|(g, _)| wall.sides[side].contains(&g)))
+                    set.iter().any(|&h| {
+                        graph
+                            .neighbours(h)
+                            .any(|(g, _)| wall.sides[side].contains(&g))
+                    })
                 };
                 let through = touches(0) && touches(1);
                 taken.extend(set.iter().copied());
@@ -99,11 +111,23 @@ pub fn holes(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], w: usize, take
     out
 }
 
-fn flood(part: &Part, graph: &AdjacencyGraph, wall: &Wall, seeds: Vec<FaceId>, taken: &HashSet<FaceId>, any_side: &HashSet<FaceId>, tol: f64) -> BTreeSet<FaceId> {
+fn flood(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    wall: &Wall,
+    seeds: Vec<FaceId>,
+    taken: &HashSet<FaceId>,
+    any_side: &HashSet<FaceId>,
+    tol: f64,
+) -> BTreeSet<FaceId> {
     let mut set = BTreeSet::new();
     let mut queue: VecDeque<FaceId> = seeds.into_iter().collect();
     while let Some(f) = queue.pop_front() {
-        if set.contains(&f) || taken.contains(&f) || any_side.contains(&f) || !within_slab(part, wall, f, tol) {
+        if set.contains(&f)
+            || taken.contains(&f)
+            || any_side.contains(&f)
+            || !within_slab(part, wall, f, tol)
+        {
             continue;
         }
         set.insert(f);
@@ -118,7 +142,15 @@ fn flood(part: &Part, graph: &AdjacencyGraph, wall: &Wall, seeds: Vec<FaceId>, t
 
 /// The rim of wall `w`: faces that touch both of its sides and lie within
 /// its slab (top, ends, and the faces of openings from the edge).
-pub fn rim_faces(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], w: usize, taken: &HashSet<FaceId>, any_side: &HashSet<FaceId>, tol: f64) -> Vec<FaceId> {
+pub fn rim_faces(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    walls: &[Wall],
+    w: usize,
+    taken: &HashSet<FaceId>,
+    any_side: &HashSet<FaceId>,
+    tol: f64,
+) -> Vec<FaceId> {
     let wall = &walls[w];
     let mut candidates: BTreeSet<FaceId> = BTreeSet::new();
     for &f in &wall.sides[0] {
@@ -140,7 +172,12 @@ pub fn rim_faces(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], w: usize, 
 /// Cut-outs and notches among a wall's rim faces: rim faces joined by
 /// concave edges (the inside corners of a slot or step), or a single
 /// concave cylindrical scallop.
-pub fn edge_openings(part: &Part, graph: &AdjacencyGraph, w: usize, rim: &[FaceId]) -> Vec<Depression> {
+pub fn edge_openings(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    w: usize,
+    rim: &[FaceId],
+) -> Vec<Depression> {
     let in_rim: HashSet<FaceId> = rim.iter().copied().collect();
     let mut seen: HashSet<FaceId> = HashSet::new();
     let mut out = Vec::new();
@@ -171,13 +208,20 @@ pub fn edge_openings(part: &Part, graph: &AdjacencyGraph, w: usize, rim: &[FaceI
             Some(DepressionKind::Cutout)
         } else if comp.len() == 2 && concave_arcs == 1 {
             Some(DepressionKind::Notch)
-        } else if comp.len() == 1 && is_concave_blend(part, start) && matches!(part.face(start).surface, Surface::Cylinder { .. }) {
+        } else if comp.len() == 1
+            && is_concave_blend(part, start)
+            && matches!(part.face(start).surface, Surface::Cylinder { .. })
+        {
             Some(DepressionKind::Cutout)
         } else {
             None
         };
         if let Some(kind) = kind {
-            out.push(Depression { wall: w, faces: comp, kind });
+            out.push(Depression {
+                wall: w,
+                faces: comp,
+                kind,
+            });
         }
     }
     out

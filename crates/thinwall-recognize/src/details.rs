@@ -27,7 +27,10 @@ fn is_blend_candidate(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> bool {
     let face = part.face(f);
     let curved = matches!(
         face.surface,
-        Surface::Cylinder { .. } | Surface::Torus { .. } | Surface::Sphere { .. } | Surface::Freeform { .. }
+        Surface::Cylinder { .. }
+            | Surface::Torus { .. }
+            | Surface::Sphere { .. }
+            | Surface::Freeform { .. }
     );
     if !curved {
         return false;
@@ -65,9 +68,16 @@ pub fn blends(part: &Part, graph: &AdjacencyGraph, taken: &HashSet<FaceId>) -> V
             i += 1;
         }
         comp.sort();
-        let radius = comp.iter().filter_map(|&f| blend_radius(part, f)).fold(None, |m: Option<f64>, r| Some(m.map_or(r, |x| x.min(r))));
+        let radius = comp
+            .iter()
+            .filter_map(|&f| blend_radius(part, f))
+            .fold(None, |m: Option<f64>, r| Some(m.map_or(r, |x| x.min(r))));
         let convex = part.face(comp[0]).same_sense;
-        out.push(Blend { faces: comp, radius, convex });
+        out.push(Blend {
+            faces: comp,
+            radius,
+            convex,
+        });
     }
     out
 }
@@ -75,7 +85,12 @@ pub fn blends(part: &Part, graph: &AdjacencyGraph, taken: &HashSet<FaceId>) -> V
 /// Chamfers: planar faces meeting two neighbours at convex edges with an
 /// obtuse interior angle (100°–170°) and narrow (width ≤ `max_width`,
 /// and less than a quarter of the face's length).
-pub fn chamfers(part: &Part, graph: &AdjacencyGraph, taken: &HashSet<FaceId>, max_width: f64) -> Vec<(FaceId, f64)> {
+pub fn chamfers(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    taken: &HashSet<FaceId>,
+    max_width: f64,
+) -> Vec<(FaceId, f64)> {
     let mut out = Vec::new();
     for f in part.face_ids() {
         if taken.contains(&f) || !matches!(part.face(f).surface, Surface::Plane { .. }) {

@@ -50,7 +50,10 @@ fn concave_reach(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> Vec<(FaceId,
 /// A cylinder or torus face whose outward normal points towards its axis.
 pub fn is_concave_blend(part: &Part, f: FaceId) -> bool {
     let face = part.face(f);
-    matches!(face.surface, Surface::Cylinder { .. } | Surface::Torus { .. }) && !face.same_sense
+    matches!(
+        face.surface,
+        Surface::Cylinder { .. } | Surface::Torus { .. }
+    ) && !face.same_sense
 }
 
 fn edges_length(part: &Part, graph: &AdjacencyGraph, edges: &[usize]) -> f64 {
@@ -73,9 +76,9 @@ fn edges_length(part: &Part, graph: &AdjacencyGraph, edges: &[usize]) -> f64 {
         .sum()
 }
 
-/// All junctions between walls. `height(w)` is a wall's height in the
-/// set-up (along up), used to decide L-junctions: the lower wall is the base.
-pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], height: impl Fn(usize) -> f64, tie_tol: f64) -> Vec<Junction> {
+/// All junctions between walls; an L-junction is listed both ways (see
+/// [`resolve_l_junctions`]).
+pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Vec<Junction> {
     // face -> (wall, side)
     let mut side_of: HashMap<FaceId, (usize, usize)> = HashMap::new();
     for (w, wall) in walls.iter().enumerate() {
@@ -135,15 +138,64 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall], heigh
         }
         let (s, t) = pairs[0];
         let length = m[s][t];
-        let (ha, hb) = (height(a), height(b));
-        if (ha - hb).abs() <= tie_tol {
-            out.push(Junction { leaf: a, base: b, tee: false, base_side: t, length, tie: true });
-            out.push(Junction { leaf: b, base: a, tee: false, base_side: s, length, tie: true });
-        } else if ha > hb {
-            out.push(Junction { leaf: a, base: b, tee: false, base_side: t, length, tie: false });
-        } else {
-            out.push(Junction { leaf: b, base: a, tee: false, base_side: s, length, tie: false });
-        }
+        // Both directions; `resolve_l_junctions` keeps the right one.
+        out.push(Junction {
+            leaf: a,
+            base: b,
+            tee: false,
+            base_side: t,
+            length,
+            tie: false,
+        });
+        out.push(Junction {
+            leaf: b,
+            base: a,
+            tee: false,
+            base_side: s,
+            length,
+            tie: false,
+        });
     }
     out
+}
+
+/// Decide which wall of each L-junction is the base: a wall carrying
+/// stiffeners (the wall some wall stands on by its longest T-foot) over one
+/// that does not — a
+/// vertical web carrying flanges and stiffeners is a web — otherwise the
+/// lower one in the set-up (`height`); at equal height both ways (`tie`).
+pub fn resolve_l_junctions(
+    junctions: Vec<Junction>,
+    height: impl Fn(usize) -> f64,
+    tie_tol: f64,
+) -> Vec<Junction> {
+    // A carrier is the wall some wall stands on by its longest T-foot.
+    let mut best_tee: HashMap<usize, &Junction> = HashMap::new();
+    for j in junctions.iter().filter(|j| j.tee) {
+        let e = best_tee.entry(j.leaf).or_insert(j);
+        if j.length > e.length {
+            *e = j;
+        }
+    }
+    let carriers: std::collections::HashSet<usize> = best_tee.values().map(|j| j.base).collect();
+    junctions
+        .into_iter()
+        .filter_map(|mut j| {
+            if j.tee {
+                return Some(j);
+            }
+            let (leaf_carries, base_carries) =
+                (carriers.contains(&j.leaf), carriers.contains(&j.base));
+            if base_carries != leaf_carries {
+                return base_carries.then_some(j);
+            }
+            let (hl, hb) = (height(j.leaf), height(j.base));
+            if (hl - hb).abs() <= tie_tol {
+                j.tie = true;
+                Some(j)
+            } else {
+                (hl > hb).then_some(j)
+            }
+        })
+        .collect()
 }

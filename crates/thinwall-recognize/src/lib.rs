@@ -62,21 +62,25 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     let tol = part.tolerances();
     let slab_tol = (tol.linear * 1000.0).max(1e-3);
     let walls = walls::find_walls(part, config);
-    let heights: Vec<f64> = walls.iter().map(|w| w.mid_plane().0.coords.dot(&up)).collect();
+    let heights: Vec<f64> = walls
+        .iter()
+        .map(|w| w.mid_plane().0.coords.dot(&up))
+        .collect();
     let diag = part.bounding_box().diagonal();
-    let junctions = junctions::find_junctions(part, graph, &walls, |w| heights[w], 1e-6 * diag.max(1.0));
+    let junctions = junctions::resolve_l_junctions(
+        junctions::find_junctions(part, graph, &walls),
+        |w| heights[w],
+        1e-6 * diag.max(1.0),
+    );
 
     // Base: the wall a wall meets along its longest foot (ties: the lower).
     let mut info: Vec<WallInfo> = Vec::with_capacity(walls.len());
     for (w, wall) in walls.iter().enumerate() {
-        let best = junctions
-            .iter()
-            .filter(|j| j.leaf == w)
-            .max_by(|a, b| {
-                a.length
-                    .total_cmp(&b.length)
-                    .then(heights[b.base].total_cmp(&heights[a.base]))
-            });
+        let best = junctions.iter().filter(|j| j.leaf == w).max_by(|a, b| {
+            a.length
+                .total_cmp(&b.length)
+                .then(heights[b.base].total_cmp(&heights[a.base]))
+        });
         let (h, l, dir) = match best {
             Some(j) => {
                 let base = &walls[j.base];
@@ -110,8 +114,16 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         if info[w].base.is_some() {
             continue;
         }
-        let leaf_sides: Vec<usize> = junctions.iter().filter(|j| j.base == w).map(|j| j.base_side).collect();
-        let side = if leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2 { 1 } else { 0 };
+        let leaf_sides: Vec<usize> = junctions
+            .iter()
+            .filter(|j| j.base == w)
+            .map(|j| j.base_side)
+            .collect();
+        let side = if leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2 {
+            1
+        } else {
+            0
+        };
         let wall = &walls[w];
         let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {
             vec![wall.region.clone()]
@@ -137,7 +149,12 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     }
     for (w, wall) in walls.iter().enumerate() {
         let i = &mut info[w];
-        i.deflection = deflection::deflection_mm(wall.thickness, i.height, i.length.max(i.height), &config.thinness);
+        i.deflection = deflection::deflection_mm(
+            wall.thickness,
+            i.height,
+            i.length.max(i.height),
+            &config.thinness,
+        );
         i.thin = i.deflection > config.thinness.allowed_deflection_mm;
     }
     // Kinds.
@@ -147,7 +164,11 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
             if thin_leaves {
                 Kind::Web
             } else if info[w].base.is_some() {
-                if info[w].tee { Kind::Rib } else { Kind::Flange }
+                if info[w].tee {
+                    Kind::Rib
+                } else {
+                    Kind::Flange
+                }
             } else {
                 Kind::Wall
             }
@@ -155,20 +176,28 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         .collect();
 
     // Depressions, rims, details.
-    let any_side: HashSet<FaceId> = walls.iter().flat_map(|w| w.sides.iter().flatten().copied()).collect();
+    let any_side: HashSet<FaceId> = walls
+        .iter()
+        .flat_map(|w| w.sides.iter().flatten().copied())
+        .collect();
     let mut taken: HashSet<FaceId> = any_side.clone();
     let mut deps = Vec::new();
     // Thin walls claim first, then thick ones.
     let mut order: Vec<usize> = (0..walls.len()).collect();
     order.sort_by_key(|&w| (!info[w].thin, w));
     for &w in &order {
-        deps.extend(depressions::holes(part, graph, &walls, w, &mut taken, &any_side, slab_tol));
+        deps.extend(depressions::holes(
+            part, graph, &walls, w, &mut taken, &any_side, slab_tol,
+        ));
     }
     let mut rims: Vec<Vec<FaceId>> = vec![Vec::new(); walls.len()];
     for &w in &order {
         let rim = depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
         let openings = depressions::edge_openings(part, graph, w, &rim);
-        let used: HashSet<FaceId> = openings.iter().flat_map(|d| d.faces.iter().copied()).collect();
+        let used: HashSet<FaceId> = openings
+            .iter()
+            .flat_map(|d| d.faces.iter().copied())
+            .collect();
         rims[w] = rim.into_iter().filter(|f| !used.contains(f)).collect();
         taken.extend(used.iter().copied());
         taken.extend(rims[w].iter().copied());
@@ -209,8 +238,15 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         f.height = Some(i.height);
         f.length = Some(i.length);
         f.deflection = Some(i.deflection);
-        f.slenderness = Some(if wall.thickness > 0.0 { i.height / wall.thickness } else { 0.0 });
-        f.mid_plane = Some(Plane { point: [p.x, p.y, p.z], normal: [n.x, n.y, n.z] });
+        f.slenderness = Some(if wall.thickness > 0.0 {
+            i.height / wall.thickness
+        } else {
+            0.0
+        });
+        f.mid_plane = Some(Plane {
+            point: [p.x, p.y, p.z],
+            normal: [n.x, n.y, n.z],
+        });
         f.access_directions = Some([
             [wall.normals[0].x, wall.normals[0].y, wall.normals[0].z],
             [wall.normals[1].x, wall.normals[1].y, wall.normals[1].z],
@@ -253,10 +289,18 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
                 f.diameter = Some(diameter);
                 f.height = Some(height);
                 f.through = Some(through);
-                f.large = Some(height > config.thresholds.large_hole_factor * config.thresholds.preferred_tool_diameter_mm);
+                f.large = Some(
+                    height
+                        > config.thresholds.large_hole_factor
+                            * config.thresholds.preferred_tool_diameter_mm,
+                );
             }
             _ => {
-                let top = wall.outline().iter().map(|p| p.coords.dot(&dir)).fold(f64::NEG_INFINITY, f64::max);
+                let top = wall
+                    .outline()
+                    .iter()
+                    .map(|p| p.coords.dot(&dir))
+                    .fold(f64::NEG_INFINITY, f64::max);
                 f.height = Some((top - lo).max(0.0));
                 let along = wall.frame.z.cross(&dir);
                 if let Some(a) = along.try_normalize(1e-6) {
@@ -287,7 +331,9 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
             let mut f = StiffnessFeature::new(Kind::Fillet, sid(&b.faces));
             f.radius = b.radius;
             f.convex = Some(b.convex);
-            f.wall = wall_of_detail(&b.faces).and_then(|w| wall_feature[w]).map(|i| format!("#{i}"));
+            f.wall = wall_of_detail(&b.faces)
+                .and_then(|w| wall_feature[w])
+                .map(|i| format!("#{i}"));
             features.push(f);
         }
     }
@@ -295,13 +341,20 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         for (c, width) in &chamfers {
             let mut f = StiffnessFeature::new(Kind::Chamfer, sid(&[*c]));
             f.width = Some(*width);
-            f.wall = wall_of_detail(&[*c]).and_then(|w| wall_feature[w]).map(|i| format!("#{i}"));
+            f.wall = wall_of_detail(&[*c])
+                .and_then(|w| wall_feature[w])
+                .map(|i| format!("#{i}"));
             features.push(f);
         }
     }
     // Stable ids: by kind, then by smallest face id; references rewritten.
     let mut order: Vec<usize> = (0..features.len()).collect();
-    order.sort_by_key(|&i| (features[i].kind, features[i].faces.first().copied().unwrap_or(0)));
+    order.sort_by_key(|&i| {
+        (
+            features[i].kind,
+            features[i].faces.first().copied().unwrap_or(0),
+        )
+    });
     let mut counters: BTreeMap<&str, usize> = BTreeMap::new();
     let mut new_id = vec![String::new(); features.len()];
     for &i in &order {
@@ -311,7 +364,10 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         new_id[i] = format!("{p}{n}");
     }
     let rename = |r: &Option<String>| -> Option<String> {
-        r.as_ref().and_then(|s| s.strip_prefix('#')).and_then(|s| s.parse::<usize>().ok()).map(|i| new_id[i].clone())
+        r.as_ref()
+            .and_then(|s| s.strip_prefix('#'))
+            .and_then(|s| s.parse::<usize>().ok())
+            .map(|i| new_id[i].clone())
     };
     for i in 0..features.len() {
         features[i].id = new_id[i].clone();
@@ -320,17 +376,31 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     }
     let mut sorted: Vec<StiffnessFeature> = order.iter().map(|&i| features[i].clone()).collect();
     // Remap junctions and bases to positions in the sorted list.
-    let pos_of_old: BTreeMap<usize, usize> = order.iter().enumerate().map(|(new, &old)| (old, new)).collect();
+    let pos_of_old: BTreeMap<usize, usize> = order
+        .iter()
+        .enumerate()
+        .map(|(new, &old)| (old, new))
+        .collect();
     let wall_pos = |w: usize| wall_feature[w].and_then(|fi| pos_of_old.get(&fi).copied());
     let junctions_out: Vec<Junction> = junctions
         .iter()
-        .filter_map(|j| Some(Junction { leaf: wall_pos(j.leaf)?, base: wall_pos(j.base)?, ..j.clone() }))
+        .filter_map(|j| {
+            Some(Junction {
+                leaf: wall_pos(j.leaf)?,
+                base: wall_pos(j.base)?,
+                ..j.clone()
+            })
+        })
         .collect();
     let bases: BTreeMap<usize, usize> = (0..walls.len())
         .filter_map(|w| Some((wall_pos(w)?, wall_pos(info[w].base?)?)))
         .collect();
     sorted.iter_mut().for_each(|f| f.faces.dedup());
-    Recognition { features: sorted, junctions: junctions_out, bases }
+    Recognition {
+        features: sorted,
+        junctions: junctions_out,
+        bases,
+    }
 }
 
 /// A point on side `s`'s plane of a wall and that side's outward normal.
@@ -338,6 +408,9 @@ fn side_plane(wall: &Wall, s: usize) -> (thinwall_geom::Point3, Vector3) {
     if s == 0 {
         (wall.frame.origin, wall.normals[0])
     } else {
-        (wall.frame.origin - wall.frame.z * wall.thickness, wall.normals[1])
+        (
+            wall.frame.origin - wall.frame.z * wall.thickness,
+            wall.normals[1],
+        )
     }
 }

@@ -38,7 +38,8 @@ pub fn is_outer_loop(part: &Part, face: FaceId, i: usize) -> bool {
         }
         b.diagonal()
     };
-    let largest = (0..f.loops.len()).max_by(|&a, &b| extent(f.loops[a]).total_cmp(&extent(f.loops[b])));
+    let largest =
+        (0..f.loops.len()).max_by(|&a, &b| extent(f.loops[a]).total_cmp(&extent(f.loops[b])));
     largest == Some(i)
 }
 
@@ -174,10 +175,18 @@ pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
         .0
         .iter()
         .map(|p| {
-            p.exterior().length::<Euclidean>() + p.interiors().iter().map(|r| r.length::<Euclidean>()).sum::<f64>()
+            p.exterior().length::<Euclidean>()
+                + p.interiors()
+                    .iter()
+                    .map(|r| r.length::<Euclidean>())
+                    .sum::<f64>()
         })
         .sum();
-    let strip = if perimeter > 0.0 { 4.0 * area / perimeter } else { 0.0 };
+    let strip = if perimeter > 0.0 {
+        4.0 * area / perimeter
+    } else {
+        0.0
+    };
     let rect = region
         .minimum_rotated_rect()
         .map(|r| {
@@ -216,7 +225,10 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
     let mut best = (b.min().x, b.min().y, 0.0);
     for i in 0..=n {
         for j in 0..=n {
-            let (x, y) = (b.min().x + w * i as f64 / n as f64, b.min().y + h * j as f64 / n as f64);
+            let (x, y) = (
+                b.min().x + w * i as f64 / n as f64,
+                b.min().y + h * j as f64 / n as f64,
+            );
             let d = dist(x, y);
             if d > best.2 {
                 best = (x, y, d);

@@ -36,7 +36,10 @@ impl Wall {
         let mut pts = Vec::new();
         for poly in &self.region.0 {
             for c in poly.exterior().coords() {
-                pts.push(self.frame.to_world(&Vector3::new(c.x, c.y, -0.5 * self.thickness)));
+                pts.push(
+                    self.frame
+                        .to_world(&Vector3::new(c.x, c.y, -0.5 * self.thickness)),
+                );
             }
         }
         pts
@@ -48,7 +51,8 @@ impl Wall {
             .map(|p| (p.x(), p.y()))
             .unwrap_or((0.0, 0.0));
         (
-            self.frame.to_world(&Vector3::new(c.0, c.1, -0.5 * self.thickness)),
+            self.frame
+                .to_world(&Vector3::new(c.0, c.1, -0.5 * self.thickness)),
             self.frame.z,
         )
     }
@@ -66,7 +70,11 @@ fn plane_ids(faces: &[PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
     let mut buckets: HashMap<(i64, i64, i64), Vec<usize>> = HashMap::new();
     for (i, f) in faces.iter().enumerate() {
         let n = f.normal();
-        let key = ((n.x * 50.0).round() as i64, (n.y * 50.0).round() as i64, (n.z * 50.0).round() as i64);
+        let key = (
+            (n.x * 50.0).round() as i64,
+            (n.y * 50.0).round() as i64,
+            (n.z * 50.0).round() as i64,
+        );
         let mut found = None;
         'search: for dx in -1..=1 {
             for dy in -1..=1 {
@@ -98,7 +106,10 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
     let tol = part.tolerances();
     let lin = (tol.linear * 100.0).max(1e-4);
     let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
-    let faces: Vec<PlanarFace> = part.face_ids().filter_map(|f| PlanarFace::new(part, f)).collect();
+    let faces: Vec<PlanarFace> = part
+        .face_ids()
+        .filter_map(|f| PlanarFace::new(part, f))
+        .collect();
     let plane_of = plane_ids(&faces, lin, cos_tol);
     // Each face's polygon in its own frame, and its 3D box for prefiltering.
     let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
@@ -146,13 +157,21 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
             } else {
                 overlap.difference(&covered)
             };
-            covered = if covered.0.is_empty() { overlap } else { covered.union(&overlap) };
+            covered = if covered.0.is_empty() {
+                overlap
+            } else {
+                covered.union(&overlap)
+            };
             if fresh.unsigned_area() <= min_area {
                 continue;
             }
             // Canonical side 0: the lower plane id.
             let (pa, pb) = (plane_of[i], plane_of[j]);
-            let (key, swap) = if pa < pb { ((pa, pb), false) } else { ((pb, pa), true) };
+            let (key, swap) = if pa < pb {
+                ((pa, pb), false)
+            } else {
+                ((pb, pa), true)
+            };
             let (side0, side1) = if swap { (j, i) } else { (i, j) };
             let g = groups.entry(key).or_insert_with(|| Group {
                 faces: [Vec::new(), Vec::new()],
@@ -168,7 +187,11 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
             }
             // Region into the group's frame (side 0's plane).
             let in_frame = reproject(&fresh, &f.frame, &g.frame);
-            g.region = if g.region.0.is_empty() { in_frame } else { g.region.union(&in_frame) };
+            g.region = if g.region.0.is_empty() {
+                in_frame
+            } else {
+                g.region.union(&in_frame)
+            };
         }
     }
     let mut keys: Vec<_> = groups.keys().copied().collect();
@@ -194,7 +217,11 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
 
 /// Whether the boxes of two faces overlap when seen along `n` (their
 /// projections onto the plane normal to `n` intersect).
-fn boxes_overlap_across(a: &thinwall_geom::BoundingBox, b: &thinwall_geom::BoundingBox, n: &Vector3) -> bool {
+fn boxes_overlap_across(
+    a: &thinwall_geom::BoundingBox,
+    b: &thinwall_geom::BoundingBox,
+    n: &Vector3,
+) -> bool {
     // Axes perpendicular to n: test the box extents on two in-plane axes.
     let u = thinwall_geom::frame::any_perpendicular(n);
     let v = n.cross(&u);
@@ -211,8 +238,18 @@ fn boxes_overlap_across(a: &thinwall_geom::BoundingBox, b: &thinwall_geom::Bound
     };
     let (ca, cb) = (corners(a), corners(b));
     for axis in [u, v] {
-        let (amin, amax) = ca.iter().map(|c| c.dot(&axis)).fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| (m.0.min(x), m.1.max(x)));
-        let (bmin, bmax) = cb.iter().map(|c| c.dot(&axis)).fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| (m.0.min(x), m.1.max(x)));
+        let (amin, amax) = ca
+            .iter()
+            .map(|c| c.dot(&axis))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
+                (m.0.min(x), m.1.max(x))
+            });
+        let (bmin, bmax) = cb
+            .iter()
+            .map(|c| c.dot(&axis))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
+                (m.0.min(x), m.1.max(x))
+            });
         if amax < bmin || bmax < amin {
             return false;
         }
@@ -236,8 +273,14 @@ pub fn extent_along(points: &[Point3], dir: &Vector3) -> f64 {
     let (lo, hi) = points
         .iter()
         .map(|p| p.coords.dot(dir))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| (m.0.min(x), m.1.max(x)));
-    if lo.is_finite() { hi - lo } else { 0.0 }
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
+            (m.0.min(x), m.1.max(x))
+        });
+    if lo.is_finite() {
+        hi - lo
+    } else {
+        0.0
+    }
 }
 
 /// Longest side of the region's minimum rotated rectangle.

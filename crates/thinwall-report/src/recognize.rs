@@ -59,7 +59,13 @@ pub struct RecognitionReport {
 }
 
 /// Build the report.
-pub fn recognition_report(file: &str, part: &Part, up: [f64; 3], r: &Recognition, connections: Vec<Connection>) -> RecognitionReport {
+pub fn recognition_report(
+    file: &str,
+    part: &Part,
+    up: [f64; 3],
+    r: &Recognition,
+    connections: Vec<Connection>,
+) -> RecognitionReport {
     let faces = part
         .face_ids()
         .map(|f| {
@@ -103,7 +109,11 @@ impl RecognitionReport {
             "{}: {} faces, up ({:.3}, {:.3}, {:.3})",
             self.part.file, self.part.faces, self.setup.up[0], self.setup.up[1], self.setup.up[2]
         );
-        let walls: Vec<&StiffnessFeature> = self.stiffness_features.iter().filter(|f| f.kind.is_wall()).collect();
+        let walls: Vec<&StiffnessFeature> = self
+            .stiffness_features
+            .iter()
+            .filter(|f| f.kind.is_wall())
+            .collect();
         let thin = walls.iter().filter(|f| f.thin == Some(true)).count();
         let _ = writeln!(s, "walls: {} ({} thin)", walls.len(), thin);
         let _ = writeln!(
@@ -129,7 +139,11 @@ impl RecognitionReport {
                 f.base.clone().unwrap_or_default()
             );
         }
-        let others: Vec<&StiffnessFeature> = self.stiffness_features.iter().filter(|f| !f.kind.is_wall()).collect();
+        let others: Vec<&StiffnessFeature> = self
+            .stiffness_features
+            .iter()
+            .filter(|f| !f.kind.is_wall())
+            .collect();
         let _ = writeln!(s, "in and on walls: {}", others.len());
         for f in others {
             let size = match f.kind {
@@ -138,12 +152,20 @@ impl RecognitionReport {
                     mm(f.diameter),
                     mm(f.height),
                     if f.large == Some(true) { " large" } else { "" },
-                    if f.through == Some(false) { " blind" } else { "" }
+                    if f.through == Some(false) {
+                        " blind"
+                    } else {
+                        ""
+                    }
                 ),
                 thinwall_recognize::Kind::Fillet => format!(
                     "r {}{}",
                     mm(f.radius),
-                    if f.convex == Some(true) { " (round)" } else { "" }
+                    if f.convex == Some(true) {
+                        " (round)"
+                    } else {
+                        ""
+                    }
                 ),
                 _ => format!("depth {} width {}", mm(f.height), mm(f.width)),
             };

@@ -1,0 +1,318 @@
+#!/usr/bin/env python3
+"""Generate recognition fixtures: thin-walled parts built with OpenCascade,
+each with the stiffness features it must yield.
+
+Expected features name their faces by centroid (mm) so they survive any
+STEP id numbering; tests map centroids to the faces Thinwall reads.
+
+usage: python3 scripts/make_recognition_fixtures.py [OUT_DIR]   (default fixtures/recognition)
+"""
+import json, math, os, sys
+
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakePrism
+from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut, BRepAlgoAPI_Fuse
+from OCP.BRepFilletAPI import BRepFilletAPI_MakeFillet, BRepFilletAPI_MakeChamfer
+from OCP.BRepBuilderAPI import (BRepBuilderAPI_Transform, BRepBuilderAPI_MakePolygon,
+                                BRepBuilderAPI_MakeFace)
+from OCP.gp import gp_Pnt, gp_Ax2, gp_Dir, gp_Trsf, gp_Vec, gp_Ax1
+from OCP.TopExp import TopExp_Explorer
+from OCP.TopAbs import TopAbs_FACE, TopAbs_EDGE
+from OCP.TopoDS import TopoDS
+from OCP.STEPControl import STEPControl_Writer, STEPControl_AsIs
+from OCP.Interface import Interface_Static
+from OCP.IFSelect import IFSelect_RetDone
+from OCP.GProp import GProp_GProps
+from OCP.BRepGProp import BRepGProp
+from OCP.BRepAdaptor import BRepAdaptor_Surface, BRepAdaptor_Curve
+from OCP.GeomAbs import GeomAbs_SurfaceType as T
+from OCP.ShapeUpgrade import ShapeUpgrade_UnifySameDomain
+
+
+def box(x0, y0, z0, x1, y1, z1):
+    return BRepPrimAPI_MakeBox(gp_Pnt(x0, y0, z0), x1 - x0, y1 - y0, z1 - z0).Shape()
+
+
+def fuse(*shapes):
+    s = shapes[0]
+    for o in shapes[1:]:
+        s = BRepAlgoAPI_Fuse(s, o).Shape()
+    u = ShapeUpgrade_UnifySameDomain(s, True, True, True)
+    u.Build()
+    return u.Shape()
+
+
+def cut(a, *tools):
+    for t in tools:
+        a = BRepAlgoAPI_Cut(a, t).Shape()
+    u = ShapeUpgrade_UnifySameDomain(a, True, True, True)
+    u.Build()
+    return u.Shape()
+
+
+def hole_y(x, z, d, y0=-50, length=200):
+    """A cylinder along +y through (x, y0, z)."""
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y0, z), gp_Dir(0, 1, 0)), d / 2, length).Shape()
+
+
+def faces(shape):
+    out = []
+    e = TopExp_Explorer(shape, TopAbs_FACE)
+    while e.More():
+        f = TopoDS.Face_s(e.Current())
+        p = GProp_GProps()
+        BRepGProp.SurfaceProperties_s(f, p)
+        c = p.CentreOfMass()
+        a = BRepAdaptor_Surface(f)
+        kind = {T.GeomAbs_Plane: "plane", T.GeomAbs_Cylinder: "cylinder"}.get(a.GetType(), "other")
+        n = None
+        if kind == "plane":
+            d = a.Plane().Axis().Direction()
+            n = [d.X(), d.Y(), d.Z()]
+            if f.Orientation() == 1:  # reversed
+                n = [-v for v in n]
+        out.append({"centroid": [c.X(), c.Y(), c.Z()], "kind": kind, "normal": n, "area": p.Mass()})
+        e.Next()
+    return out
+
+
+def pick(fs, pred):
+    got = [f["centroid"] for f in fs if pred(f)]
+    assert got, "predicate selected no face"
+    return got
+
+
+def near(a, b, tol=1e-6):
+    return abs(a - b) < tol
+
+
+def write(shape, path):
+    Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
+    w = STEPControl_Writer()
+    w.Transfer(shape, STEPControl_AsIs)
+    assert w.Write(path) == IFSelect_RetDone
+
+
+def wall(kind, side_pred, thin=True, thickness=None, fs=None, name=None):
+    return {"kind": kind, "thin": thin, "thickness": thickness, "side_faces_at": pick(fs, side_pred), "name": name}
+
+
+def other(kind, pred, fs, wall_name, **extra):
+    d = {"kind": kind, "faces_at": pick(fs, pred), "wall": wall_name}
+    d.update(extra)
+    return d
+
+
+def rib_grid_panel():
+    """Web 200x150x2, four 1.5 mm flanges 30 high, two ribs along x and one
+    along y (1.2 mm, 25 high) crossing, three Ø19 holes (large: over
+    18 mm high) in the first x rib and two cut-outs (10 wide, 8 deep) in
+    the y=0 flange."""
+    L, W, t, H = 200.0, 150.0, 2.0, 30.0
+    parts = [box(0, 0, 0, L, W, t),
+             box(0, 0, t, L, 1.5, H), box(0, W - 1.5, t, L, W, H),
+             box(0, 1.5, t, 1.5, W - 1.5, H), box(L - 1.5, 1.5, t, L, W - 1.5, H),
+             box(1.5, 49.4, t, L - 1.5, 50.6, 25), box(1.5, 99.4, t, L - 1.5, 100.6, 25),
+             box(99.4, 1.5, t, 100.6, W - 1.5, 25)]
+    s = fuse(*parts)
+    s = cut(s, hole_y(30, 14, 19.0, 45, 10), hole_y(70, 14, 19.0, 45, 10), hole_y(150, 14, 19.0, 45, 10),
+            box(40, -1, 22, 50, 3, H + 1), box(140, -1, 22, 150, 3, H + 1))
+    return s
+
+
+def rib_grid_expected(fs):
+    L, W, t, H = 200.0, 150.0, 2.0, 30.0
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    def c(f, i):
+        return f["centroid"][i]
+    e = [
+        wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), t)), thickness=2.0, fs=fs, name="W"),
+        wall("flange", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 0)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 1.5)), thickness=1.5, fs=fs, name="F_y0"),
+        wall("flange", lambda f: (n_is(f, [0, 1, 0]) and near(c(f, 1), W)) or (n_is(f, [0, -1, 0]) and near(c(f, 1), W - 1.5)), thickness=1.5, fs=fs, name="F_yW"),
+        wall("flange", lambda f: (n_is(f, [-1, 0, 0]) and near(c(f, 0), 0)) or (n_is(f, [1, 0, 0]) and near(c(f, 0), 1.5)), thickness=1.5, fs=fs, name="F_x0"),
+        wall("flange", lambda f: (n_is(f, [1, 0, 0]) and near(c(f, 0), L)) or (n_is(f, [-1, 0, 0]) and near(c(f, 0), L - 1.5)), thickness=1.5, fs=fs, name="F_xL"),
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 49.4)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 50.6)), thickness=1.2, fs=fs, name="RX1"),
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 99.4)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 100.6)), thickness=1.2, fs=fs, name="RX2"),
+        wall("rib", lambda f: (n_is(f, [-1, 0, 0]) and near(c(f, 0), 99.4)) or (n_is(f, [1, 0, 0]) and near(c(f, 0), 100.6)), thickness=1.2, fs=fs, name="RY"),
+    ]
+    for x in (30, 70, 150):
+        e.append(other("hole", lambda f, x=x: f["kind"] == "cylinder" and near(c(f, 0), x, 1e-3), fs, "RX1", large=True))
+    for x0 in (40, 140):
+        e.append(other("cutout", lambda f, x0=x0: c(f, 1) < 1.5 + 1e-9 and x0 - 1e-6 <= c(f, 0) <= x0 + 10 + 1e-6 and c(f, 2) > 21.9
+                       and f["kind"] == "plane" and not n_is(f, [0, -1, 0]) and not n_is(f, [0, 1, 0]) and not near(c(f, 2), H), fs, "F_y0"))
+    return e
+
+
+def filleted_chamfered_rib():
+    """A 120x40x20 block with a 3 mm rib 50 high on it, r2 foot fillets,
+    and a 1 mm chamfer on one top edge of the rib."""
+    s = fuse(box(0, 0, 0, 120, 40, 20), box(10, 18.5, 20, 110, 21.5, 70))
+    fil = BRepFilletAPI_MakeFillet(s)
+    ch = None
+    e = TopExp_Explorer(s, TopAbs_EDGE)
+    while e.More():
+        ed = TopoDS.Edge_s(e.Current())
+        a = BRepAdaptor_Curve(ed)
+        p0, p1 = a.Value(a.FirstParameter()), a.Value(a.LastParameter())
+        if near(p0.Z(), 20) and near(p1.Z(), 20) and near(p0.Y(), p1.Y()) and (near(p0.Y(), 18.5) or near(p0.Y(), 21.5)):
+            fil.Add(2.0, ed)
+        e.Next()
+    s = fil.Shape()
+    cm = BRepFilletAPI_MakeChamfer(s)
+    e = TopExp_Explorer(s, TopAbs_EDGE)
+    while e.More():
+        ed = TopoDS.Edge_s(e.Current())
+        a = BRepAdaptor_Curve(ed)
+        p0, p1 = a.Value(a.FirstParameter()), a.Value(a.LastParameter())
+        if near(p0.Z(), 70) and near(p1.Z(), 70) and near(p0.Y(), 21.5) and near(p1.Y(), 21.5):
+            cm.Add(1.0, ed)
+        e.Next()
+    return cm.Shape()
+
+
+def filleted_expected(fs):
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    return [
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(f["centroid"][1], 18.5)) or (n_is(f, [0, 1, 0]) and near(f["centroid"][1], 21.5)), thickness=3.0, fs=fs, name="R"),
+        other("fillet", lambda f: f["kind"] == "cylinder" and f["centroid"][1] < 20, fs, "R"),
+        other("fillet", lambda f: f["kind"] == "cylinder" and f["centroid"][1] > 20, fs, "R"),
+        other("chamfer", lambda f: f["kind"] == "plane" and f["normal"] is not None and abs(f["normal"][1]) > 0.5 and abs(f["normal"][2]) > 0.5, fs, "R"),
+    ]
+
+
+def notched_rib():
+    """A 3 mm rib 40 high on a block, its top end notched (15 long, 12 deep)."""
+    s = fuse(box(0, 0, 0, 120, 40, 20), box(10, 18.5, 20, 110, 21.5, 60))
+    return cut(s, box(95, 10, 48, 111, 30, 61))
+
+
+def notched_expected(fs):
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    c = lambda f, i: f["centroid"][i]
+    return [
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 18.5)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 21.5)), thickness=3.0, fs=fs, name="R"),
+        other("notch", lambda f: (n_is(f, [1, 0, 0]) and near(c(f, 0), 95)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 48)), fs, "R"),
+    ]
+
+
+def sloped_rib():
+    """A 3 mm rib leaning 12° from vertical, 40 high, on a 20 mm block."""
+    pts = [(10.0, 20.0), (13.0, 20.0), (13.0 + 40 * math.tan(math.radians(12)), 60.0), (10.0 + 40 * math.tan(math.radians(12)), 60.0)]
+    poly = BRepBuilderAPI_MakePolygon()
+    for x, z in pts:
+        poly.Add(gp_Pnt(x, 0, z))
+    poly.Close()
+    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
+    rib = BRepPrimAPI_MakePrism(face, gp_Vec(0, 100, 0)).Shape()
+    return fuse(box(0, 0, 0, 40, 100, 20), rib)
+
+
+def sloped_expected(fs):
+    s = math.sin(math.radians(12))
+    return [wall("rib", lambda f: f["normal"] is not None and abs(abs(f["normal"][0]) - math.cos(math.radians(12))) < 1e-6
+                 and abs(abs(f["normal"][2]) - s) < 1e-6, thickness=3.0 * math.cos(math.radians(12)), fs=fs, name="R")]
+
+
+def thick_wall():
+    """A 20 mm wall 40 high on a 20 mm block: not thin."""
+    return fuse(box(0, 0, 0, 100, 60, 20), box(0, 20, 20, 100, 40, 60))
+
+
+def thick_expected(fs):
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    return [wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(f["centroid"][1], 20)) or (n_is(f, [0, 1, 0]) and near(f["centroid"][1], 40)),
+                 thin=False, thickness=20.0, fs=fs, name="R")]
+
+
+def c_frame():
+    """An upright C-section frame: 2 mm web (x-z plane) 120 high, 2 mm top
+    and bottom flanges 30 wide, two 1.5 mm stiffeners, two Ø30 holes."""
+    L = 240.0
+    s = fuse(box(0, 0, 0, L, 2, 120), box(0, 0, 0, L, 30, 2), box(0, 0, 118, L, 30, 120),
+             box(79.25, 2, 2, 80.75, 30, 118), box(159.25, 2, 2, 160.75, 30, 118))
+    return cut(s, hole_y(40, 60, 30.0, -10, 30), hole_y(120, 60, 30.0, -10, 30))
+
+
+def c_frame_expected(fs):
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    c = lambda f, i: f["centroid"][i]
+    return [
+        wall("web", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 0)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 2)), thickness=2.0, fs=fs, name="W"),
+        wall("flange", lambda f: (n_is(f, [0, 0, 1]) and near(c(f, 2), 120)) or (n_is(f, [0, 0, -1]) and near(c(f, 2), 118)), thickness=2.0, fs=fs, name="FT"),
+        wall("flange", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 2)), thickness=2.0, fs=fs, name="FB"),
+        wall("rib", lambda f: (n_is(f, [-1, 0, 0]) and near(c(f, 0), 79.25)) or (n_is(f, [1, 0, 0]) and near(c(f, 0), 80.75)), thickness=1.5, fs=fs, name="S1"),
+        wall("rib", lambda f: (n_is(f, [-1, 0, 0]) and near(c(f, 0), 159.25)) or (n_is(f, [1, 0, 0]) and near(c(f, 0), 160.75)), thickness=1.5, fs=fs, name="S2"),
+        other("hole", lambda f: f["kind"] == "cylinder" and near(c(f, 0), 40, 1e-3), fs, "W", large=True),
+        other("hole", lambda f: f["kind"] == "cylinder" and near(c(f, 0), 120, 1e-3), fs, "W", large=True),
+    ]
+
+
+def thin_plate():
+    """A free 2 mm plate: a thin wall with nothing to stand on."""
+    return box(0, 0, 0, 120, 80, 2)
+
+
+def plate_expected(fs):
+    return [wall("wall", lambda f: f["normal"] is not None and abs(f["normal"][2]) > 0.99, thickness=2.0, fs=fs, name="P")]
+
+
+def turned(shape, up_axis=(1, 2, 3), degrees=37.0):
+    t = gp_Trsf()
+    t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(*up_axis)), math.radians(degrees))
+    t2 = gp_Trsf()
+    t2.SetTranslation(gp_Vec(100, -50, 25))
+    t2.Multiply(t)
+    return BRepBuilderAPI_Transform(shape, t2, True).Shape(), t2
+
+
+def turn_point(t, p):
+    q = gp_Pnt(*p).Transformed(t)
+    return [q.X(), q.Y(), q.Z()]
+
+
+def turn_dir(t, v):
+    d = gp_Dir(*v).Transformed(t)
+    return [d.X(), d.Y(), d.Z()]
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/recognition"
+    os.makedirs(out, exist_ok=True)
+    cases = {
+        "rib_grid_panel": (rib_grid_panel, rib_grid_expected, "web, four flanges, crossing ribs, ribs ending on flanges, a row of large holes, cut-outs, a corner notch"),
+        "filleted_chamfered_rib": (filleted_chamfered_rib, filleted_expected, "a rib meeting its base through r2 fillets, with a chamfered top edge"),
+        "sloped_rib": (sloped_rib, sloped_expected, "a rib leaning 12° from vertical"),
+        "notched_rib": (notched_rib, notched_expected, "a rib with a notch at its top end"),
+        "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
+        "c_frame": (c_frame, c_frame_expected, "an upright C-section frame with stiffeners and large holes in the web"),
+        "thin_plate": (thin_plate, plate_expected, "a free 2 mm plate: a thin wall standing on nothing"),
+    }
+    for name, (build, expect, about) in cases.items():
+        shape = build()
+        fs = faces(shape)
+        expected = expect(fs)
+        write(shape, os.path.join(out, name + ".step"))
+        doc = {"part": name + ".step", "about": about, "up": [0, 0, 1], "features": expected,
+               "source": "scripts/make_recognition_fixtures.py (OpenCascade 7.9)"}
+        json.dump(doc, open(os.path.join(out, name + ".expected.json"), "w"), indent=1)
+        print(name, len(fs), "faces,", len(expected), "features")
+    # The panel turned out of axis alignment, its up turned with it.
+    shape, t = turned(rib_grid_panel())
+    write(shape, os.path.join(out, "rib_grid_panel_turned.step"))
+    base = json.load(open(os.path.join(out, "rib_grid_panel.expected.json")))
+    for f in base["features"]:
+        for key in ("side_faces_at", "faces_at"):
+            if key in f:
+                f[key] = [turn_point(t, p) for p in f[key]]
+    base.update({"part": "rib_grid_panel_turned.step", "up": turn_dir(t, (0, 0, 1)),
+                 "about": "rib_grid_panel turned 37° about (1,2,3) and moved; up turned with it"})
+    json.dump(base, open(os.path.join(out, "rib_grid_panel_turned.expected.json"), "w"), indent=1)
+    print("rib_grid_panel_turned")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,244 @@
+//! Recognition on the fixtures of `scripts/make_recognition_fixtures.py`:
+//! every kind and the hard cases (crossing walls, ribs ending on flanges,
+//! fillets at the foot, a row of large holes, cut-outs, a notch, a thick
+//! wall, a sloped wall, an upright C-frame, a free plate, a turned part).
+
+mod common;
+
+use serde::Deserialize;
+use std::collections::{BTreeSet, HashMap};
+use thinwall_brep::{compute_face_props, Part};
+use thinwall_geom::Point3;
+use thinwall_recognize::{recognize, Config, Kind, Recognition};
+
+#[derive(Deserialize)]
+struct Expected {
+    kind: String,
+    #[serde(default)]
+    name: Option<String>,
+    #[serde(default)]
+    thin: Option<bool>,
+    #[serde(default)]
+    thickness: Option<f64>,
+    #[serde(default)]
+    side_faces_at: Vec<[f64; 3]>,
+    #[serde(default)]
+    faces_at: Vec<[f64; 3]>,
+    #[serde(default)]
+    wall: Option<String>,
+    #[serde(default)]
+    large: Option<bool>,
+}
+
+#[derive(Deserialize)]
+struct Fixture {
+    part: String,
+    up: [f64; 3],
+    features: Vec<Expected>,
+}
+
+fn dir() -> std::path::PathBuf {
+    common::root().join("fixtures/recognition")
+}
+
+fn load(name: &str) -> (Part, Fixture, Recognition) {
+    let fx: Fixture = serde_json::from_str(
+        &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
+    )
+    .unwrap();
+    let (part, _) = thinwall_step::read_file(dir().join(&fx.part)).unwrap();
+    let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
+    let r = recognize(
+        &part,
+        &graph,
+        &Config {
+            up: fx.up,
+            ..Config::default()
+        },
+    );
+    (part, fx, r)
+}
+
+/// Map centroids to face step ids.
+fn ids_at(part: &Part, centroids: &[[f64; 3]]) -> BTreeSet<u64> {
+    let props: Vec<Point3> = part
+        .face_ids()
+        .map(|f| compute_face_props(part, f).centroid)
+        .collect();
+    let diag = part.bounding_box().diagonal();
+    centroids
+        .iter()
+        .map(|c| {
+            let p = Point3::new(c[0], c[1], c[2]);
+            let (i, d) = props
+                .iter()
+                .enumerate()
+                .map(|(i, q)| (i, (q - p).norm()))
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .unwrap();
+            assert!(d < 1e-4 * diag, "no face at {p} (nearest {d})");
+            part.faces[i].step_id
+        })
+        .collect()
+}
+
+fn check(name: &str) -> Vec<String> {
+    let (part, fx, r) = load(name);
+    let mut problems = Vec::new();
+    let mut ours_of: HashMap<String, String> = HashMap::new();
+    let mut matched = BTreeSet::new();
+    for e in &fx.features {
+        let is_wall = !e.side_faces_at.is_empty();
+        let want = ids_at(
+            &part,
+            if is_wall {
+                &e.side_faces_at
+            } else {
+                &e.faces_at
+            },
+        );
+        let hit = r.features.iter().find(|f| {
+            let got: BTreeSet<u64> = if is_wall {
+                f.side_faces
+                    .clone()
+                    .unwrap_or_default()
+                    .into_iter()
+                    .collect()
+            } else {
+                f.faces.iter().copied().collect()
+            };
+            got == want
+        });
+        let Some(f) = hit else {
+            problems.push(format!(
+                "{name}: {} {:?} with faces {want:?} not found",
+                e.kind, e.name
+            ));
+            continue;
+        };
+        matched.insert(f.id.clone());
+        if let Some(n) = &e.name {
+            ours_of.insert(n.clone(), f.id.clone());
+        }
+        if f.kind.name() != e.kind {
+            problems.push(format!(
+                "{name}: {:?} is {} here, expected {}",
+                e.name.as_deref().unwrap_or(&f.id),
+                f.kind.name(),
+                e.kind
+            ));
+        }
+        if is_wall && f.thin != Some(e.thin.unwrap_or(true)) {
+            problems.push(format!("{name}: {} thin {:?}", f.id, f.thin));
+        }
+        if let Some(t) = e.thickness {
+            if (f.thickness.unwrap_or(0.0) - t).abs() > 1e-6 * t.max(1.0) {
+                problems.push(format!(
+                    "{name}: {} thickness {:?}, expected {t}",
+                    f.id, f.thickness
+                ));
+            }
+        }
+        if let Some(l) = e.large {
+            if f.large != Some(l) {
+                problems.push(format!(
+                    "{name}: {} large {:?}, expected {l}",
+                    f.id, f.large
+                ));
+            }
+        }
+    }
+    for e in &fx.features {
+        let Some(w) = &e.wall else { continue };
+        let want = ids_at(&part, &e.faces_at);
+        if let Some(f) = r
+            .features
+            .iter()
+            .find(|f| f.faces.iter().copied().collect::<BTreeSet<_>>() == want)
+        {
+            if f.wall.as_ref() != ours_of.get(w) {
+                problems.push(format!(
+                    "{name}: {} {} is in {:?}, expected {w} = {:?}",
+                    f.kind.name(),
+                    f.id,
+                    f.wall,
+                    ours_of.get(w)
+                ));
+            }
+        }
+    }
+    for f in &r.features {
+        if f.thin == Some(true) && !matched.contains(&f.id) {
+            problems.push(format!(
+                "{name}: {} {} reported thin, not expected",
+                f.kind.name(),
+                f.id
+            ));
+        }
+    }
+    problems
+}
+
+#[test]
+fn every_recognition_fixture_yields_its_features() {
+    let mut problems = Vec::new();
+    let mut kinds = BTreeSet::new();
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir()).unwrap() {
+        let p = entry.unwrap().path();
+        let Some(stem) = p
+            .file_name()
+            .and_then(|s| s.to_str())
+            .and_then(|s| s.strip_suffix(".expected.json"))
+        else {
+            continue;
+        };
+        let fx: Fixture = serde_json::from_str(&std::fs::read_to_string(&p).unwrap()).unwrap();
+        kinds.extend(fx.features.iter().map(|f| f.kind.clone()));
+        problems.extend(check(stem));
+        n += 1;
+    }
+    for p in &problems {
+        println!("{p}");
+    }
+    assert!(n >= 7, "{n} fixtures");
+    // Every kind has a fixture.
+    for k in Kind::ALL {
+        assert!(
+            kinds.contains(k.name()),
+            "no fixture expects a {}",
+            k.name()
+        );
+    }
+    assert!(problems.is_empty(), "{} problems", problems.len());
+}
+
+#[test]
+fn turning_the_part_and_its_up_changes_nothing() {
+    let (_, _, a) = load("rib_grid_panel");
+    let (_, _, b) = load("rib_grid_panel_turned");
+    assert_eq!(a.features.len(), b.features.len());
+    for (x, y) in a.features.iter().zip(&b.features) {
+        assert_eq!(
+            (x.kind, &x.id, x.faces.len(), x.thin),
+            (y.kind, &y.id, y.faces.len(), y.thin)
+        );
+        for (p, q) in [
+            (x.thickness, y.thickness),
+            (x.height, y.height),
+            (x.length, y.length),
+            (x.deflection, y.deflection),
+            (x.diameter, y.diameter),
+        ] {
+            match (p, q) {
+                (Some(p), Some(q)) => assert!(
+                    (p - q).abs() <= 1e-6 * p.abs().max(1.0),
+                    "{}: {p} vs {q}",
+                    x.id
+                ),
+                (None, None) => {}
+                _ => panic!("{}: {p:?} vs {q:?}", x.id),
+            }
+        }
+    }
+}
