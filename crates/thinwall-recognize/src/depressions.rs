@@ -73,9 +73,10 @@ pub fn holes(
     for s in 0..2 {
         for &f in &wall.sides[s] {
             let face = part.face(f);
+            let outer = crate::planar::outer_loops(part, f);
             for (i, &l) in face.loops.iter().enumerate() {
                 let lp = part.loop_(l);
-                if crate::planar::is_outer_loop(part, f, i) {
+                if outer[i] {
                     continue;
                 }
                 // Faces across this loop's edges.
@@ -211,7 +212,12 @@ pub fn edge_openings(
         } else if comp.len() == 1
             && is_concave_blend(part, start)
             && matches!(part.face(start).surface, Surface::Cylinder { .. })
+            && !graph
+                .neighbours(start)
+                .any(|(_, a)| a.convexity == Convexity::Smooth)
         {
+            // A scallop from the edge. A concave cylinder tangent to its
+            // neighbours is an inside corner radius (a fillet) instead.
             Some(DepressionKind::Cutout)
         } else {
             None

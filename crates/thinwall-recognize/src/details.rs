@@ -23,7 +23,7 @@ fn blend_radius(part: &Part, f: FaceId) -> Option<f64> {
     }
 }
 
-fn is_blend_candidate(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> bool {
+pub fn is_blend_candidate(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> bool {
     let face = part.face(f);
     let curved = matches!(
         face.surface,

@@ -109,14 +109,14 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
     for (a, b) in keys {
         let m = links[&(a, b)];
         // a stands on b as a T: both sides of a reach the same side t of b.
-        for t in 0..2 {
-            if m[0][t] > 0.0 && m[1][t] > 0.0 {
+        for (t, (from0, from1)) in m[0].iter().zip(&m[1]).enumerate() {
+            if *from0 > 0.0 && *from1 > 0.0 {
                 out.push(Junction {
                     leaf: a,
                     base: b,
                     tee: true,
                     base_side: t,
-                    length: 0.5 * (m[0][t] + m[1][t]),
+                    length: 0.5 * (from0 + from1),
                     tie: false,
                 });
             }

@@ -58,21 +58,30 @@ struct WallInfo {
 
 /// Recognize the stiffness features of `part` in the set-up of `config`.
 pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recognition {
+    let t0 = std::time::Instant::now();
+    let trace = |what: &str| {
+        if std::env::var_os("THINWALL_TRACE").is_some() {
+            eprintln!("{:>8.3} s  {what}", t0.elapsed().as_secs_f64());
+        }
+    };
     let up = config.up_unit();
-    let tol = part.tolerances();
+    let bbox = part.bounding_box();
+    let tol = thinwall_geom::Tolerances::for_part(bbox.diagonal());
     let slab_tol = (tol.linear * 1000.0).max(1e-3);
-    let walls = walls::find_walls(part, config);
+    let walls = walls::find_walls_with(part, config, &tol);
+    trace("walls");
     let heights: Vec<f64> = walls
         .iter()
         .map(|w| w.mid_plane().0.coords.dot(&up))
         .collect();
-    let diag = part.bounding_box().diagonal();
+    let diag = bbox.diagonal();
     let junctions = junctions::resolve_l_junctions(
         junctions::find_junctions(part, graph, &walls),
         |w| heights[w],
         1e-6 * diag.max(1.0),
     );
 
+    trace("junctions");
     // Base: the wall a wall meets along its longest foot (ties: the lower).
     let mut info: Vec<WallInfo> = Vec::with_capacity(walls.len());
     for (w, wall) in walls.iter().enumerate() {
@@ -131,7 +140,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
             wall.sides[side]
                 .iter()
                 .filter_map(|&f| planar::PlanarFace::new(part, f))
-                .map(|p| planar::intersect(&p.polygon_in(&wall.frame), &wall.region))
+                .map(|p| p.polygon_in(&wall.frame))
                 .collect()
         };
         let (mut h, mut l) = (0.0, 0.0);
@@ -157,6 +166,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         );
         i.thin = i.deflection > config.thinness.allowed_deflection_mm;
     }
+    trace("thinness");
     // Kinds.
     let kinds: Vec<Kind> = (0..walls.len())
         .map(|w| {
@@ -190,6 +200,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
             part, graph, &walls, w, &mut taken, &any_side, slab_tol,
         ));
     }
+    trace("holes");
     let mut rims: Vec<Vec<FaceId>> = vec![Vec::new(); walls.len()];
     for &w in &order {
         let rim = depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
@@ -198,17 +209,23 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
             .iter()
             .flat_map(|d| d.faces.iter().copied())
             .collect();
-        rims[w] = rim.into_iter().filter(|f| !used.contains(f)).collect();
+        // Blends on the rim (inside corner radii, rounded tops) are details.
+        rims[w] = rim
+            .into_iter()
+            .filter(|f| !used.contains(f) && !details::is_blend_candidate(part, graph, *f))
+            .collect();
         taken.extend(used.iter().copied());
         taken.extend(rims[w].iter().copied());
         deps.extend(openings);
     }
+    trace("rims");
     let blends = details::blends(part, graph, &taken);
     for b in &blends {
         taken.extend(b.faces.iter().copied());
     }
     let chamfers = details::chamfers(part, graph, &taken, config.thresholds.chamfer_max_width_mm);
 
+    trace("details");
     // Features: walls first.
     let sid = |fs: &[FaceId]| -> Vec<u64> {
         let mut v: Vec<u64> = fs.iter().map(|&f| part.face(f).step_id).collect();

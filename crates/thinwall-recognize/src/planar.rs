@@ -15,13 +15,14 @@ pub struct FaceLoops {
     pub inner: Vec<Vec<Point3>>,
 }
 
-/// Whether loop `i` of a face is an outer boundary: the file says so, or,
-/// when the file marks no loop outer (all `FACE_BOUND`s), it is the loop
-/// spanning the largest extent.
-pub fn is_outer_loop(part: &Part, face: FaceId, i: usize) -> bool {
+/// Which loops of a face are outer boundaries: those the file marks outer,
+/// or, when it marks none (all `FACE_BOUND`s), the loop spanning the
+/// largest extent.
+pub fn outer_loops(part: &Part, face: FaceId) -> Vec<bool> {
     let f = part.face(face);
-    if f.loops.iter().any(|&l| part.loop_(l).is_outer) {
-        return part.loop_(f.loops[i]).is_outer;
+    let marked: Vec<bool> = f.loops.iter().map(|&l| part.loop_(l).is_outer).collect();
+    if marked.iter().any(|&m| m) {
+        return marked;
     }
     let extent = |l: thinwall_brep::LoopId| {
         let mut b = thinwall_geom::BoundingBox::empty();
@@ -30,9 +31,11 @@ pub fn is_outer_loop(part: &Part, face: FaceId, i: usize) -> bool {
             b.add_point(&part.vertex(e.start).point);
             b.add_point(&part.vertex(e.end).point);
             if let Some(c) = &e.nurbs {
-                let (t0, t1) = c.domain();
-                for k in 1..4 {
-                    b.add_point(&c.point(t0 + (t1 - t0) * k as f64 / 4.0));
+                if c.degree > 1 || !c.is_polynomial() {
+                    let (t0, t1) = c.domain();
+                    for k in 1..4 {
+                        b.add_point(&c.point(t0 + (t1 - t0) * k as f64 / 4.0));
+                    }
                 }
             }
         }
@@ -40,7 +43,7 @@ pub fn is_outer_loop(part: &Part, face: FaceId, i: usize) -> bool {
     };
     let largest =
         (0..f.loops.len()).max_by(|&a, &b| extent(f.loops[a]).total_cmp(&extent(f.loops[b])));
-    largest == Some(i)
+    (0..f.loops.len()).map(|i| Some(i) == largest).collect()
 }
 
 /// Sample the loops of a face.
@@ -50,6 +53,7 @@ pub fn face_loops(part: &Part, face: FaceId) -> FaceLoops {
         outer: Vec::new(),
         inner: Vec::new(),
     };
+    let outer = outer_loops(part, face);
     for (i, &l) in f.loops.iter().enumerate() {
         let lp = part.loop_(l);
         let mut pts = Vec::new();
@@ -77,7 +81,7 @@ pub fn face_loops(part: &Part, face: FaceId) -> FaceLoops {
         if pts.len() < 3 {
             continue;
         }
-        if is_outer_loop(part, face, i) {
+        if outer[i] {
             out.outer.push(pts);
         } else {
             out.inner.push(pts);
@@ -144,6 +148,13 @@ pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
         cs.push(cs[0]);
         LineString::new(cs)
     };
+    let interiors: Vec<LineString<f64>> = loops.inner.iter().map(ring).collect();
+    if loops.outer.len() == 1 {
+        // The common case: one boundary with holes, built directly.
+        let poly =
+            Polygon::new(ring(&loops.outer[0]), interiors).orient(geo::orient::Direction::Default);
+        return MultiPolygon::new(vec![poly]);
+    }
     let mut result = MultiPolygon::new(vec![]);
     for o in &loops.outer {
         let poly = Polygon::new(ring(o), vec![]).orient(geo::orient::Direction::Default);
@@ -153,11 +164,14 @@ pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
             result.union(&poly)
         };
     }
-    for i in &loops.inner {
-        let hole = Polygon::new(ring(i), vec![]).orient(geo::orient::Direction::Default);
-        if hole.unsigned_area() > 0.0 {
-            result = result.difference(&hole);
-        }
+    if !interiors.is_empty() && !result.0.is_empty() {
+        let holes = MultiPolygon::new(
+            interiors
+                .into_iter()
+                .map(|r| Polygon::new(r, vec![]))
+                .collect(),
+        );
+        result = result.difference(&holes);
     }
     result
 }

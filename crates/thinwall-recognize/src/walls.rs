@@ -103,7 +103,12 @@ fn plane_ids(faces: &[PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
 
 /// Find the walls of a part.
 pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
-    let tol = part.tolerances();
+    find_walls_with(part, config, &part.tolerances())
+}
+
+/// [`find_walls`] with the part's tolerances given (they cost a pass over
+/// the part's edges to compute).
+pub fn find_walls_with(part: &Part, config: &Config, tol: &thinwall_geom::Tolerances) -> Vec<Wall> {
     let lin = (tol.linear * 100.0).max(1e-4);
     let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
     let faces: Vec<PlanarFace> = part
@@ -111,8 +116,16 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
         .filter_map(|f| PlanarFace::new(part, f))
         .collect();
     let plane_of = plane_ids(&faces, lin, cos_tol);
-    // Each face's polygon in its own frame, and its 3D box for prefiltering.
+    let n_planes = plane_of.iter().copied().max().map_or(0, |m| m + 1);
+    let mut members: Vec<Vec<usize>> = vec![Vec::new(); n_planes];
+    for (i, &p) in plane_of.iter().enumerate() {
+        members[p].push(i);
+    }
+    // Per plane: its normal and a point (of its first face).
+    let plane_normal: Vec<Vector3> = members.iter().map(|m| faces[m[0]].normal()).collect();
+    let plane_point: Vec<Point3> = members.iter().map(|m| faces[m[0]].frame.origin).collect();
     let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
+    let own_area: Vec<f64> = own.iter().map(|p| p.unsigned_area()).collect();
     let boxes: Vec<thinwall_geom::BoundingBox> = faces
         .iter()
         .map(|f| {
@@ -122,76 +135,123 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
         })
         .collect();
     let min_area = (lin * lin * 100.0).max(1e-6);
-    // (plane a, plane b) -> (faces a, faces b, region in a's frame, frame a, thickness)
     struct Group {
         faces: [Vec<FaceId>; 2],
         frame: Frame,
         normals: [Vector3; 2],
         thickness: f64,
-        region: MultiPolygon<f64>,
+        parts: Vec<geo::Polygon<f64>>,
     }
     let mut groups: HashMap<(usize, usize), Group> = HashMap::new();
     for (i, f) in faces.iter().enumerate() {
         let n = f.normal();
-        let mut candidates: Vec<(f64, usize)> = faces
-            .iter()
-            .enumerate()
-            .filter(|(j, g)| {
-                *j != i
-                    && g.normal().dot(&n) < -cos_tol
-                    && boxes_overlap_across(&boxes[i], &boxes[*j], &n)
-            })
-            .map(|(j, g)| ((f.frame.origin - g.frame.origin).dot(&n), j))
+        // Opposed planes behind F, nearest first.
+        let mut behind: Vec<(f64, usize)> = (0..n_planes)
+            .filter(|&p| plane_normal[p].dot(&n) < -cos_tol)
+            .map(|p| ((f.frame.origin - plane_point[p]).dot(&n), p))
             .filter(|(d, _)| *d > lin)
             .collect();
-        candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
+        behind.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
-        for (d, j) in candidates {
-            let proj = faces[j].polygon_in(&f.frame);
-            let overlap = intersect(&own[i], &proj);
-            if overlap.unsigned_area() <= min_area {
+        let mut covered_area = 0.0;
+        for (d, p) in behind {
+            if covered_area >= own_area[i] - min_area {
+                break; // F is bounded everywhere by nearer faces
+            }
+            let overlapping: Vec<usize> = members[p]
+                .iter()
+                .copied()
+                .filter(|&j| boxes_overlap_across(&boxes[i], &boxes[j], &n))
+                .collect();
+            if overlapping.is_empty() {
+                continue;
+            }
+            let projected = MultiPolygon::new(
+                overlapping
+                    .iter()
+                    .flat_map(|&j| faces[j].polygon_in(&f.frame).0)
+                    .collect(),
+            );
+            let region = intersect(&own[i], &projected);
+            let region_area = region.unsigned_area();
+            if region_area <= min_area {
                 continue;
             }
             let fresh = if covered.0.is_empty() {
-                overlap.clone()
+                region.clone()
             } else {
-                overlap.difference(&covered)
+                region.difference(&covered)
             };
             covered = if covered.0.is_empty() {
-                overlap
+                region
             } else {
-                covered.union(&overlap)
+                covered.union(&region)
             };
+            covered_area = covered.unsigned_area();
             if fresh.unsigned_area() <= min_area {
                 continue;
             }
-            // Canonical side 0: the lower plane id.
-            let (pa, pb) = (plane_of[i], plane_of[j]);
-            let (key, swap) = if pa < pb {
-                ((pa, pb), false)
+            // The faces of plane p that bound the fresh part.
+            // (Tested against the fresh components near each face only:
+            // a plane may hold thousands of faces.)
+            let components: Vec<(geo::Rect<f64>, &geo::Polygon<f64>)> = fresh
+                .0
+                .iter()
+                .filter_map(|c| c.bounding_rect().map(|r| (r, c)))
+                .collect();
+            let partners: Vec<usize> = overlapping
+                .into_iter()
+                .filter(|&j| {
+                    let proj = faces[j].polygon_in(&f.frame);
+                    let Some(pr) = proj.bounding_rect() else {
+                        return false;
+                    };
+                    let near: Vec<geo::Polygon<f64>> = components
+                        .iter()
+                        .filter(|(r, _)| rects_overlap(r, &pr))
+                        .map(|(_, c)| (*c).clone())
+                        .collect();
+                    !near.is_empty()
+                        && intersect(&MultiPolygon::new(near), &proj).unsigned_area() > min_area
+                })
+                .collect();
+            if partners.is_empty() {
+                continue;
+            }
+            let pa = plane_of[i];
+            let (key, f_is_side0) = if pa < p {
+                ((pa, p), true)
             } else {
-                ((pb, pa), true)
+                ((p, pa), false)
             };
-            let (side0, side1) = if swap { (j, i) } else { (i, j) };
-            let g = groups.entry(key).or_insert_with(|| Group {
-                faces: [Vec::new(), Vec::new()],
-                frame: faces[side0].frame,
-                normals: [faces[side0].normal(), faces[side1].normal()],
-                thickness: d,
-                region: MultiPolygon::new(vec![]),
+            let g = groups.entry(key).or_insert_with(|| {
+                let (s0, s1) = if f_is_side0 {
+                    (i, partners[0])
+                } else {
+                    (partners[0], i)
+                };
+                Group {
+                    faces: [Vec::new(), Vec::new()],
+                    frame: faces[s0].frame,
+                    normals: [faces[s0].normal(), faces[s1].normal()],
+                    thickness: d,
+                    parts: Vec::new(),
+                }
             });
-            for (s, k) in [(0, side0), (1, side1)] {
-                if !g.faces[s].contains(&faces[k].face) {
-                    g.faces[s].push(faces[k].face);
+            let (mine, theirs) = if f_is_side0 { (0, 1) } else { (1, 0) };
+            if !g.faces[mine].contains(&f.face) {
+                g.faces[mine].push(f.face);
+            }
+            for j in partners {
+                if !g.faces[theirs].contains(&faces[j].face) {
+                    g.faces[theirs].push(faces[j].face);
                 }
             }
-            // Region into the group's frame (side 0's plane).
-            let in_frame = reproject(&fresh, &f.frame, &g.frame);
-            g.region = if g.region.0.is_empty() {
-                in_frame
-            } else {
-                g.region.union(&in_frame)
-            };
+            // Regions are collected from side 0's faces only: they are
+            // disjoint, so the group's region is their plain collection.
+            if f_is_side0 {
+                g.parts.extend(reproject(&fresh, &f.frame, &g.frame).0);
+            }
         }
     }
     let mut keys: Vec<_> = groups.keys().copied().collect();
@@ -199,7 +259,11 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
     let mut walls = Vec::new();
     for k in keys {
         let mut g = groups.remove(&k).expect("key");
-        let width = narrow_width(&g.region);
+        if g.parts.is_empty() {
+            continue;
+        }
+        let region = MultiPolygon::new(std::mem::take(&mut g.parts));
+        let width = narrow_width(&region);
         if width < config.thresholds.min_width_to_thickness * g.thickness {
             continue;
         }
@@ -209,10 +273,17 @@ pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
             normals: g.normals,
             frame: g.frame,
             thickness: g.thickness,
-            region: g.region,
+            region,
         });
     }
     walls
+}
+
+fn rects_overlap(a: &geo::Rect<f64>, b: &geo::Rect<f64>) -> bool {
+    a.min().x <= b.max().x
+        && b.min().x <= a.max().x
+        && a.min().y <= b.max().y
+        && b.min().y <= a.max().y
 }
 
 /// Whether the boxes of two faces overlap when seen along `n` (their
@@ -222,39 +293,29 @@ fn boxes_overlap_across(
     b: &thinwall_geom::BoundingBox,
     n: &Vector3,
 ) -> bool {
-    // Axes perpendicular to n: test the box extents on two in-plane axes.
     let u = thinwall_geom::frame::any_perpendicular(n);
     let v = n.cross(&u);
-    let corners = |bb: &thinwall_geom::BoundingBox| {
-        let mut out = Vec::with_capacity(8);
-        for i in 0..8 {
-            out.push(Vector3::new(
-                if i & 1 == 0 { bb.min[0] } else { bb.max[0] },
-                if i & 2 == 0 { bb.min[1] } else { bb.max[1] },
-                if i & 4 == 0 { bb.min[2] } else { bb.max[2] },
-            ));
-        }
-        out
+    let range = |bb: &thinwall_geom::BoundingBox, axis: &Vector3| {
+        // Projection of a box onto an axis: centre ± half extents.
+        let c = Vector3::new(
+            bb.min[0] + bb.max[0],
+            bb.min[1] + bb.max[1],
+            bb.min[2] + bb.max[2],
+        ) * 0.5;
+        let h = Vector3::new(
+            bb.max[0] - bb.min[0],
+            bb.max[1] - bb.min[1],
+            bb.max[2] - bb.min[2],
+        ) * 0.5;
+        let r = h.x * axis.x.abs() + h.y * axis.y.abs() + h.z * axis.z.abs();
+        let m = c.dot(axis);
+        (m - r, m + r)
     };
-    let (ca, cb) = (corners(a), corners(b));
-    for axis in [u, v] {
-        let (amin, amax) = ca
-            .iter()
-            .map(|c| c.dot(&axis))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
-                (m.0.min(x), m.1.max(x))
-            });
-        let (bmin, bmax) = cb
-            .iter()
-            .map(|c| c.dot(&axis))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
-                (m.0.min(x), m.1.max(x))
-            });
-        if amax < bmin || bmax < amin {
-            return false;
-        }
-    }
-    true
+    [u, v].iter().all(|axis| {
+        let (a0, a1) = range(a, axis);
+        let (b0, b1) = range(b, axis);
+        a1 >= b0 && b1 >= a0
+    })
 }
 
 /// A region drawn in `from`'s xy plane, expressed in `to`'s xy plane (the

@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Rib-grid panels for the recognition benchmark: a slab with k×k pockets
+cut in one boolean (web 2 mm, ribs 1.2 mm, pockets 30 mm), about 5·k² faces.
+Written to OUT_DIR (default target/bench-panels), never committed.
+
+usage: python3 scripts/make_bench_panels.py [OUT_DIR] [K ...]   (default K: 14 45 100)
+"""
+import os, sys, time
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox
+from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
+from OCP.TopTools import TopTools_ListOfShape
+from OCP.gp import gp_Pnt
+from OCP.STEPControl import STEPControl_Writer, STEPControl_AsIs
+from OCP.TopExp import TopExp_Explorer
+from OCP.TopAbs import TopAbs_FACE
+
+
+def panel(k, cell=30.0, rib=1.2, web=2.0, height=25.0):
+    size = k * cell + rib
+    slab = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), size, size, height).Shape()
+    tools = TopTools_ListOfShape()
+    for i in range(k):
+        for j in range(k):
+            x, y = rib + i * cell, rib + j * cell
+            tools.Append(BRepPrimAPI_MakeBox(gp_Pnt(x, y, web), cell - rib, cell - rib, height).Shape())
+    args = TopTools_ListOfShape()
+    args.Append(slab)
+    op = BRepAlgoAPI_Cut()
+    op.SetArguments(args)
+    op.SetTools(tools)
+    op.SetRunParallel(True)
+    op.Build()
+    return op.Shape()
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "target/bench-panels"
+    ks = [int(a) for a in sys.argv[2:]] or [14, 45, 100]
+    os.makedirs(out, exist_ok=True)
+    for k in ks:
+        t0 = time.time()
+        s = panel(k)
+        n = 0
+        e = TopExp_Explorer(s, TopAbs_FACE)
+        while e.More():
+            n += 1
+            e.Next()
+        w = STEPControl_Writer()
+        w.Transfer(s, STEPControl_AsIs)
+        path = os.path.join(out, f"rib_grid_{n}_faces.step")
+        w.Write(path)
+        print(f"k={k}: {n} faces, {time.time() - t0:.1f} s -> {path}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
