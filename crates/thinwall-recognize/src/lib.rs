@@ -195,36 +195,55 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     // Thin walls claim first, then thick ones.
     let mut order: Vec<usize> = (0..walls.len()).collect();
     order.sort_by_key(|&w| (!info[w].thin, w));
-    for &w in &order {
-        deps.extend(depressions::holes(
-            part, graph, &walls, w, &mut taken, &any_side, slab_tol,
-        ));
-    }
-    trace("holes");
     let mut rims: Vec<Vec<FaceId>> = vec![Vec::new(); walls.len()];
-    for &w in &order {
-        let rim = depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
-        let openings = depressions::edge_openings(part, graph, w, &rim);
-        let used: HashSet<FaceId> = openings
-            .iter()
-            .flat_map(|d| d.faces.iter().copied())
-            .collect();
-        // Blends on the rim (inside corner radii, rounded tops) are details.
-        rims[w] = rim
-            .into_iter()
-            .filter(|f| !used.contains(f) && !details::is_blend_candidate(part, graph, *f))
-            .collect();
-        taken.extend(used.iter().copied());
-        taken.extend(rims[w].iter().copied());
-        deps.extend(openings);
+    let mut blends = Vec::new();
+    let mut chamfers = Vec::new();
+    // Depression and detail recognizers claim faces in priority order
+    // (walls have claimed their sides already); kinds left out of the
+    // priority list run last, in the default order.
+    let mut stages: Vec<Kind> = Vec::new();
+    for k in config.priority.iter().chain(Config::default().priority.iter()) {
+        let stage = if *k == Kind::Notch { Kind::Cutout } else { *k };
+        if !stage.is_wall() && !stages.contains(&stage) {
+            stages.push(stage);
+        }
     }
-    trace("rims");
-    let blends = details::blends(part, graph, &taken);
-    for b in &blends {
-        taken.extend(b.faces.iter().copied());
+    for stage in stages {
+        match stage {
+            Kind::Hole => {
+                for &w in &order {
+                    deps.extend(depressions::holes(part, graph, &walls, w, &mut taken, &any_side, slab_tol));
+                }
+            }
+            Kind::Cutout => {
+                for &w in &order {
+                    let rim = depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
+                    let openings = depressions::edge_openings(part, graph, w, &rim);
+                    let used: HashSet<FaceId> = openings.iter().flat_map(|d| d.faces.iter().copied()).collect();
+                    // Blends on the rim (inside corner radii, rounded tops) are details.
+                    rims[w] = rim
+                        .into_iter()
+                        .filter(|f| !used.contains(f) && !details::is_blend_candidate(part, graph, *f))
+                        .collect();
+                    taken.extend(used.iter().copied());
+                    taken.extend(rims[w].iter().copied());
+                    deps.extend(openings);
+                }
+            }
+            Kind::Fillet => {
+                blends = details::blends(part, graph, &taken);
+                for b in &blends {
+                    taken.extend(b.faces.iter().copied());
+                }
+            }
+            Kind::Chamfer => {
+                chamfers = details::chamfers(part, graph, &taken, config.thresholds.chamfer_max_width_mm);
+                taken.extend(chamfers.iter().map(|c| c.0));
+            }
+            _ => {}
+        }
+        trace(stage.name());
     }
-    let chamfers = details::chamfers(part, graph, &taken, config.thresholds.chamfer_max_width_mm);
-
     trace("details");
     // Features: walls first.
     let sid = |fs: &[FaceId]| -> Vec<u64> {
