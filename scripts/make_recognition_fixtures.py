@@ -260,6 +260,21 @@ def plate_expected(fs):
     return [wall("wall", lambda f: f["normal"] is not None and abs(f["normal"][2]) > 0.99, thickness=2.0, fs=fs, name="P")]
 
 
+def angle_bracket():
+    """Two 2 mm plates in an L: 100x80 on the table, 80 high standing at x=0."""
+    return fuse(box(0, 0, 0, 100, 80, 2), box(0, 0, 2, 2, 80, 80))
+
+
+def bracket_expected(fs):
+    def n_is(f, v):
+        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+    c = lambda f, i: f["centroid"][i]
+    return [
+        wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 2)), thickness=2.0, fs=fs, name="H"),
+        wall("flange", lambda f: (n_is(f, [-1, 0, 0]) and near(c(f, 0), 0)) or (n_is(f, [1, 0, 0]) and near(c(f, 0), 2)), thickness=2.0, fs=fs, name="V"),
+    ]
+
+
 def turned(shape, up_axis=(1, 2, 3), degrees=37.0):
     t = gp_Trsf()
     t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(*up_axis)), math.radians(degrees))
@@ -290,6 +305,7 @@ def main():
         "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
         "c_frame": (c_frame, c_frame_expected, "an upright C-section frame with stiffeners and large holes in the web"),
         "thin_plate": (thin_plate, plate_expected, "a free 2 mm plate: a thin wall standing on nothing"),
+        "angle_bracket": (angle_bracket, bracket_expected, "two 2 mm plates in an L; with up +Z the horizontal one is the base"),
     }
     for name, (build, expect, about) in cases.items():
         shape = build()

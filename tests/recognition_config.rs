@@ -17,21 +17,38 @@ fn parts() -> Vec<std::path::PathBuf> {
 fn no_face_is_claimed_twice_in_any_priority_order() {
     let orders = [
         Config::default().priority,
-        vec![Kind::Chamfer, Kind::Fillet, Kind::Notch, Kind::Cutout, Kind::Hole],
+        vec![
+            Kind::Chamfer,
+            Kind::Fillet,
+            Kind::Notch,
+            Kind::Cutout,
+            Kind::Hole,
+        ],
         vec![Kind::Fillet, Kind::Hole],
     ];
     for path in parts() {
         let (part, _) = thinwall_step::read_file(&path).unwrap();
         let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
         for priority in &orders {
-            let r = recognize(&part, &graph, &Config { priority: priority.clone(), ..Config::default() });
+            let r = recognize(
+                &part,
+                &graph,
+                &Config {
+                    priority: priority.clone(),
+                    ..Config::default()
+                },
+            );
             let mut owner: HashMap<u64, String> = HashMap::new();
             for f in &r.features {
                 // A wall's faces are its own (sides, top, ends); depressions
                 // and details claim theirs once.
                 for id in &f.faces {
                     if let Some(prev) = owner.insert(*id, f.id.clone()) {
-                        panic!("{}: face #{id} in {prev} and {} ({priority:?})", path.display(), f.id);
+                        panic!(
+                            "{}: face #{id} in {prev} and {} ({priority:?})",
+                            path.display(),
+                            f.id
+                        );
                     }
                 }
             }
@@ -44,10 +61,27 @@ fn include_and_exclude_filter_kinds() {
     let path = common::root().join("fixtures/recognition/rib_grid_panel.step");
     let (part, _) = thinwall_step::read_file(&path).unwrap();
     let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-    let only_holes = recognize(&part, &graph, &Config { include: vec![Kind::Hole], ..Config::default() });
+    let only_holes = recognize(
+        &part,
+        &graph,
+        &Config {
+            include: vec![Kind::Hole],
+            ..Config::default()
+        },
+    );
     assert_eq!(only_holes.features.len(), 3);
     assert!(only_holes.features.iter().all(|f| f.kind == Kind::Hole));
-    let no_ribs = recognize(&part, &graph, &Config { exclude: vec![Kind::Rib, Kind::Cutout], ..Config::default() });
-    assert!(no_ribs.features.iter().all(|f| f.kind != Kind::Rib && f.kind != Kind::Cutout));
+    let no_ribs = recognize(
+        &part,
+        &graph,
+        &Config {
+            exclude: vec![Kind::Rib, Kind::Cutout],
+            ..Config::default()
+        },
+    );
+    assert!(no_ribs
+        .features
+        .iter()
+        .all(|f| f.kind != Kind::Rib && f.kind != Kind::Cutout));
     assert!(no_ribs.features.iter().any(|f| f.kind == Kind::Web));
 }

@@ -5,82 +5,10 @@
 
 mod common;
 
-use serde::Deserialize;
 use std::collections::{BTreeSet, HashMap};
-use thinwall_brep::{compute_face_props, Part};
-use thinwall_geom::Point3;
-use thinwall_recognize::{recognize, Config, Kind, Recognition};
+use thinwall_recognize::Kind;
 
-#[derive(Deserialize)]
-struct Expected {
-    kind: String,
-    #[serde(default)]
-    name: Option<String>,
-    #[serde(default)]
-    thin: Option<bool>,
-    #[serde(default)]
-    thickness: Option<f64>,
-    #[serde(default)]
-    side_faces_at: Vec<[f64; 3]>,
-    #[serde(default)]
-    faces_at: Vec<[f64; 3]>,
-    #[serde(default)]
-    wall: Option<String>,
-    #[serde(default)]
-    large: Option<bool>,
-}
-
-#[derive(Deserialize)]
-struct Fixture {
-    part: String,
-    up: [f64; 3],
-    features: Vec<Expected>,
-}
-
-fn dir() -> std::path::PathBuf {
-    common::root().join("fixtures/recognition")
-}
-
-fn load(name: &str) -> (Part, Fixture, Recognition) {
-    let fx: Fixture = serde_json::from_str(
-        &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
-    )
-    .unwrap();
-    let (part, _) = thinwall_step::read_file(dir().join(&fx.part)).unwrap();
-    let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-    let r = recognize(
-        &part,
-        &graph,
-        &Config {
-            up: fx.up,
-            ..Config::default()
-        },
-    );
-    (part, fx, r)
-}
-
-/// Map centroids to face step ids.
-fn ids_at(part: &Part, centroids: &[[f64; 3]]) -> BTreeSet<u64> {
-    let props: Vec<Point3> = part
-        .face_ids()
-        .map(|f| compute_face_props(part, f).centroid)
-        .collect();
-    let diag = part.bounding_box().diagonal();
-    centroids
-        .iter()
-        .map(|c| {
-            let p = Point3::new(c[0], c[1], c[2]);
-            let (i, d) = props
-                .iter()
-                .enumerate()
-                .map(|(i, q)| (i, (q - p).norm()))
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .unwrap();
-            assert!(d < 1e-4 * diag, "no face at {p} (nearest {d})");
-            part.faces[i].step_id
-        })
-        .collect()
-}
+use common::fixtures::{dir, ids_at, load, Fixture};
 
 fn check(name: &str) -> Vec<String> {
     let (part, fx, r) = load(name);

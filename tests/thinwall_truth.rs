@@ -25,14 +25,79 @@ struct TruthFeature {
 }
 
 #[derive(Deserialize)]
+struct TruthConnection {
+    base: String,
+    leaf: String,
+    kind: String,
+}
+
+#[derive(Deserialize)]
 struct Truth {
     part: String,
     up: [f64; 3],
     features: Vec<TruthFeature>,
+    connections: Vec<TruthConnection>,
 }
 
 fn set(v: &[u64]) -> BTreeSet<u64> {
     v.iter().copied().collect()
+}
+
+/// Our feature id for each truth feature id (by faces).
+fn id_map(truth: &Truth, ours: &[StiffnessFeature]) -> std::collections::HashMap<String, String> {
+    let mut m = std::collections::HashMap::new();
+    for t in &truth.features {
+        let hit = ours.iter().find(|f| {
+            if t.side_faces.is_empty() {
+                set(&f.faces) == set(&t.faces)
+            } else {
+                f.side_faces
+                    .as_deref()
+                    .is_some_and(|s| set(s) == set(&t.side_faces))
+            }
+        });
+        if let Some(f) = hit {
+            m.insert(t.id.clone(), f.id.clone());
+        }
+    }
+    m
+}
+
+/// Connections in both, as comparable strings.
+fn connection_set(
+    truth: &Truth,
+    ours: &thinwall_connect::Structure,
+    ids: &std::collections::HashMap<String, String>,
+) -> (BTreeSet<String>, BTreeSet<String>) {
+    let want = truth
+        .connections
+        .iter()
+        .map(|c| {
+            let (b, l) = (
+                ids.get(&c.base).cloned().unwrap_or(c.base.clone()),
+                ids.get(&c.leaf).cloned().unwrap_or(c.leaf.clone()),
+            );
+            if c.kind == "crossing" {
+                let (x, y) = if b <= l { (b, l) } else { (l, b) };
+                format!("crossing {x} {y}")
+            } else {
+                format!("base_leaf {b} {l}")
+            }
+        })
+        .collect();
+    let got = ours
+        .connections
+        .iter()
+        .map(|c| match c {
+            thinwall_connect::Connection::BaseLeaf { base, leaf } => {
+                format!("base_leaf {base} {leaf}")
+            }
+            thinwall_connect::Connection::Crossing { features } => {
+                format!("crossing {} {}", features[0], features[1])
+            }
+        })
+        .collect();
+    (want, got)
 }
 
 /// Differences between the recognition of one part and its truth.
@@ -141,6 +206,59 @@ fn thinwall_parts_match_the_ground_truth() {
     assert!(
         problems.is_empty(),
         "{} differences from the ground truth",
+        problems.len()
+    );
+}
+
+#[test]
+fn thinwall_connections_match_the_ground_truth() {
+    let dir = common::shared_data().join("thinwall");
+    let mut problems = Vec::new();
+    let mut compared = 0;
+    for f in common::step_files(&dir) {
+        let stem = f.file_stem().unwrap().to_string_lossy().to_string();
+        let truth: Truth = serde_json::from_str(
+            &std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap(),
+        )
+        .unwrap();
+        let (part, _) = thinwall_step::read_file(&f).unwrap();
+        let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
+        let r = recognize(
+            &part,
+            &graph,
+            &Config {
+                up: truth.up,
+                ..Config::default()
+            },
+        );
+        let setup = thinwall_connect::Setup {
+            up: truth.up,
+            ..Default::default()
+        };
+        let s = thinwall_connect::connect(&r, &setup, &thinwall_connect::Options::default());
+        s.validate().unwrap_or_else(|e| panic!("{stem}: {e}"));
+        let ids = id_map(&truth, &r.features);
+        let (want, got) = connection_set(&truth, &s, &ids);
+        for w in want.difference(&got) {
+            problems.push(format!("{stem}: missing {w}"));
+        }
+        // Links among features the truth knows must all be in the truth.
+        let known: BTreeSet<&String> = ids.values().collect();
+        for g in got.difference(&want) {
+            let words: Vec<&str> = g.split(' ').collect();
+            if known.contains(&words[1].to_string()) && known.contains(&words[2].to_string()) {
+                problems.push(format!("{stem}: extra {g}"));
+            }
+        }
+        compared += want.len();
+    }
+    for p in &problems {
+        println!("{p}");
+    }
+    assert!(compared > 50, "{compared} truth connections");
+    assert!(
+        problems.is_empty(),
+        "{} connection differences",
         problems.len()
     );
 }

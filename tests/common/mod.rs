@@ -31,3 +31,4 @@ pub fn step_files(dir: &Path) -> Vec<PathBuf> {
     v.sort();
     v
 }
+pub mod fixtures;

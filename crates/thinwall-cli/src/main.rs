@@ -60,10 +60,27 @@ enum Command {
         /// Preferred tool diameter, mm.
         #[arg(long)]
         tool_diameter: Option<f64>,
+        /// Machine class: 3-axis (tool axis = up) or 5-axis.
+        #[arg(long, value_enum, default_value = "3-axis")]
+        machine: MachineArg,
+        /// 5-axis: largest tilt of the tool axis from up, degrees.
+        #[arg(long, default_value_t = 30.0)]
+        tilt_limit: f64,
+        /// Link thin walls to the thick walls they stand on.
+        #[arg(long)]
+        connect_thick: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
     },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum MachineArg {
+    #[value(name = "3-axis")]
+    ThreeAxis,
+    #[value(name = "5-axis")]
+    FiveAxis,
 }
 
 fn parse_vector(s: &str) -> Result<[f64; 3], String> {
@@ -116,6 +133,9 @@ fn run(cli: Cli) -> Result<(), String> {
             force,
             allowed_deflection,
             tool_diameter,
+            machine,
+            tilt_limit,
+            connect_thick,
             format,
         } => {
             let mut cfg = match &config {
@@ -152,12 +172,37 @@ fn run(cli: Cli) -> Result<(), String> {
             let graph = AdjacencyGraph::build(&model, &model.tolerances());
             let r = thinwall_recognize::recognize(&model, &graph, &cfg);
             let u = cfg.up_unit();
+            if !(tilt_limit.is_finite() && (0.0..=90.0).contains(&tilt_limit)) {
+                return Err(format!(
+                    "--tilt-limit must be within 0..90 degrees, got {tilt_limit}"
+                ));
+            }
+            let setup = thinwall_connect::Setup {
+                up: [u.x, u.y, u.z],
+                machine: match machine {
+                    MachineArg::ThreeAxis => thinwall_connect::Machine::ThreeAxis,
+                    MachineArg::FiveAxis => thinwall_connect::Machine::FiveAxis {
+                        tilt_limit_deg: tilt_limit,
+                    },
+                },
+                placement: None,
+            };
+            let structure = thinwall_connect::connect(
+                &r,
+                &setup,
+                &thinwall_connect::Options {
+                    connect_thick_walls: connect_thick,
+                },
+            );
+            structure
+                .validate()
+                .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
             let report = thinwall_report::recognition_report(
                 &part.display().to_string(),
                 &model,
-                [u.x, u.y, u.z],
+                &setup,
                 &r,
-                Vec::new(),
+                &structure,
             );
             let text = match format {
                 Format::Text => report.to_text(),

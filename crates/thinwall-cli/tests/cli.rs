@@ -92,7 +92,9 @@ fn bad_input_exits_non_zero_with_a_message() {
 }
 
 fn fixture(rel: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures").join(rel)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fixtures")
+        .join(rel)
 }
 
 #[test]
@@ -102,19 +104,36 @@ fn recognize_json_follows_the_contract() {
         .arg(shared("thinwall/panel_06.step"))
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!(v["schema"].as_str().unwrap().starts_with("thinwall/recognition/"));
+    assert!(v["schema"]
+        .as_str()
+        .unwrap()
+        .starts_with("thinwall/recognition/"));
     assert_eq!(v["part"]["faces"], 45);
     assert_eq!(v["faces"].as_array().unwrap().len(), 45);
     assert_eq!(v["setup"]["up"], serde_json::json!([0.0, 0.0, 1.0]));
     let feats = v["stiffness_features"].as_array().unwrap();
-    let kinds = ["web", "rib", "flange", "wall", "hole", "cutout", "notch", "chamfer", "fillet"];
+    let kinds = [
+        "web", "rib", "flange", "wall", "hole", "cutout", "notch", "chamfer", "fillet",
+    ];
     for f in feats {
         assert!(kinds.contains(&f["kind"].as_str().unwrap()));
         assert!(!f["faces"].as_array().unwrap().is_empty());
         if ["web", "rib", "flange", "wall"].contains(&f["kind"].as_str().unwrap()) {
-            for key in ["thin", "thickness", "height", "length", "deflection", "side_faces", "access_directions"] {
+            for key in [
+                "thin",
+                "thickness",
+                "height",
+                "length",
+                "deflection",
+                "side_faces",
+                "access_directions",
+            ] {
                 assert!(!f[key].is_null(), "{key} missing on {}", f["id"]);
             }
         }
@@ -123,7 +142,11 @@ fn recognize_json_follows_the_contract() {
     assert!(v["connections"].is_array() && v["machining_features"].is_array());
     // The schema lists exactly these kinds.
     let schema: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/schema/recognition.schema.json")).unwrap(),
+        &std::fs::read_to_string(
+            PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+                .join("../../docs/schema/recognition.schema.json"),
+        )
+        .unwrap(),
     )
     .unwrap();
     let listed = &schema["properties"]["stiffness_features"]["items"]["properties"]["kind"]["enum"];
@@ -133,31 +156,69 @@ fn recognize_json_follows_the_contract() {
 #[test]
 fn recognize_text_options_and_errors() {
     let out = bin()
-        .args(["recognize", "--format", "text", "--exclude", "hole,fillet", "--up", "0,0,1"])
+        .args([
+            "recognize",
+            "--format",
+            "text",
+            "--exclude",
+            "hole,fillet",
+            "--up",
+            "0,0,1",
+        ])
         .arg(fixture("recognition/c_frame.step"))
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("web") && text.contains("flange") && !text.contains("hole"), "{text}");
+    assert!(
+        text.contains("web") && text.contains("flange") && !text.contains("hole"),
+        "{text}"
+    );
     // Unknown kind, bad vector, bad config: exit 1 or 2 with a message.
-    let out = bin().args(["recognize", "--include", "bogus"]).arg(fixture("recognition/c_frame.step")).output().unwrap();
+    let out = bin()
+        .args(["recognize", "--include", "bogus"])
+        .arg(fixture("recognition/c_frame.step"))
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("bogus"));
-    let out = bin().args(["recognize", "--up", "0,0"]).arg(fixture("recognition/c_frame.step")).output().unwrap();
+    let out = bin()
+        .args(["recognize", "--up", "0,0"])
+        .arg(fixture("recognition/c_frame.step"))
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let dir = std::env::temp_dir().join(format!("tw-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let cfg = dir.join("bad.toml");
     std::fs::write(&cfg, "[thinness]\nforce_n = -3\n").unwrap();
-    let out = bin().args(["recognize", "--config"]).arg(&cfg).arg(fixture("recognition/c_frame.step")).output().unwrap();
+    let out = bin()
+        .args(["recognize", "--config"])
+        .arg(&cfg)
+        .arg(fixture("recognition/c_frame.step"))
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("force_n"));
     // A stiffer machine (less force) makes walls less thin.
     let cfg = dir.join("soft.toml");
     std::fs::write(&cfg, "[thinness]\nforce_n = 1.0\n").unwrap();
-    let out = bin().args(["recognize", "--config"]).arg(&cfg).arg(shared("thinwall/panel_06.step")).output().unwrap();
+    let out = bin()
+        .args(["recognize", "--config"])
+        .arg(&cfg)
+        .arg(shared("thinwall/panel_06.step"))
+        .output()
+        .unwrap();
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let thin = v["stiffness_features"].as_array().unwrap().iter().filter(|f| f["thin"] == true).count();
+    let thin = v["stiffness_features"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["thin"] == true)
+        .count();
     assert!(thin < 8, "{thin} thin walls with a 1 N force");
 }

@@ -202,7 +202,11 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     // (walls have claimed their sides already); kinds left out of the
     // priority list run last, in the default order.
     let mut stages: Vec<Kind> = Vec::new();
-    for k in config.priority.iter().chain(Config::default().priority.iter()) {
+    for k in config
+        .priority
+        .iter()
+        .chain(Config::default().priority.iter())
+    {
         let stage = if *k == Kind::Notch { Kind::Cutout } else { *k };
         if !stage.is_wall() && !stages.contains(&stage) {
             stages.push(stage);
@@ -212,18 +216,26 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
         match stage {
             Kind::Hole => {
                 for &w in &order {
-                    deps.extend(depressions::holes(part, graph, &walls, w, &mut taken, &any_side, slab_tol));
+                    deps.extend(depressions::holes(
+                        part, graph, &walls, w, &mut taken, &any_side, slab_tol,
+                    ));
                 }
             }
             Kind::Cutout => {
                 for &w in &order {
-                    let rim = depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
+                    let rim =
+                        depressions::rim_faces(part, graph, &walls, w, &taken, &any_side, slab_tol);
                     let openings = depressions::edge_openings(part, graph, w, &rim);
-                    let used: HashSet<FaceId> = openings.iter().flat_map(|d| d.faces.iter().copied()).collect();
+                    let used: HashSet<FaceId> = openings
+                        .iter()
+                        .flat_map(|d| d.faces.iter().copied())
+                        .collect();
                     // Blends on the rim (inside corner radii, rounded tops) are details.
                     rims[w] = rim
                         .into_iter()
-                        .filter(|f| !used.contains(f) && !details::is_blend_candidate(part, graph, *f))
+                        .filter(|f| {
+                            !used.contains(f) && !details::is_blend_candidate(part, graph, *f)
+                        })
                         .collect();
                     taken.extend(used.iter().copied());
                     taken.extend(rims[w].iter().copied());
@@ -237,7 +249,8 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
                 }
             }
             Kind::Chamfer => {
-                chamfers = details::chamfers(part, graph, &taken, config.thresholds.chamfer_max_width_mm);
+                chamfers =
+                    details::chamfers(part, graph, &taken, config.thresholds.chamfer_max_width_mm);
                 taken.extend(chamfers.iter().map(|c| c.0));
             }
             _ => {}

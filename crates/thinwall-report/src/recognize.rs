@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use thinwall_brep::{compute_face_props, Part, Units};
+use thinwall_connect::{Connection, Setup, SideAccess, Structure};
 use thinwall_geom::BoundingBox;
 use thinwall_recognize::{Recognition, StiffnessFeature};
 
@@ -30,19 +31,15 @@ pub struct FaceSummary {
     pub area: f64,
 }
 
-/// The set-up recognition ran in.
+/// A stiffness feature with, for walls, the accessibility of its sides.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Setup {
-    /// Unit up direction (tool axis).
-    pub up: [f64; 3],
-}
-
-/// A connection between two features (filled by the connections layer).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Connection {
-    BaseLeaf { base: String, leaf: String },
-    Crossing { features: [String; 2] },
+pub struct FeatureEntry {
+    #[serde(flatten)]
+    pub feature: StiffnessFeature,
+    /// Walls: per side (same order as `access_directions`), whether the
+    /// tool reaches it in the set-up, and why.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<[SideAccess; 2]>,
 }
 
 /// The whole recognition report.
@@ -52,8 +49,10 @@ pub struct RecognitionReport {
     pub part: PartSummary,
     pub setup: Setup,
     pub faces: Vec<FaceSummary>,
-    pub stiffness_features: Vec<StiffnessFeature>,
+    pub stiffness_features: Vec<FeatureEntry>,
     pub connections: Vec<Connection>,
+    /// Decisions of the connection layer worth knowing.
+    pub notes: Vec<String>,
     /// Filled by the machining-feature layer.
     pub machining_features: Vec<serde_json::Value>,
 }
@@ -62,9 +61,9 @@ pub struct RecognitionReport {
 pub fn recognition_report(
     file: &str,
     part: &Part,
-    up: [f64; 3],
+    setup: &Setup,
     r: &Recognition,
-    connections: Vec<Connection>,
+    structure: &Structure,
 ) -> RecognitionReport {
     let faces = part
         .face_ids()
@@ -87,10 +86,18 @@ pub fn recognition_report(
             faces: part.faces.len(),
             bounding_box: part.bounding_box(),
         },
-        setup: Setup { up },
+        setup: setup.clone(),
         faces,
-        stiffness_features: r.features.clone(),
-        connections,
+        stiffness_features: r
+            .features
+            .iter()
+            .map(|f| FeatureEntry {
+                feature: f.clone(),
+                access: structure.access.get(&f.id).cloned(),
+            })
+            .collect(),
+        connections: structure.connections.clone(),
+        notes: structure.notes.clone(),
         machining_features: Vec::new(),
     }
 }
@@ -109,11 +116,10 @@ impl RecognitionReport {
             "{}: {} faces, up ({:.3}, {:.3}, {:.3})",
             self.part.file, self.part.faces, self.setup.up[0], self.setup.up[1], self.setup.up[2]
         );
-        let walls: Vec<&StiffnessFeature> = self
-            .stiffness_features
-            .iter()
-            .filter(|f| f.kind.is_wall())
-            .collect();
+        let feats: Vec<&StiffnessFeature> =
+            self.stiffness_features.iter().map(|e| &e.feature).collect();
+        let walls: Vec<&StiffnessFeature> =
+            feats.iter().copied().filter(|f| f.kind.is_wall()).collect();
         let thin = walls.iter().filter(|f| f.thin == Some(true)).count();
         let _ = writeln!(s, "walls: {} ({} thin)", walls.len(), thin);
         let _ = writeln!(
@@ -139,9 +145,9 @@ impl RecognitionReport {
                 f.base.clone().unwrap_or_default()
             );
         }
-        let others: Vec<&StiffnessFeature> = self
-            .stiffness_features
+        let others: Vec<&StiffnessFeature> = feats
             .iter()
+            .copied()
             .filter(|f| !f.kind.is_wall())
             .collect();
         let _ = writeln!(s, "in and on walls: {}", others.len());
@@ -179,8 +185,85 @@ impl RecognitionReport {
                 f.wall.clone().unwrap_or_else(|| "-".into())
             );
         }
-        if !self.connections.is_empty() {
-            let _ = writeln!(s, "connections: {}", self.connections.len());
+        s.push_str(&self.structure_text());
+        s
+    }
+
+    /// The connection structure as a tree from the root bases, crossings
+    /// under it, then the wall sides the tool cannot reach in the set-up.
+    pub fn structure_text(&self) -> String {
+        use std::collections::{BTreeMap, BTreeSet};
+        let mut s = String::new();
+        if self.connections.is_empty() {
+            return s;
+        }
+        let mut children: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+        let mut has_base = BTreeSet::new();
+        let mut crossings = Vec::new();
+        for c in &self.connections {
+            match c {
+                Connection::BaseLeaf { base, leaf } => {
+                    children
+                        .entry(base.as_str())
+                        .or_default()
+                        .push(leaf.as_str());
+                    has_base.insert(leaf.as_str());
+                }
+                Connection::Crossing { features } => crossings.push(features),
+            }
+        }
+        let kinds: BTreeMap<&str, &'static str> = self
+            .stiffness_features
+            .iter()
+            .map(|e| (e.feature.id.as_str(), e.feature.kind.name()))
+            .collect();
+        fn walk(
+            s: &mut String,
+            id: &str,
+            depth: usize,
+            children: &BTreeMap<&str, Vec<&str>>,
+            kinds: &BTreeMap<&str, &'static str>,
+        ) {
+            let _ = writeln!(
+                s,
+                "  {}{} {}",
+                "  ".repeat(depth),
+                id,
+                kinds.get(id).copied().unwrap_or("?")
+            );
+            if depth > 64 {
+                return;
+            }
+            for c in children.get(id).into_iter().flatten() {
+                walk(s, c, depth + 1, children, kinds);
+            }
+        }
+        let _ = writeln!(s, "structure:");
+        for root in children.keys().filter(|r| !has_base.contains(*r)) {
+            walk(&mut s, root, 0, &children, &kinds);
+        }
+        if !crossings.is_empty() {
+            let _ = writeln!(s, "crossings:");
+            for [a, b] in crossings {
+                let _ = writeln!(s, "  {a} x {b}");
+            }
+        }
+        let mut blocked = Vec::new();
+        for e in &self.stiffness_features {
+            for (i, a) in e.access.iter().flatten().enumerate() {
+                if !a.reachable {
+                    blocked.push(format!("  {} side {}: {}", e.feature.id, i, a.reason));
+                }
+            }
+        }
+        if !blocked.is_empty() {
+            let _ = writeln!(s, "not reachable in this set-up:");
+            for b in blocked {
+                let _ = writeln!(s, "{b}");
+            }
+        }
+        for n in &self.notes {
+            let _ = writeln!(s, "note: {n}");
         }
         s
     }

@@ -1,0 +1,99 @@
+//! Can the tool reach a side of a wall in the set-up? Judged from the side's
+//! tool access direction (its outward normal) against the machine's tool
+//! axis; obstruction by other material is not checked here.
+
+use crate::setup::Machine;
+use serde::{Deserialize, Serialize};
+use thinwall_geom::Vector3;
+
+/// Angle within which a side counts as facing straight up or as vertical.
+const ANGLE_TOL_DEG: f64 = 0.5;
+
+/// The verdict for one side of a wall.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SideAccess {
+    /// The side's outward normal (unit).
+    pub direction: [f64; 3],
+    pub reachable: bool,
+    /// Why, in a planner's words.
+    pub reason: String,
+}
+
+/// Judge a side with access direction `d` for a machine whose tool axis is `up`.
+pub fn side_access(d: [f64; 3], up: &Vector3, machine: &Machine) -> SideAccess {
+    let dv = Vector3::new(d[0], d[1], d[2])
+        .try_normalize(1e-12)
+        .unwrap_or_else(Vector3::z);
+    let c = dv.dot(up).clamp(-1.0, 1.0);
+    // Elevation of the direction above the machine's horizontal plane.
+    let elevation = c.asin().to_degrees();
+    let (reachable, reason) = if elevation >= 90.0 - ANGLE_TOL_DEG {
+        (true, "faces up: face milling with the tool end".to_string())
+    } else if elevation.abs() <= ANGLE_TOL_DEG {
+        (
+            true,
+            "vertical: peripheral milling with the tool side".to_string(),
+        )
+    } else if elevation > 0.0 {
+        (
+            true,
+            format!("inclined {elevation:.1}° upwards: reachable from above"),
+        )
+    } else if elevation <= -90.0 + ANGLE_TOL_DEG {
+        (
+            false,
+            "faces down (towards the table): needs another set-up".to_string(),
+        )
+    } else {
+        let under = -elevation;
+        match machine {
+            Machine::ThreeAxis => (
+                false,
+                format!("undercut by {under:.1}°: a 3-axis machine cannot reach it"),
+            ),
+            Machine::FiveAxis { tilt_limit_deg } if under <= *tilt_limit_deg => (
+                true,
+                format!("undercut by {under:.1}°: within the {tilt_limit_deg}° tilt limit"),
+            ),
+            Machine::FiveAxis { tilt_limit_deg } => (
+                false,
+                format!("undercut by {under:.1}°: beyond the {tilt_limit_deg}° tilt limit"),
+            ),
+        }
+    };
+    SideAccess {
+        direction: [dv.x, dv.y, dv.z],
+        reachable,
+        reason,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn verdicts_follow_the_tool_axis() {
+        let up = Vector3::z();
+        let three = Machine::ThreeAxis;
+        assert!(side_access([0.0, 0.0, 1.0], &up, &three).reachable);
+        let side = side_access([1.0, 0.0, 0.0], &up, &three);
+        assert!(side.reachable && side.reason.contains("vertical"));
+        let down = side_access([0.0, 0.0, -1.0], &up, &three);
+        assert!(!down.reachable && down.reason.contains("another set-up"));
+        let s = 10f64.to_radians().sin();
+        let c = 10f64.to_radians().cos();
+        assert!(!side_access([c, 0.0, -s], &up, &three).reachable);
+        let five = Machine::FiveAxis {
+            tilt_limit_deg: 15.0,
+        };
+        assert!(side_access([c, 0.0, -s], &up, &five).reachable);
+        let steep = Machine::FiveAxis {
+            tilt_limit_deg: 5.0,
+        };
+        assert!(!side_access([c, 0.0, -s], &up, &steep).reachable);
+        assert!(side_access([c, 0.0, s], &up, &three)
+            .reason
+            .contains("upwards"));
+    }
+}

@@ -1,0 +1,77 @@
+//! The machine set-up: up direction (tool axis of a 3-axis machine),
+//! machine class, and the part's placement on the table.
+
+use serde::{Deserialize, Serialize};
+use thinwall_geom::Vector3;
+
+/// What the machine can do with its tool axis.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "class", rename_all = "snake_case")]
+pub enum Machine {
+    /// The tool axis is always `up`.
+    ThreeAxis,
+    /// The tool axis may tilt from `up` by at most `tilt_limit_deg`.
+    FiveAxis { tilt_limit_deg: f64 },
+}
+
+/// A set-up.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Setup {
+    /// Up in machine coordinates (unit).
+    pub up: [f64; 3],
+    pub machine: Machine,
+    /// Part-to-machine rigid placement (row-major 4×4); identity when absent.
+    pub placement: Option<[[f64; 4]; 4]>,
+}
+
+impl Default for Setup {
+    fn default() -> Self {
+        Self {
+            up: [0.0, 0.0, 1.0],
+            machine: Machine::ThreeAxis,
+            placement: None,
+        }
+    }
+}
+
+impl Setup {
+    /// Up expressed in the part's own coordinates (the placement's rotation
+    /// undone), unit length.
+    pub fn up_in_part(&self) -> Vector3 {
+        let u = Vector3::new(self.up[0], self.up[1], self.up[2]);
+        let u = match &self.placement {
+            // Rotation is orthonormal: its inverse is its transpose.
+            Some(m) => Vector3::new(
+                m[0][0] * u.x + m[1][0] * u.y + m[2][0] * u.z,
+                m[0][1] * u.x + m[1][1] * u.y + m[2][1] * u.z,
+                m[0][2] * u.x + m[1][2] * u.y + m[2][2] * u.z,
+            ),
+            None => u,
+        };
+        u.try_normalize(1e-12).unwrap_or_else(Vector3::z)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn placement_turns_up_into_part_coordinates() {
+        // The part is turned 90° about z on the table: machine +x is part -y…
+        // p_machine = R p_part with R = rot_z(90°): part +x -> machine +y.
+        let s = Setup {
+            up: [0.0, 1.0, 0.0],
+            placement: Some([
+                [0.0, -1.0, 0.0, 5.0],
+                [1.0, 0.0, 0.0, 0.0],
+                [0.0, 0.0, 1.0, 0.0],
+                [0.0, 0.0, 0.0, 1.0],
+            ]),
+            ..Setup::default()
+        };
+        let u = s.up_in_part();
+        assert!((u - Vector3::x()).norm() < 1e-12, "{u}");
+        assert!((Setup::default().up_in_part() - Vector3::z()).norm() < 1e-12);
+    }
+}
