@@ -8,7 +8,7 @@ mod common;
 use std::collections::{BTreeSet, HashMap};
 use thinwall_recognize::Kind;
 
-use common::fixtures::{dir, ids_at, load, Fixture};
+use common::fixtures::{dir, ids_at, load, our_id, Fixture};
 
 fn check(name: &str) -> Vec<String> {
     let (part, fx, r) = load(name);
@@ -16,34 +16,15 @@ fn check(name: &str) -> Vec<String> {
     let mut ours_of: HashMap<String, String> = HashMap::new();
     let mut matched = BTreeSet::new();
     for e in &fx.features {
-        let is_wall = !e.side_faces_at.is_empty();
-        let want = ids_at(
-            &part,
-            if is_wall {
-                &e.side_faces_at
-            } else {
-                &e.faces_at
-            },
-        );
-        let hit = r.features.iter().find(|f| {
-            let got: BTreeSet<u64> = if is_wall {
-                f.side_faces
-                    .clone()
-                    .unwrap_or_default()
-                    .into_iter()
-                    .collect()
-            } else {
-                f.faces.iter().copied().collect()
-            };
-            got == want
-        });
-        let Some(f) = hit else {
+        let Some(f) = our_id(&part, &r, e).and_then(|id| r.features.iter().find(|f| f.id == id))
+        else {
             problems.push(format!(
-                "{name}: {} {:?} with faces {want:?} not found",
+                "{name}: {} {:?} not found with its faces",
                 e.kind, e.name
             ));
             continue;
         };
+        let is_wall = !e.side_faces_at.is_empty();
         matched.insert(f.id.clone());
         if let Some(n) = &e.name {
             ours_of.insert(n.clone(), f.id.clone());

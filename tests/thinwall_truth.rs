@@ -103,49 +103,39 @@ fn connection_set(
 /// Differences between the recognition of one part and its truth.
 fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
     let mut problems = Vec::new();
-    let mut matched = BTreeSet::new();
-    let mut id_of = std::collections::HashMap::new();
+    let id_of = id_map(truth, ours);
+    let matched: BTreeSet<String> = id_of.values().cloned().collect();
     for t in &truth.features {
-        let is_wall = !t.side_faces.is_empty();
-        let hit = ours.iter().find(|f| {
-            if is_wall {
-                f.side_faces
-                    .as_deref()
-                    .is_some_and(|s| set(s) == set(&t.side_faces))
-            } else {
-                set(&f.faces) == set(&t.faces)
+        let Some(f) = id_of
+            .get(&t.id)
+            .and_then(|id| ours.iter().find(|f| &f.id == id))
+        else {
+            problems.push(format!("{}: {} {} not found", truth.part, t.kind, t.id));
+            continue;
+        };
+        if f.kind.name() != t.kind {
+            problems.push(format!(
+                "{}: {} is {} here, {} in the truth",
+                truth.part,
+                t.id,
+                f.kind.name(),
+                t.kind
+            ));
+        }
+        if let Some(thin) = t.thin {
+            if f.thin != Some(thin) {
+                problems.push(format!(
+                    "{}: {} thin {:?}, truth {thin}",
+                    truth.part, t.id, f.thin
+                ));
             }
-        });
-        match hit {
-            None => problems.push(format!("{}: {} {} not found", truth.part, t.kind, t.id)),
-            Some(f) => {
-                matched.insert(f.id.clone());
-                id_of.insert(t.id.clone(), f.id.clone());
-                if f.kind.name() != t.kind {
-                    problems.push(format!(
-                        "{}: {} is {} here, {} in the truth",
-                        truth.part,
-                        t.id,
-                        f.kind.name(),
-                        t.kind
-                    ));
-                }
-                if let Some(thin) = t.thin {
-                    if f.thin != Some(thin) {
-                        problems.push(format!(
-                            "{}: {} thin {:?}, truth {thin}",
-                            truth.part, t.id, f.thin
-                        ));
-                    }
-                }
-                if let Some(th) = t.thickness {
-                    if (f.thickness.unwrap_or(0.0) - th).abs() > 1e-6 {
-                        problems.push(format!(
-                            "{}: {} thickness {:?}, truth {th}",
-                            truth.part, t.id, f.thickness
-                        ));
-                    }
-                }
+        }
+        if let Some(th) = t.thickness {
+            if (f.thickness.unwrap_or(0.0) - th).abs() > 1e-6 {
+                problems.push(format!(
+                    "{}: {} thickness {:?}, truth {th}",
+                    truth.part, t.id, f.thickness
+                ));
             }
         }
     }
@@ -178,24 +168,37 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
     problems
 }
 
+/// Each part of the set with its truth and our recognition.
+fn recognized_parts() -> Vec<(String, Truth, thinwall_recognize::Recognition)> {
+    let dir = common::shared_data().join("thinwall");
+    common::step_files(&dir)
+        .into_iter()
+        .map(|f| {
+            let stem = f.file_stem().unwrap().to_string_lossy().to_string();
+            let truth: Truth = serde_json::from_str(
+                &std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap(),
+            )
+            .unwrap();
+            let (part, _) = thinwall_step::read_file(&f).unwrap();
+            let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
+            let r = recognize(
+                &part,
+                &graph,
+                &Config {
+                    up: truth.up,
+                    ..Config::default()
+                },
+            );
+            (stem, truth, r)
+        })
+        .collect()
+}
+
 #[test]
 fn thinwall_parts_match_the_ground_truth() {
-    let dir = common::shared_data().join("thinwall");
     let mut problems = Vec::new();
     let mut checked = 0;
-    for f in common::step_files(&dir) {
-        let stem = f.file_stem().unwrap().to_string_lossy().to_string();
-        let truth: Truth = serde_json::from_str(
-            &std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap(),
-        )
-        .unwrap();
-        let (part, _) = thinwall_step::read_file(&f).unwrap();
-        let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-        let config = Config {
-            up: truth.up,
-            ..Config::default()
-        };
-        let r = recognize(&part, &graph, &config);
+    for (_, truth, r) in recognized_parts() {
         problems.extend(compare(&truth, &r.features));
         checked += truth.features.len();
     }
@@ -212,25 +215,9 @@ fn thinwall_parts_match_the_ground_truth() {
 
 #[test]
 fn thinwall_connections_match_the_ground_truth() {
-    let dir = common::shared_data().join("thinwall");
     let mut problems = Vec::new();
     let mut compared = 0;
-    for f in common::step_files(&dir) {
-        let stem = f.file_stem().unwrap().to_string_lossy().to_string();
-        let truth: Truth = serde_json::from_str(
-            &std::fs::read_to_string(dir.join(format!("{stem}.truth.json"))).unwrap(),
-        )
-        .unwrap();
-        let (part, _) = thinwall_step::read_file(&f).unwrap();
-        let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-        let r = recognize(
-            &part,
-            &graph,
-            &Config {
-                up: truth.up,
-                ..Config::default()
-            },
-        );
+    for (stem, truth, r) in recognized_parts() {
         let setup = thinwall_connect::Setup {
             up: truth.up,
             ..Default::default()
