@@ -168,15 +168,14 @@ fn run(cli: Cli) -> Result<(), String> {
                 cfg.thresholds.preferred_tool_diameter_mm = d;
             }
             cfg.validate().map_err(|e| e.to_string())?;
-            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
-            let graph = AdjacencyGraph::build(&model, &model.tolerances());
-            let r = thinwall_recognize::recognize(&model, &graph, &cfg);
-            let u = cfg.up_unit();
             if !(tilt_limit.is_finite() && (0.0..=90.0).contains(&tilt_limit)) {
                 return Err(format!(
                     "--tilt-limit must be within 0..90 degrees, got {tilt_limit}"
                 ));
             }
+            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+            let graph = AdjacencyGraph::build(&model, &model.tolerances());
+            let u = cfg.up_unit();
             let setup = thinwall_connect::Setup {
                 up: [u.x, u.y, u.z],
                 machine: match machine {
@@ -187,28 +186,20 @@ fn run(cli: Cli) -> Result<(), String> {
                 },
                 placement: None,
             };
-            let structure = thinwall_connect::connect(
-                &r,
-                &setup,
-                &thinwall_connect::Options {
-                    connect_thick_walls: connect_thick,
-                },
-            );
-            structure
-                .validate()
-                .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
-            let report = thinwall_report::recognition_report(
+            let options = thinwall_connect::Options {
+                connect_thick_walls: connect_thick,
+            };
+            let report = thinwall_report::run_recognition(
                 &part.display().to_string(),
                 &model,
+                &graph,
+                &cfg,
                 &setup,
-                &r,
-                &structure,
-            );
+                &options,
+            )?;
             let text = match format {
                 Format::Text => report.to_text(),
-                Format::Json => {
-                    serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n"
-                }
+                Format::Json => report.to_json(),
             };
             write_out(&text)
         }

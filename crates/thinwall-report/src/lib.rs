@@ -6,4 +6,4 @@ pub mod inspect;
 pub mod recognize;
 
 pub use inspect::{inspect, InspectReport};
-pub use recognize::{recognition_report, FeatureEntry, RecognitionReport};
+pub use recognize::{recognition_report, run_recognition, FeatureEntry, RecognitionReport};

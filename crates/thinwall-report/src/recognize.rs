@@ -268,3 +268,31 @@ impl RecognitionReport {
         s
     }
 }
+
+/// Everything `recognize` does after reading: graph, recognition,
+/// connections (validated), report. Shared by the CLI and the C ABI so both
+/// give the same answer.
+pub fn run_recognition(
+    file: &str,
+    part: &Part,
+    graph: &thinwall_graph::AdjacencyGraph,
+    config: &thinwall_recognize::Config,
+    setup: &Setup,
+    options: &thinwall_connect::Options,
+) -> Result<RecognitionReport, String> {
+    config.validate().map_err(|e| e.to_string())?;
+    let r = thinwall_recognize::recognize(part, graph, config);
+    let structure = thinwall_connect::connect(&r, setup, options);
+    structure
+        .validate()
+        .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
+    Ok(recognition_report(file, part, setup, &r, &structure))
+}
+
+impl RecognitionReport {
+    /// The report as `thinwall recognize --format json` prints it.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+            + "\n"
+    }
+}

@@ -1,0 +1,131 @@
+/*
+ * A small CAD-host-like program over the Thinwall C ABI: load a STEP part
+ * from memory, recognize its stiffness features in a set-up, print them and
+ * their connections, and exercise the error paths.
+ *
+ *   cc -Wall -Werror -std=c11 -Iplugin-api/include host.c -Ltarget/release -lthinwall -o host
+ *   ./host PART.step
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "thinwall.h"
+
+static unsigned char *read_all(const char *path, size_t *len) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *buf = n > 0 ? malloc((size_t)n) : NULL;
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(f);
+    *len = buf ? (size_t)n : 0;
+    return buf;
+}
+
+static int check(int ok, const char *what) {
+    if (!ok) fprintf(stderr, "host: FAILED: %s\n", what);
+    return ok ? 0 : 1;
+}
+
+int main(int argc, char **argv) {
+    int failures = 0;
+    if (argc < 2) {
+        fprintf(stderr, "usage: %s PART.step\n", argv[0]);
+        return 2;
+    }
+    printf("thinwall %s (header %s)\n", tw_version(), THINWALL_VERSION);
+
+    /* Error paths: a missing file, NULL arguments, bad settings. */
+    tw_part *missing = (tw_part *)1;
+    tw_status st = tw_part_load_file("/no/such/part.step", &missing);
+    failures += check(st == TW_ERR_IO && missing == NULL, "missing file gives TW_ERR_IO and a NULL part");
+    failures += check(strstr(tw_last_error_message(), "/no/such/part.step") != NULL, "error message names the file");
+    failures += check(tw_part_load_file(NULL, &missing) == TW_ERR_NULL_ARGUMENT, "NULL path rejected");
+    failures += check(tw_part_load_memory((const uint8_t *)"garbage", 7, &missing) == TW_ERR_PARSE, "garbage is a parse error");
+    failures += check(tw_recognize(NULL, NULL, NULL) == TW_ERR_NULL_ARGUMENT, "NULL part rejected");
+    failures += check(tw_result_feature_count(NULL) == 0 && tw_result_feature_kind(NULL, 0) == NULL, "NULL result accessors are safe");
+    tw_part_free(NULL);
+    tw_result_free(NULL);
+    tw_options_free(NULL);
+    tw_string_free(NULL);
+
+    /* The part, from memory. */
+    size_t len = 0;
+    unsigned char *data = read_all(argv[1], &len);
+    if (!data) {
+        fprintf(stderr, "host: cannot read %s\n", argv[1]);
+        return 2;
+    }
+    tw_part *part = NULL;
+    st = tw_part_load_memory(data, len, &part);
+    free(data);
+    if (st != TW_OK) {
+        fprintf(stderr, "host: load failed (%d): %s\n", (int)st, tw_last_error_message());
+        return 1;
+    }
+    printf("faces: %zu\n", tw_part_face_count(part));
+
+    tw_options *opt = NULL;
+    failures += check(tw_options_new(&opt) == TW_OK, "options created");
+    failures += check(tw_options_set_up(opt, 0.0, 0.0, 0.0) == TW_ERR_INVALID_ARGUMENT, "zero up rejected");
+    failures += check(tw_options_set_force(opt, -1.0) == TW_ERR_INVALID_ARGUMENT, "negative force rejected");
+    failures += check(tw_options_set_up(opt, 0.0, 0.0, 1.0) == TW_OK, "up set");
+    failures += check(tw_options_set_tool_diameter(opt, 12.0) == TW_OK, "tool diameter set");
+
+    tw_result *res = NULL;
+    st = tw_recognize(part, opt, &res);
+    if (st != TW_OK) {
+        fprintf(stderr, "host: recognize failed (%d): %s\n", (int)st, tw_last_error_message());
+        return 1;
+    }
+    size_t n = tw_result_feature_count(res);
+    printf("features: %zu\n", n);
+    for (size_t i = 0; i < n; i++) {
+        size_t nfaces = 0;
+        tw_result_feature_faces(res, i, NULL, 0, &nfaces);
+        uint64_t *ids = malloc(sizeof(uint64_t) * (nfaces ? nfaces : 1));
+        size_t got = 0;
+        if (nfaces > 1) {
+            failures += check(tw_result_feature_faces(res, i, ids, 1, &got) == TW_ERR_BUFFER_TOO_SMALL && got == nfaces,
+                              "small buffer reported with the needed length");
+        }
+        failures += check(tw_result_feature_faces(res, i, ids, nfaces, &got) == TW_OK && got == nfaces, "face ids copied");
+        double t = 0, h = 0, l = 0;
+        bool thin = false;
+        if (tw_result_feature_wall(res, i, &t, &h, &l, &thin) == TW_OK) {
+            printf("  %-4s %-7s t=%.2f h=%.2f L=%.2f %s faces=%zu first=#%llu\n", tw_result_feature_id(res, i),
+                   tw_result_feature_kind(res, i), t, h, l, thin ? "thin" : "thick", got, (unsigned long long)ids[0]);
+        } else {
+            printf("  %-4s %-7s faces=%zu first=#%llu\n", tw_result_feature_id(res, i), tw_result_feature_kind(res, i),
+                   got, (unsigned long long)ids[0]);
+        }
+        free(ids);
+    }
+    failures += check(tw_result_feature_kind(res, n) == NULL, "kind past the end is NULL");
+    size_t nc = tw_result_connection_count(res);
+    printf("connections: %zu\n", nc);
+    for (size_t i = 0; i < nc; i++) {
+        tw_connection_kind k;
+        const char *a = NULL, *b = NULL;
+        if (tw_result_connection(res, i, &k, &a, &b) == TW_OK)
+            printf("  %s %s %s\n", a, k == TW_CONNECTION_CROSSING ? "x" : "->", b);
+    }
+    char *json = NULL;
+    failures += check(tw_result_to_json(res, &json) == TW_OK && json != NULL, "json produced");
+    if (json) {
+        failures += check(strstr(json, "\"schema\": \"thinwall/recognition/1\"") != NULL, "json carries its schema");
+        printf("json: %zu bytes\n", strlen(json));
+        tw_string_free(json);
+    }
+    tw_result_free(res);
+    tw_options_free(opt);
+    tw_part_free(part);
+    printf("%s\n", failures ? "host: FAILED" : "host: ok");
+    return failures ? 1 : 0;
+}

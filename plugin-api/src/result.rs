@@ -1,0 +1,291 @@
+//! `tw_result`: the recognition of a part, with typed accessors and the
+//! same JSON as `thinwall recognize --format json`.
+
+use crate::error::{guard, null, tw_status};
+use crate::options::tw_options;
+use crate::part::tw_part;
+use std::ffi::{c_char, CString};
+use thinwall_connect::Connection;
+use thinwall_report::RecognitionReport;
+
+/// A recognition result (opaque). Immutable; safe to share between threads.
+/// Strings it returns live as long as it does.
+pub struct tw_result {
+    report: RecognitionReport,
+    ids: Vec<CString>,
+    kinds: Vec<CString>,
+    /// Per connection: kind and its two feature ids.
+    links: Vec<(tw_connection_kind, CString, CString)>,
+}
+
+/// The kind of a connection.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum tw_connection_kind {
+    /// `first` is the base, `second` the leaf on or in it.
+    TW_CONNECTION_BASE_LEAF = 0,
+    /// `first` and `second` cross (meet and share a base).
+    TW_CONNECTION_CROSSING = 1,
+}
+
+fn cstring(s: &str) -> CString {
+    CString::new(s.replace('\0', "")).unwrap_or_default()
+}
+
+/// Recognize stiffness features and their connections. `opt` may be NULL
+/// for the defaults. On success `*out` owns a result to free with
+/// `tw_result_free`; on failure `*out` is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_recognize(
+    part: *const tw_part,
+    opt: *const tw_options,
+    out: *mut *mut tw_result,
+) -> tw_status {
+    if !out.is_null() {
+        *out = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out.is_null() {
+            return Err(null("out"));
+        }
+        if part.is_null() {
+            return Err(null("part"));
+        }
+        let defaults = tw_options::default();
+        let o = if opt.is_null() { &defaults } else { &*opt };
+        let p = &*part;
+        let report = thinwall_report::run_recognition(
+            &p.name,
+            &p.part,
+            &p.graph,
+            &o.config,
+            &o.setup(),
+            &o.connect,
+        )
+        .map_err(|m| (tw_status::TW_ERR_INTERNAL, m))?;
+        let feats = &report.stiffness_features;
+        let ids = feats.iter().map(|e| cstring(&e.feature.id)).collect();
+        let kinds = feats
+            .iter()
+            .map(|e| cstring(e.feature.kind.name()))
+            .collect();
+        let links = report
+            .connections
+            .iter()
+            .map(|c| match c {
+                Connection::BaseLeaf { base, leaf } => (
+                    tw_connection_kind::TW_CONNECTION_BASE_LEAF,
+                    cstring(base),
+                    cstring(leaf),
+                ),
+                Connection::Crossing { features } => (
+                    tw_connection_kind::TW_CONNECTION_CROSSING,
+                    cstring(&features[0]),
+                    cstring(&features[1]),
+                ),
+            })
+            .collect();
+        *out = Box::into_raw(Box::new(tw_result {
+            report,
+            ids,
+            kinds,
+            links,
+        }));
+        Ok(())
+    })
+}
+
+/// Free a result. NULL is allowed.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_free(res: *mut tw_result) {
+    if !res.is_null() {
+        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(res)));
+    }
+}
+
+/// The result as JSON (`thinwall/recognition/1`, as the CLI prints it).
+/// `*out_json` is a new string to free with `tw_string_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_to_json(
+    res: *const tw_result,
+    out_json: *mut *mut c_char,
+) -> tw_status {
+    if !out_json.is_null() {
+        *out_json = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out_json.is_null() {
+            return Err(null("out_json"));
+        }
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        *out_json = cstring(&(&*res).report.to_json()).into_raw();
+        Ok(())
+    })
+}
+
+/// Number of stiffness features (0 for NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_count(res: *const tw_result) -> usize {
+    if res.is_null() {
+        return 0;
+    }
+    std::panic::catch_unwind(|| (&*res).ids.len()).unwrap_or(0)
+}
+
+/// Kind of feature `i` ("web", "rib", "flange", "wall", "hole", "cutout",
+/// "notch", "chamfer", "fillet"); NULL when `res` is NULL or `i` is out of
+/// range. Valid while `res` lives.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_kind(res: *const tw_result, i: usize) -> *const c_char {
+    if res.is_null() {
+        return std::ptr::null();
+    }
+    (&*res)
+        .kinds
+        .get(i)
+        .map_or(std::ptr::null(), |s| s.as_ptr())
+}
+
+/// Id of feature `i` ("R2", "H1", …; stable within the result); NULL when
+/// out of range. Valid while `res` lives.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_id(res: *const tw_result, i: usize) -> *const c_char {
+    if res.is_null() {
+        return std::ptr::null();
+    }
+    std::panic::catch_unwind(|| (&*res).ids.get(i).map_or(std::ptr::null(), |s| s.as_ptr()))
+        .unwrap_or(std::ptr::null())
+}
+
+/// Wall sizes of feature `i`, mm: thickness, height (foot to free edge, or
+/// for a web the largest distance to a supporting wall), length; `*thin` is
+/// whether it needs stiffness support. Any out-pointer may be NULL.
+/// `TW_ERR_NOT_APPLICABLE` for a feature that is not a wall.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_wall(
+    res: *const tw_result,
+    i: usize,
+    thickness: *mut f64,
+    height: *mut f64,
+    length: *mut f64,
+    thin: *mut bool,
+) -> tw_status {
+    guard(|| {
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        let f = &(&*res)
+            .report
+            .stiffness_features
+            .get(i)
+            .ok_or((
+                tw_status::TW_ERR_OUT_OF_RANGE,
+                format!("feature {i} out of range"),
+            ))?
+            .feature;
+        if !f.kind.is_wall() {
+            return Err((
+                tw_status::TW_ERR_NOT_APPLICABLE,
+                format!("{} is a {}, not a wall", f.id, f.kind.name()),
+            ));
+        }
+        for (ptr, v) in [
+            (thickness, f.thickness),
+            (height, f.height),
+            (length, f.length),
+        ] {
+            if !ptr.is_null() {
+                *ptr = v.unwrap_or(f64::NAN);
+            }
+        }
+        if !thin.is_null() {
+            *thin = f.thin == Some(true);
+        }
+        Ok(())
+    })
+}
+
+/// The STEP entity ids of feature `i`'s faces. With `buf` NULL, only
+/// `*len` is written (a length query). Otherwise, when `cap` is too small,
+/// `*len` gets the needed length and `TW_ERR_BUFFER_TOO_SMALL` is returned;
+/// else the ids are copied and `*len` is their count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_faces(
+    res: *const tw_result,
+    i: usize,
+    buf: *mut u64,
+    cap: usize,
+    len: *mut usize,
+) -> tw_status {
+    guard(|| {
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        if len.is_null() {
+            return Err(null("len"));
+        }
+        let f = &(&*res)
+            .report
+            .stiffness_features
+            .get(i)
+            .ok_or((
+                tw_status::TW_ERR_OUT_OF_RANGE,
+                format!("feature {i} out of range"),
+            ))?
+            .feature;
+        *len = f.faces.len();
+        if buf.is_null() {
+            return Ok(());
+        }
+        if cap < f.faces.len() {
+            return Err((
+                tw_status::TW_ERR_BUFFER_TOO_SMALL,
+                format!("{} ids need a buffer of {}", f.faces.len(), f.faces.len()),
+            ));
+        }
+        std::ptr::copy_nonoverlapping(f.faces.as_ptr(), buf, f.faces.len());
+        Ok(())
+    })
+}
+
+/// Number of connections (0 for NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_connection_count(res: *const tw_result) -> usize {
+    if res.is_null() {
+        return 0;
+    }
+    std::panic::catch_unwind(|| (&*res).links.len()).unwrap_or(0)
+}
+
+/// Connection `i`: its kind and the ids of its two features (for base-leaf:
+/// base first). The strings live as long as `res`. Any out-pointer may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_connection(
+    res: *const tw_result,
+    i: usize,
+    kind: *mut tw_connection_kind,
+    first: *mut *const c_char,
+    second: *mut *const c_char,
+) -> tw_status {
+    guard(|| {
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        let (k, a, b) = (&*res).links.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("connection {i} out of range"),
+        ))?;
+        if !kind.is_null() {
+            *kind = *k;
+        }
+        if !first.is_null() {
+            *first = a.as_ptr();
+        }
+        if !second.is_null() {
+            *second = b.as_ptr();
+        }
+        Ok(())
+    })
+}
