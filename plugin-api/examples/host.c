@@ -4,7 +4,7 @@
  * their connections, and exercise the error paths.
  *
  *   cc -Wall -Werror -std=c11 -Iplugin-api/include host.c -Ltarget/release -lthinwall -o host
- *   ./host PART.step
+ *   ./host PART.step [VOLUME.step ...]   (volumes removed in the order given)
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,7 +36,7 @@ static int check(int ok, const char *what) {
 int main(int argc, char **argv) {
     int failures = 0;
     if (argc < 2) {
-        fprintf(stderr, "usage: %s PART.step\n", argv[0]);
+        fprintf(stderr, "usage: %s PART.step [VOLUME.step ...]\n", argv[0]);
         return 2;
     }
     printf("thinwall %s (header %s)\n", tw_version(), THINWALL_VERSION);
@@ -124,6 +124,36 @@ int main(int argc, char **argv) {
         tw_string_free(json);
     }
     tw_result_free(res);
+
+    /* Optional: classify volumes given after the part (removed in order). */
+    if (argc > 2) {
+        size_t nv = (size_t)(argc - 2);
+        tw_part **vols = calloc(nv, sizeof(tw_part *));
+        size_t *before = calloc(nv > 1 ? 2 * (nv - 1) : 1, sizeof(size_t));
+        for (size_t i = 0; i < nv; i++) {
+            if (tw_part_load_file(argv[2 + i], &vols[i]) != TW_OK) {
+                fprintf(stderr, "host: %s\n", tw_last_error_message());
+                failures++;
+            }
+            if (i + 1 < nv) {
+                before[2 * i] = i;
+                before[2 * i + 1] = i + 1;
+            }
+        }
+        tw_classification *cls = NULL;
+        st = tw_classify(part, (const tw_part *const *)vols, nv, before, nv > 1 ? nv - 1 : 0, opt, &cls);
+        failures += check(st == TW_OK, "classification");
+        for (size_t i = 0; i < tw_classification_count(cls); i++)
+            printf("volume %zu: %s (%s)\n", i, tw_classification_type(cls, i), tw_classification_product_adjacency(cls, i));
+        size_t bad[2] = {0, 99};
+        tw_classification *none = (tw_classification *)1;
+        failures += check(tw_classify(part, (const tw_part *const *)vols, nv, bad, 1, opt, &none) == TW_ERR_INVALID_ARGUMENT && none == NULL,
+                          "a sequence naming a missing volume is rejected");
+        tw_classification_free(cls);
+        for (size_t i = 0; i < nv; i++) tw_part_free(vols[i]);
+        free(vols);
+        free(before);
+    }
     tw_options_free(opt);
     tw_part_free(part);
     printf("%s\n", failures ? "host: FAILED" : "host: ok");

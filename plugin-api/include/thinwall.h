@@ -53,6 +53,10 @@ typedef enum tw_status {
   TW_ERR_PANIC = 99,
 } tw_status;
 
+// The classification of some volumes (opaque). Immutable; safe to share
+// between threads. Strings it returns live as long as it does.
+typedef struct tw_classification tw_classification;
+
 // Recognition settings (opaque). Defaults: up +Z, 3-axis machine,
 // Popma's sizing parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
 typedef struct tw_options tw_options;
@@ -73,6 +77,38 @@ const char *tw_version(void);
 
 // Free a string returned by Thinwall (`tw_result_to_json`). NULL is allowed.
 void tw_string_free(char *s);
+
+// Classify `n_volumes` volumes (each a part read from its own STEP file)
+// against `part`. `before` holds `n_before` pairs `(a, b)` as `2·n_before`
+// indices: volume `a` is removed before volume `b`. `opt` (may be NULL)
+// gives the up direction. On success `*out` owns a result to free with
+// `tw_classification_free`; on failure `*out` is NULL.
+enum tw_status tw_classify(const struct tw_part *part,
+                           const struct tw_part *const *volumes,
+                           size_t n_volumes,
+                           const size_t *before,
+                           size_t n_before,
+                           const struct tw_options *opt,
+                           struct tw_classification **out);
+
+// Number of volumes classified (0 for NULL).
+size_t tw_classification_count(const struct tw_classification *res);
+
+// Type of volume `i` ("pocket", "passage", "blind_slot", "through_slot",
+// "corner_notch", "step", "face", "hole", "free_pocket", "free_passage",
+// "free_step", "unknown"); NULL when out of range.
+const char *tw_classification_type(const struct tw_classification *res, size_t i);
+
+// Product adjacency of volume `i` ("none", "side", "bottom",
+// "side_and_bottom"); NULL when out of range.
+const char *tw_classification_product_adjacency(const struct tw_classification *res, size_t i);
+
+// The classification as JSON (as `thinwall classify --format json` prints
+// it); a new string to free with `tw_string_free`.
+enum tw_status tw_classification_to_json(const struct tw_classification *res, char **out_json);
+
+// Free a classification. NULL is allowed.
+void tw_classification_free(struct tw_classification *res);
 
 // The message of the last failed call on this thread ("" after a success).
 // Valid until the next Thinwall call on this thread; never NULL.

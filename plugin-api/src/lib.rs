@@ -8,11 +8,13 @@
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)] // every function documents its contract in the header
 
+mod classify;
 mod error;
 mod options;
 mod part;
 mod result;
 
+pub use classify::*;
 pub use error::{tw_last_error_message, tw_status};
 pub use options::*;
 pub use part::*;

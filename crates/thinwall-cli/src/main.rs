@@ -73,6 +73,40 @@ enum Command {
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
     },
+    /// Classify machining-feature volumes (pocket, slot, step, …) by shape
+    /// and by which faces touch the part or volumes not removed before them.
+    Classify {
+        /// The part (STEP).
+        #[arg(long)]
+        part: PathBuf,
+        /// A volume (STEP solid); repeat for several, indexed 0, 1, … in order.
+        #[arg(long, required = true)]
+        volume: Vec<PathBuf>,
+        /// `A:B`: volume A is removed before volume B (repeatable).
+        #[arg(long, value_parser = parse_before)]
+        before: Vec<(usize, usize)>,
+        /// Up direction of the set-up (the tool comes from above), e.g. `0,0,1`.
+        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+        up: Option<[f64; 3]>,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "json")]
+        format: Format,
+    },
+}
+
+fn parse_before(s: &str) -> Result<(usize, usize), String> {
+    let (a, b) = s
+        .split_once(':')
+        .ok_or_else(|| format!("expected A:B, got '{s}'"))?;
+    let a = a
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{a}' is not a volume index"))?;
+    let b = b
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{b}' is not a volume index"))?;
+    Ok((a, b))
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -81,6 +115,46 @@ enum MachineArg {
     ThreeAxis,
     #[value(name = "5-axis")]
     FiveAxis,
+}
+
+fn classify_command(
+    part: PathBuf,
+    volume: Vec<PathBuf>,
+    before: Vec<(usize, usize)>,
+    up: Option<[f64; 3]>,
+    format: Format,
+) -> Result<(), String> {
+    let (model, _) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+    let mut volumes = Vec::new();
+    for v in &volume {
+        let (p, _) = thinwall_step::read_file(v).map_err(|e| e.to_string())?;
+        volumes.push(thinwall_classify::Volume {
+            name: v.display().to_string(),
+            part: p,
+            current: None,
+        });
+    }
+    let up = up.unwrap_or([0.0, 0.0, 1.0]);
+    let n = (up[0] * up[0] + up[1] * up[1] + up[2] * up[2]).sqrt();
+    let up = [up[0] / n, up[1] / n, up[2] / n];
+    let result = thinwall_classify::classify(&thinwall_classify::Request {
+        part: &model,
+        volumes: &volumes,
+        before: &before,
+        up,
+        priority: vec![],
+    })
+    .map_err(|e| e.to_string())?;
+    let report = thinwall_report::ClassificationReport::new(
+        &part.display().to_string(),
+        up,
+        &before,
+        result,
+    );
+    write_out(&match format {
+        Format::Text => report.to_text(),
+        Format::Json => report.to_json(),
+    })
 }
 
 fn parse_vector(s: &str) -> Result<[f64; 3], String> {
@@ -111,6 +185,13 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
+        Command::Classify {
+            part,
+            volume,
+            before,
+            up,
+            format,
+        } => classify_command(part, volume, before, up, format),
         Command::Inspect { part, format } => {
             let (model, read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
             let graph = AdjacencyGraph::build(&model, &model.tolerances());

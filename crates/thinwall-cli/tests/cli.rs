@@ -222,3 +222,67 @@ fn recognize_text_options_and_errors() {
         .count();
     assert!(thin < 8, "{thin} thin walls with a 1 N force");
 }
+
+#[test]
+fn classify_json_and_errors() {
+    let case = fixture("classify/stacked");
+    let out = bin()
+        .arg("classify")
+        .arg("--part")
+        .arg(case.join("part.step"))
+        .arg("--volume")
+        .arg(case.join("v0.step"))
+        .arg("--volume")
+        .arg(case.join("v1.step"))
+        .args(["--before", "0:1", "--up", "0,0,1"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["schema"], "thinwall/classification/1");
+    let vols = v["volumes"].as_array().unwrap();
+    assert_eq!(vols.len(), 2);
+    assert_eq!(
+        (
+            vols[0]["type"].as_str(),
+            vols[0]["product_adjacency"].as_str()
+        ),
+        (Some("pocket"), Some("side"))
+    );
+    assert_eq!(
+        (
+            vols[1]["type"].as_str(),
+            vols[1]["product_adjacency"].as_str()
+        ),
+        (Some("pocket"), Some("side_and_bottom"))
+    );
+    for f in vols[0]["faces"].as_array().unwrap() {
+        assert!(f["closed"].is_boolean() && f["touches"].is_array());
+    }
+    // A sequence naming a volume that does not exist, a malformed pair.
+    let bad = bin()
+        .arg("classify")
+        .arg("--part")
+        .arg(case.join("part.step"))
+        .arg("--volume")
+        .arg(case.join("v0.step"))
+        .args(["--before", "0:5"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("0..1"));
+    let bad = bin()
+        .arg("classify")
+        .arg("--part")
+        .arg(case.join("part.step"))
+        .arg("--volume")
+        .arg(case.join("v0.step"))
+        .args(["--before", "zero"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+}

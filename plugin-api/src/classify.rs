@@ -1,0 +1,175 @@
+//! `tw_classification`: the dedicated classification of machining-feature
+//! volumes against a part, with a removal sequence.
+
+use crate::error::{guard, null, tw_status};
+use crate::options::tw_options;
+use crate::part::tw_part;
+use std::ffi::{c_char, CString};
+use thinwall_report::ClassificationReport;
+
+/// The classification of some volumes (opaque). Immutable; safe to share
+/// between threads. Strings it returns live as long as it does.
+pub struct tw_classification {
+    report: ClassificationReport,
+    types: Vec<CString>,
+    adjacency: Vec<CString>,
+}
+
+/// Classify `n_volumes` volumes (each a part read from its own STEP file)
+/// against `part`. `before` holds `n_before` pairs `(a, b)` as `2·n_before`
+/// indices: volume `a` is removed before volume `b`. `opt` (may be NULL)
+/// gives the up direction. On success `*out` owns a result to free with
+/// `tw_classification_free`; on failure `*out` is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_classify(
+    part: *const tw_part,
+    volumes: *const *const tw_part,
+    n_volumes: usize,
+    before: *const usize,
+    n_before: usize,
+    opt: *const tw_options,
+    out: *mut *mut tw_classification,
+) -> tw_status {
+    if !out.is_null() {
+        *out = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out.is_null() {
+            return Err(null("out"));
+        }
+        if part.is_null() {
+            return Err(null("part"));
+        }
+        if volumes.is_null() && n_volumes > 0 {
+            return Err(null("volumes"));
+        }
+        if before.is_null() && n_before > 0 {
+            return Err(null("before"));
+        }
+        let vols: Vec<thinwall_classify::Volume> = (0..n_volumes)
+            .map(|i| {
+                let v = *volumes.add(i);
+                if v.is_null() {
+                    return Err(null(&format!("volumes[{i}]")));
+                }
+                Ok(thinwall_classify::Volume {
+                    name: (&*v).name.clone(),
+                    part: (&*v).part.clone(),
+                    current: None,
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        let pairs: Vec<(usize, usize)> = (0..n_before)
+            .map(|k| (*before.add(2 * k), *before.add(2 * k + 1)))
+            .collect();
+        let defaults = tw_options::default();
+        let o = if opt.is_null() { &defaults } else { &*opt };
+        let up = o.setup().up;
+        let p = &*part;
+        let result = thinwall_classify::classify(&thinwall_classify::Request {
+            part: &p.part,
+            volumes: &vols,
+            before: &pairs,
+            up,
+            priority: vec![],
+        })
+        .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        let report = ClassificationReport::new(&p.name, up, &pairs, result);
+        let types = report
+            .volumes
+            .iter()
+            .map(|c| CString::new(c.kind.name()).unwrap_or_default())
+            .collect();
+        let adjacency = report
+            .volumes
+            .iter()
+            .map(|c| CString::new(c.product_adjacency.name()).unwrap_or_default())
+            .collect();
+        *out = Box::into_raw(Box::new(tw_classification {
+            report,
+            types,
+            adjacency,
+        }));
+        Ok(())
+    })
+}
+
+/// Number of volumes classified (0 for NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_classification_count(res: *const tw_classification) -> usize {
+    if res.is_null() {
+        return 0;
+    }
+    std::panic::catch_unwind(|| (&*res).types.len()).unwrap_or(0)
+}
+
+/// Type of volume `i` ("pocket", "passage", "blind_slot", "through_slot",
+/// "corner_notch", "step", "face", "hole", "free_pocket", "free_passage",
+/// "free_step", "unknown"); NULL when out of range.
+#[no_mangle]
+pub unsafe extern "C" fn tw_classification_type(
+    res: *const tw_classification,
+    i: usize,
+) -> *const c_char {
+    if res.is_null() {
+        return std::ptr::null();
+    }
+    std::panic::catch_unwind(|| {
+        (&*res)
+            .types
+            .get(i)
+            .map_or(std::ptr::null(), |s| s.as_ptr())
+    })
+    .unwrap_or(std::ptr::null())
+}
+
+/// Product adjacency of volume `i` ("none", "side", "bottom",
+/// "side_and_bottom"); NULL when out of range.
+#[no_mangle]
+pub unsafe extern "C" fn tw_classification_product_adjacency(
+    res: *const tw_classification,
+    i: usize,
+) -> *const c_char {
+    if res.is_null() {
+        return std::ptr::null();
+    }
+    std::panic::catch_unwind(|| {
+        (&*res)
+            .adjacency
+            .get(i)
+            .map_or(std::ptr::null(), |s| s.as_ptr())
+    })
+    .unwrap_or(std::ptr::null())
+}
+
+/// The classification as JSON (as `thinwall classify --format json` prints
+/// it); a new string to free with `tw_string_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_classification_to_json(
+    res: *const tw_classification,
+    out_json: *mut *mut c_char,
+) -> tw_status {
+    if !out_json.is_null() {
+        *out_json = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out_json.is_null() {
+            return Err(null("out_json"));
+        }
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        *out_json = CString::new((&*res).report.to_json().replace('\0', ""))
+            .unwrap_or_default()
+            .into_raw();
+        Ok(())
+    })
+}
+
+/// Free a classification. NULL is allowed.
+#[no_mangle]
+pub unsafe extern "C" fn tw_classification_free(res: *mut tw_classification) {
+    if !res.is_null() {
+        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(res)));
+    }
+}
