@@ -62,6 +62,11 @@ def cases():
     yield "hole", [cyl(50, 40, 20, 40, 6)], [], [("hole", "side_and_bottom", False)], None
     free = fuse(box(30, 20, 25, 70, 60, 40), cyl(65, 40, 25, 40, 25))
     yield "free_pocket", [free], [], [("free_pocket", "side_and_bottom", False)], None
+    free_through = fuse(box(30, 20, 0, 70, 60, 40), cyl(65, 40, 0, 40, 25))
+    yield "free_passage", [free_through], [], [("free_passage", "side", True)], None
+    # A step at the x=100 edge whose closed side bulges into the part as an arc.
+    free_edge = fuse(box(80, 0, 30, 100, 80, 40), cyl(80, 40, 30, 40, 15))
+    yield "free_step", [free_edge], [], [("free_step", "side_and_bottom", False)], None
     # Upper removed before lower: the upper sees the lower (not yet removed)
     # as a closed bottom; the lower sees the upper as an open top.
     yield "stacked", [box(30, 20, 30, 70, 60, 40), box(30, 20, 20, 70, 60, 30)], [(0, 1)], \

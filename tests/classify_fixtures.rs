@@ -62,7 +62,7 @@ fn every_classify_fixture_gets_its_type_and_adjacency() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     cases.sort();
-    assert!(cases.len() >= 26, "{cases:?}");
+    assert!(cases.len() >= 30, "{cases:?}");
     let mut types_seen = std::collections::BTreeSet::new();
     for case in &cases {
         let (exp, r) = run(case, None);
