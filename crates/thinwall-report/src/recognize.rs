@@ -53,8 +53,9 @@ pub struct RecognitionReport {
     pub connections: Vec<Connection>,
     /// Decisions of the connection layer worth knowing.
     pub notes: Vec<String>,
-    /// Filled by the machining-feature layer.
-    pub machining_features: Vec<serde_json::Value>,
+    /// Conventional machining features (holes, pockets, slots, steps,
+    /// passages, chamfers, fillets), `docs/MACHINING.md`.
+    pub machining_features: Vec<thinwall_machining::MachiningFeature>,
 }
 
 /// Build the report.
@@ -186,6 +187,26 @@ impl RecognitionReport {
             );
         }
         s.push_str(&self.structure_text());
+        if !self.machining_features.is_empty() {
+            let _ = writeln!(s, "machining features: {}", self.machining_features.len());
+            for m in &self.machining_features {
+                let _ = writeln!(
+                    s,
+                    "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}",
+                    m.id,
+                    m.kind,
+                    m.profile,
+                    if m.through { "through" } else { "" },
+                    m.depth,
+                    m.length,
+                    m.width,
+                    m.faces.len(),
+                    m.largest_tool_diameter
+                        .map(|d| format!("  tool <= {d:.2}"))
+                        .unwrap_or_default()
+                );
+            }
+        }
         s
     }
 
@@ -286,7 +307,9 @@ pub fn run_recognition(
     structure
         .validate()
         .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
-    Ok(recognition_report(file, part, setup, &r, &structure))
+    let mut report = recognition_report(file, part, setup, &r, &structure);
+    report.machining_features = thinwall_machining::recognize(part, graph);
+    Ok(report)
 }
 
 impl RecognitionReport {
