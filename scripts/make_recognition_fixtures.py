@@ -85,6 +85,11 @@ def near(a, b, tol=1e-6):
     return abs(a - b) < tol
 
 
+def n_is(f, v):
+    """The face is planar with outward normal `v`."""
+    return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
+
+
 def write(shape, path):
     Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
     w = STEPControl_Writer()
@@ -121,8 +126,6 @@ def rib_grid_panel():
 
 def rib_grid_expected(fs):
     L, W, t, H = 200.0, 150.0, 2.0, 30.0
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     def c(f, i):
         return f["centroid"][i]
     e = [
@@ -171,8 +174,6 @@ def filleted_chamfered_rib():
 
 
 def filleted_expected(fs):
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     return [
         wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(f["centroid"][1], 18.5)) or (n_is(f, [0, 1, 0]) and near(f["centroid"][1], 21.5)), thickness=3.0, fs=fs, name="R"),
         other("fillet", lambda f: f["kind"] == "cylinder" and f["centroid"][1] < 20, fs, "R"),
@@ -188,8 +189,6 @@ def notched_rib():
 
 
 def notched_expected(fs):
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     c = lambda f, i: f["centroid"][i]
     return [
         wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 18.5)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 21.5)), thickness=3.0, fs=fs, name="R"),
@@ -221,8 +220,6 @@ def thick_wall():
 
 
 def thick_expected(fs):
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     return [wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(f["centroid"][1], 20)) or (n_is(f, [0, 1, 0]) and near(f["centroid"][1], 40)),
                  thin=False, thickness=20.0, fs=fs, name="R")]
 
@@ -237,8 +234,6 @@ def c_frame():
 
 
 def c_frame_expected(fs):
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     c = lambda f, i: f["centroid"][i]
     return [
         wall("web", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 0)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 2)), thickness=2.0, fs=fs, name="W"),
@@ -266,8 +261,6 @@ def angle_bracket():
 
 
 def bracket_expected(fs):
-    def n_is(f, v):
-        return f["normal"] is not None and all(near(a, b, 1e-6) for a, b in zip(f["normal"], v))
     c = lambda f, i: f["centroid"][i]
     return [
         wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 2)), thickness=2.0, fs=fs, name="H"),

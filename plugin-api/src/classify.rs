@@ -1,7 +1,7 @@
 //! `tw_classification`: the dedicated classification of machining-feature
 //! volumes against a part, with a removal sequence.
 
-use crate::error::{guard, null, tw_status};
+use crate::error::{construct, count, cstring, free, json_into, null, string_at, tw_status};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::{c_char, CString};
@@ -30,13 +30,7 @@ pub unsafe extern "C" fn tw_classify(
     opt: *const tw_options,
     out: *mut *mut tw_classification,
 ) -> tw_status {
-    if !out.is_null() {
-        *out = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
+    construct(out, || {
         if part.is_null() {
             return Err(null("part"));
         }
@@ -78,29 +72,25 @@ pub unsafe extern "C" fn tw_classify(
         let types = report
             .volumes
             .iter()
-            .map(|c| CString::new(c.kind.name()).unwrap_or_default())
+            .map(|c| cstring(c.kind.name()))
             .collect();
         let adjacency = report
             .volumes
             .iter()
-            .map(|c| CString::new(c.product_adjacency.name()).unwrap_or_default())
+            .map(|c| cstring(c.product_adjacency.name()))
             .collect();
-        *out = Box::into_raw(Box::new(tw_classification {
+        Ok(tw_classification {
             report,
             types,
             adjacency,
-        }));
-        Ok(())
+        })
     })
 }
 
 /// Number of volumes classified (0 for NULL).
 #[no_mangle]
 pub unsafe extern "C" fn tw_classification_count(res: *const tw_classification) -> usize {
-    if res.is_null() {
-        return 0;
-    }
-    std::panic::catch_unwind(|| (&*res).types.len()).unwrap_or(0)
+    count(res, |r| r.types.len())
 }
 
 /// Type of volume `i` ("pocket", "passage", "blind_slot", "through_slot",
@@ -111,16 +101,7 @@ pub unsafe extern "C" fn tw_classification_type(
     res: *const tw_classification,
     i: usize,
 ) -> *const c_char {
-    if res.is_null() {
-        return std::ptr::null();
-    }
-    std::panic::catch_unwind(|| {
-        (&*res)
-            .types
-            .get(i)
-            .map_or(std::ptr::null(), |s| s.as_ptr())
-    })
-    .unwrap_or(std::ptr::null())
+    string_at(res, |r| r.types.get(i))
 }
 
 /// Product adjacency of volume `i` ("none", "side", "bottom",
@@ -130,16 +111,7 @@ pub unsafe extern "C" fn tw_classification_product_adjacency(
     res: *const tw_classification,
     i: usize,
 ) -> *const c_char {
-    if res.is_null() {
-        return std::ptr::null();
-    }
-    std::panic::catch_unwind(|| {
-        (&*res)
-            .adjacency
-            .get(i)
-            .map_or(std::ptr::null(), |s| s.as_ptr())
-    })
-    .unwrap_or(std::ptr::null())
+    string_at(res, |r| r.adjacency.get(i))
 }
 
 /// The classification as JSON (as `thinwall classify --format json` prints
@@ -149,27 +121,11 @@ pub unsafe extern "C" fn tw_classification_to_json(
     res: *const tw_classification,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    if !out_json.is_null() {
-        *out_json = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out_json.is_null() {
-            return Err(null("out_json"));
-        }
-        if res.is_null() {
-            return Err(null("res"));
-        }
-        *out_json = CString::new((&*res).report.to_json().replace('\0', ""))
-            .unwrap_or_default()
-            .into_raw();
-        Ok(())
-    })
+    json_into(res, out_json, |r| r.report.to_json())
 }
 
 /// Free a classification. NULL is allowed.
 #[no_mangle]
 pub unsafe extern "C" fn tw_classification_free(res: *mut tw_classification) {
-    if !res.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(res)));
-    }
+    free(res)
 }

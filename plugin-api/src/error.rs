@@ -87,3 +87,81 @@ pub(crate) fn null(name: &str) -> (tw_status, String) {
         format!("argument `{name}` is NULL"),
     )
 }
+
+/// A failure to report: its status and message.
+pub(crate) type Failure = (tw_status, String);
+
+/// A constructor's boundary: `*out` is NULL unless `make` succeeds, and then
+/// owns the new object.
+pub(crate) unsafe fn construct<T>(
+    out: *mut *mut T,
+    make: impl FnOnce() -> Result<T, Failure>,
+) -> tw_status {
+    if !out.is_null() {
+        *out = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out.is_null() {
+            return Err(null("out"));
+        }
+        let value = make()?;
+        *out = Box::into_raw(Box::new(value));
+        Ok(())
+    })
+}
+
+/// `*out_json` = a new string (free with `tw_string_free`) made from `*obj`;
+/// NULL on failure.
+pub(crate) unsafe fn json_into<T>(
+    obj: *const T,
+    out_json: *mut *mut c_char,
+    json: impl FnOnce(&T) -> String,
+) -> tw_status {
+    if !out_json.is_null() {
+        *out_json = std::ptr::null_mut();
+    }
+    guard(|| {
+        if out_json.is_null() {
+            return Err(null("out_json"));
+        }
+        if obj.is_null() {
+            return Err(null("res"));
+        }
+        *out_json = cstring(&json(&*obj)).into_raw();
+        Ok(())
+    })
+}
+
+/// A string owned by `*obj`, or NULL for a NULL object, a missing entry or a panic.
+pub(crate) unsafe fn string_at<T>(
+    obj: *const T,
+    pick: impl FnOnce(&T) -> Option<&CString>,
+) -> *const c_char {
+    if obj.is_null() {
+        return std::ptr::null();
+    }
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        pick(&*obj).map_or(std::ptr::null(), |s| s.as_ptr())
+    }))
+    .unwrap_or(std::ptr::null())
+}
+
+/// A count read from `*obj`, 0 for a NULL object or a panic.
+pub(crate) unsafe fn count<T>(obj: *const T, len: impl FnOnce(&T) -> usize) -> usize {
+    if obj.is_null() {
+        return 0;
+    }
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| len(&*obj))).unwrap_or(0)
+}
+
+/// Free an object made by [`construct`]; NULL is allowed.
+pub(crate) unsafe fn free<T>(ptr: *mut T) {
+    if !ptr.is_null() {
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| drop(Box::from_raw(ptr))));
+    }
+}
+
+/// A C string of `s` (interior NULs dropped).
+pub(crate) fn cstring(s: &str) -> CString {
+    CString::new(s.replace('\0', "")).unwrap_or_default()
+}

@@ -1,7 +1,7 @@
 //! `tw_options`: the set-up and recognition settings. Filled by the caller
 //! before use; do not change an options object while another thread uses it.
 
-use crate::error::{guard, null, tw_status};
+use crate::error::{construct, free, guard, null, tw_status};
 use thinwall_connect::{Machine, Options, Setup};
 use thinwall_recognize::Config;
 
@@ -37,16 +37,7 @@ impl tw_options {
 /// New options with the defaults; free with `tw_options_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_new(out: *mut *mut tw_options) -> tw_status {
-    if !out.is_null() {
-        *out = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
-        *out = Box::into_raw(Box::default());
-        Ok(())
-    })
+    construct(out, || Ok(tw_options::default()))
 }
 
 unsafe fn with(
@@ -161,7 +152,5 @@ pub unsafe extern "C" fn tw_options_set_connect_thick(
 /// Free options. NULL is allowed.
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_free(opt: *mut tw_options) {
-    if !opt.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(opt)));
-    }
+    free(opt)
 }

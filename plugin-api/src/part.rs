@@ -1,6 +1,6 @@
 //! `tw_part`: a STEP part read into memory with its adjacency graph.
 
-use crate::error::{guard, null, tw_status};
+use crate::error::{construct, count, free, null, tw_status, Failure};
 use std::ffi::{c_char, CStr};
 use thinwall_brep::Part;
 use thinwall_graph::AdjacencyGraph;
@@ -22,16 +22,14 @@ fn status_of(e: &thinwall_step::StepError) -> tw_status {
     }
 }
 
+/// A part from a read, with its adjacency graph.
 fn finish(
     read: Result<(Part, thinwall_step::ReadReport), thinwall_step::StepError>,
     name: String,
-    out: *mut *mut tw_part,
-) -> Result<(), (tw_status, String)> {
+) -> Result<tw_part, Failure> {
     let (part, _) = read.map_err(|e| (status_of(&e), e.to_string()))?;
     let graph = AdjacencyGraph::build(&part, &part.tolerances());
-    let boxed = Box::new(tw_part { name, part, graph });
-    unsafe { *out = Box::into_raw(boxed) };
-    Ok(())
+    Ok(tw_part { name, part, graph })
 }
 
 /// Read the STEP file at `path` (UTF-8). On success `*out` owns a part to
@@ -41,13 +39,7 @@ pub unsafe extern "C" fn tw_part_load_file(
     path: *const c_char,
     out: *mut *mut tw_part,
 ) -> tw_status {
-    if !out.is_null() {
-        *out = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
+    construct(out, || {
         if path.is_null() {
             return Err(null("path"));
         }
@@ -57,7 +49,7 @@ pub unsafe extern "C" fn tw_part_load_file(
                 "path is not UTF-8".to_string(),
             )
         })?;
-        finish(thinwall_step::read_file(p), p.to_string(), out)
+        finish(thinwall_step::read_file(p), p.to_string())
     })
 }
 
@@ -69,13 +61,7 @@ pub unsafe extern "C" fn tw_part_load_memory(
     len: usize,
     out: *mut *mut tw_part,
 ) -> tw_status {
-    if !out.is_null() {
-        *out = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
+    construct(out, || {
         if data.is_null() {
             return Err(null("data"));
         }
@@ -83,7 +69,6 @@ pub unsafe extern "C" fn tw_part_load_memory(
         finish(
             thinwall_step::read_bytes(bytes, "<memory>"),
             "<memory>".to_string(),
-            out,
         )
     })
 }
@@ -91,16 +76,11 @@ pub unsafe extern "C" fn tw_part_load_memory(
 /// Number of faces of the part's solid bodies (0 for NULL).
 #[no_mangle]
 pub unsafe extern "C" fn tw_part_face_count(part: *const tw_part) -> usize {
-    if part.is_null() {
-        return 0;
-    }
-    std::panic::catch_unwind(|| (&*part).part.faces.len()).unwrap_or(0)
+    count(part, |p| p.part.faces.len())
 }
 
 /// Free a part. NULL is allowed.
 #[no_mangle]
 pub unsafe extern "C" fn tw_part_free(part: *mut tw_part) {
-    if !part.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(part)));
-    }
+    free(part)
 }

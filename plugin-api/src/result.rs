@@ -1,7 +1,7 @@
 //! `tw_result`: the recognition of a part, with typed accessors and the
 //! same JSON as `thinwall recognize --format json`.
 
-use crate::error::{guard, null, tw_status};
+use crate::error::{construct, count, cstring, free, guard, json_into, null, string_at, tw_status};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::{c_char, CString};
@@ -28,10 +28,6 @@ pub enum tw_connection_kind {
     TW_CONNECTION_CROSSING = 1,
 }
 
-fn cstring(s: &str) -> CString {
-    CString::new(s.replace('\0', "")).unwrap_or_default()
-}
-
 /// Recognize stiffness features and their connections. `opt` may be NULL
 /// for the defaults. On success `*out` owns a result to free with
 /// `tw_result_free`; on failure `*out` is NULL.
@@ -41,13 +37,7 @@ pub unsafe extern "C" fn tw_recognize(
     opt: *const tw_options,
     out: *mut *mut tw_result,
 ) -> tw_status {
-    if !out.is_null() {
-        *out = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
+    construct(out, || {
         if part.is_null() {
             return Err(null("part"));
         }
@@ -85,22 +75,19 @@ pub unsafe extern "C" fn tw_recognize(
                 ),
             })
             .collect();
-        *out = Box::into_raw(Box::new(tw_result {
+        Ok(tw_result {
             report,
             ids,
             kinds,
             links,
-        }));
-        Ok(())
+        })
     })
 }
 
 /// Free a result. NULL is allowed.
 #[no_mangle]
 pub unsafe extern "C" fn tw_result_free(res: *mut tw_result) {
-    if !res.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(res)));
-    }
+    free(res)
 }
 
 /// The result as JSON (`thinwall/recognition/1`, as the CLI prints it).
@@ -110,28 +97,13 @@ pub unsafe extern "C" fn tw_result_to_json(
     res: *const tw_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    if !out_json.is_null() {
-        *out_json = std::ptr::null_mut();
-    }
-    guard(|| {
-        if out_json.is_null() {
-            return Err(null("out_json"));
-        }
-        if res.is_null() {
-            return Err(null("res"));
-        }
-        *out_json = cstring(&(&*res).report.to_json()).into_raw();
-        Ok(())
-    })
+    json_into(res, out_json, |r| r.report.to_json())
 }
 
 /// Number of stiffness features (0 for NULL).
 #[no_mangle]
 pub unsafe extern "C" fn tw_result_feature_count(res: *const tw_result) -> usize {
-    if res.is_null() {
-        return 0;
-    }
-    std::panic::catch_unwind(|| (&*res).ids.len()).unwrap_or(0)
+    count(res, |r| r.ids.len())
 }
 
 /// Kind of feature `i` ("web", "rib", "flange", "wall", "hole", "cutout",
@@ -139,24 +111,14 @@ pub unsafe extern "C" fn tw_result_feature_count(res: *const tw_result) -> usize
 /// range. Valid while `res` lives.
 #[no_mangle]
 pub unsafe extern "C" fn tw_result_feature_kind(res: *const tw_result, i: usize) -> *const c_char {
-    if res.is_null() {
-        return std::ptr::null();
-    }
-    (&*res)
-        .kinds
-        .get(i)
-        .map_or(std::ptr::null(), |s| s.as_ptr())
+    string_at(res, |r| r.kinds.get(i))
 }
 
 /// Id of feature `i` ("R2", "H1", …; stable within the result); NULL when
 /// out of range. Valid while `res` lives.
 #[no_mangle]
 pub unsafe extern "C" fn tw_result_feature_id(res: *const tw_result, i: usize) -> *const c_char {
-    if res.is_null() {
-        return std::ptr::null();
-    }
-    std::panic::catch_unwind(|| (&*res).ids.get(i).map_or(std::ptr::null(), |s| s.as_ptr()))
-        .unwrap_or(std::ptr::null())
+    string_at(res, |r| r.ids.get(i))
 }
 
 /// Wall sizes of feature `i`, mm: thickness, height (foot to free edge, or
@@ -253,10 +215,7 @@ pub unsafe extern "C" fn tw_result_feature_faces(
 /// Number of connections (0 for NULL).
 #[no_mangle]
 pub unsafe extern "C" fn tw_result_connection_count(res: *const tw_result) -> usize {
-    if res.is_null() {
-        return 0;
-    }
-    std::panic::catch_unwind(|| (&*res).links.len()).unwrap_or(0)
+    count(res, |r| r.links.len())
 }
 
 /// Connection `i`: its kind and the ids of its two features (for base-leaf:

@@ -39,6 +39,31 @@ fn tool(name: &str) -> bool {
         .is_ok_and(|o| o.status.success())
 }
 
+/// Run the host under valgrind (when installed); no error and no leak allowed.
+fn valgrind_clean(host_bin: &Path, args: &[PathBuf]) {
+    if !tool("valgrind") {
+        eprintln!("valgrind not installed: memory check skipped (.ci/run installs it)");
+        return;
+    }
+    let vg = Command::new("valgrind")
+        .env_remove("LD_LIBRARY_PATH")
+        .args([
+            "--leak-check=full",
+            "--errors-for-leak-kinds=definite,indirect",
+            "--error-exitcode=9",
+            "-q",
+        ])
+        .arg(host_bin)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        vg.status.success(),
+        "valgrind found errors:\n{}",
+        String::from_utf8_lossy(&vg.stderr)
+    );
+}
+
 fn build_host(out: &Path) {
     let lib = lib_dir();
     let status = Command::new("gcc")
@@ -81,27 +106,7 @@ fn c_host_compiles_runs_and_reads_results() {
         stdout.contains(" x ") && stdout.contains(" -> "),
         "connections printed: {stdout}"
     );
-    if tool("valgrind") {
-        let vg = Command::new("valgrind")
-            .env_remove("LD_LIBRARY_PATH")
-            .args([
-                "--leak-check=full",
-                "--errors-for-leak-kinds=definite,indirect",
-                "--error-exitcode=9",
-                "-q",
-            ])
-            .arg(&out)
-            .arg(fixture())
-            .output()
-            .unwrap();
-        assert!(
-            vg.status.success(),
-            "valgrind found errors:\n{}",
-            String::from_utf8_lossy(&vg.stderr)
-        );
-    } else {
-        eprintln!("valgrind not installed: memory check skipped (.ci/run installs it)");
-    }
+    valgrind_clean(&out, &[fixture()]);
     // Classification of two stacked volumes, upper removed first.
     let case = crate_dir().join("../fixtures/classify/stacked");
     let run = host(&out)
@@ -121,27 +126,14 @@ fn c_host_compiles_runs_and_reads_results() {
             && stdout.contains("volume 1: pocket (side_and_bottom)"),
         "{stdout}"
     );
-    if tool("valgrind") {
-        let vg = Command::new("valgrind")
-            .env_remove("LD_LIBRARY_PATH")
-            .args([
-                "--leak-check=full",
-                "--errors-for-leak-kinds=definite,indirect",
-                "--error-exitcode=9",
-                "-q",
-            ])
-            .arg(&out)
-            .arg(case.join("part.step"))
-            .arg(case.join("v0.step"))
-            .arg(case.join("v1.step"))
-            .output()
-            .unwrap();
-        assert!(
-            vg.status.success(),
-            "valgrind found errors:\n{}",
-            String::from_utf8_lossy(&vg.stderr)
-        );
-    }
+    valgrind_clean(
+        &out,
+        &[
+            case.join("part.step"),
+            case.join("v0.step"),
+            case.join("v1.step"),
+        ],
+    );
     let _ = std::fs::remove_file(out);
 }
 

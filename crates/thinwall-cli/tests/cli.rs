@@ -7,6 +7,17 @@ fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_thinwall"))
 }
 
+/// Run the command, require success (showing stderr otherwise), parse stdout as JSON.
+fn json_of(cmd: &mut Command) -> serde_json::Value {
+    let out = cmd.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
 fn shared(rel: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../../../shared/data")
@@ -15,17 +26,11 @@ fn shared(rel: &str) -> PathBuf {
 
 #[test]
 fn inspect_json_lists_faces_and_edges_by_step_id() {
-    let out = bin()
-        .args(["inspect", "--format", "json"])
-        .arg(shared("thinwall/loose_rib_00.step"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = json_of(
+        bin()
+            .args(["inspect", "--format", "json"])
+            .arg(shared("thinwall/loose_rib_00.step")),
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["schema"], "thinwall/inspect/1");
     let faces = v["faces"].as_array().unwrap();
     assert_eq!(faces.len(), 11);
@@ -99,17 +104,11 @@ fn fixture(rel: &str) -> PathBuf {
 
 #[test]
 fn recognize_json_follows_the_contract() {
-    let out = bin()
-        .args(["recognize"])
-        .arg(shared("thinwall/panel_06.step"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = json_of(
+        bin()
+            .args(["recognize"])
+            .arg(shared("thinwall/panel_06.step")),
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(v["schema"]
         .as_str()
         .unwrap()
@@ -229,23 +228,17 @@ fn recognize_text_options_and_errors() {
 #[test]
 fn classify_json_and_errors() {
     let case = fixture("classify/stacked");
-    let out = bin()
-        .arg("classify")
-        .arg("--part")
-        .arg(case.join("part.step"))
-        .arg("--volume")
-        .arg(case.join("v0.step"))
-        .arg("--volume")
-        .arg(case.join("v1.step"))
-        .args(["--before", "0:1", "--up", "0,0,1"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = json_of(
+        bin()
+            .arg("classify")
+            .arg("--part")
+            .arg(case.join("part.step"))
+            .arg("--volume")
+            .arg(case.join("v0.step"))
+            .arg("--volume")
+            .arg(case.join("v1.step"))
+            .args(["--before", "0:1", "--up", "0,0,1"]),
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["schema"], "thinwall/classification/1");
     let vols = v["volumes"].as_array().unwrap();
     assert_eq!(vols.len(), 2);

@@ -111,24 +111,25 @@ fn coaxial(a: (Point3, Vector3, f64), b: (Point3, Vector3, f64), tol: f64) -> bo
     a.1.dot(&b.1).abs() > 1.0 - 1e-9 && (d - a.1 * d.dot(&a.1)).norm() < tol
 }
 
-/// Face ids classified as stock (on the bounding block).
-pub fn stock_faces(part: &Part) -> BTreeSet<FaceId> {
-    let bb = part.bounding_box();
-    let tol = 1e-6 * bb.diagonal().max(1.0);
-    part.face_ids()
-        .filter(|&f| stock_plane(&compute_face_props(part, f), &bb, tol).is_some())
-        .collect()
-}
-
 /// Recognize the machining features of `part`.
 pub fn recognize(part: &Part, graph: &AdjacencyGraph) -> Vec<MachiningFeature> {
-    let bb = part.bounding_box();
-    let diag = bb.diagonal().max(1.0);
-    let tol = 1e-6 * diag;
     let props: Vec<FaceProps> = part
         .face_ids()
         .map(|f| compute_face_props(part, f))
         .collect();
+    recognize_with_props(part, graph, &props)
+}
+
+/// [`recognize`] with every face's properties already computed
+/// (`props[face.index()]`): they are the costly part on free-form faces.
+pub fn recognize_with_props(
+    part: &Part,
+    graph: &AdjacencyGraph,
+    props: &[FaceProps],
+) -> Vec<MachiningFeature> {
+    let bb = part.bounding_box();
+    let diag = bb.diagonal().max(1.0);
+    let tol = 1e-6 * diag;
     let stock: Vec<Option<usize>> = props.iter().map(|p| stock_plane(p, &bb, tol)).collect();
     let is_blend = |f: FaceId| {
         if hole_cylinder(part, f).is_some()
@@ -164,7 +165,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph) -> Vec<MachiningFeature> {
             .collect()
     }) {
         taken.extend(group.iter().copied());
-        out.push(blend_feature(part, &props, &group));
+        out.push(blend_feature(part, props, &group));
     }
     // Depressions: concave-connected groups (hole halves across their seam).
     let rest: BTreeSet<FaceId> = part.face_ids().filter(|f| !taken.contains(f)).collect();
@@ -188,7 +189,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph) -> Vec<MachiningFeature> {
                 }
             }
         }
-        out.push(depression_feature(part, &props, &group, &touched, tol));
+        out.push(depression_feature(part, props, &group, &touched, tol));
     }
     out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
     for (i, m) in out.iter_mut().enumerate() {
@@ -395,14 +396,13 @@ fn depression_feature(
                     && at_end(f)
                     && part.face(f).loops.len() == 1
             }
+            // A drill point: at the far end, coming to a tip (a vertex
+            // loop) or a single boundary.
             Surface::Cone { .. } | Surface::Sphere { .. } => {
+                let face = part.face(f);
                 at_end(f)
-                    && part
-                        .face(f)
-                        .loops
-                        .iter()
-                        .any(|&l| part.loop_(l).vertex.is_some())
-                    || part.face(f).loops.len() == 1
+                    && (face.loops.len() == 1
+                        || face.loops.iter().any(|&l| part.loop_(l).vertex.is_some()))
             }
             _ => false,
         };

@@ -20,9 +20,6 @@ pub struct Junction {
     pub base_side: usize,
     /// Length of the foot, mm (junction edges on one side of the leaf).
     pub length: f64,
-    /// An L-junction between walls at the same height: either could be
-    /// the base; recorded both ways.
-    pub tie: bool,
 }
 
 /// Faces reached from `f` across concave edges, directly or through one
@@ -117,7 +114,6 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
                     tee: true,
                     base_side: t,
                     length: 0.5 * (from0 + from1),
-                    tie: false,
                 });
             }
         }
@@ -145,7 +141,6 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
             tee: false,
             base_side: t,
             length,
-            tie: false,
         });
         out.push(Junction {
             leaf: b,
@@ -153,7 +148,6 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
             tee: false,
             base_side: s,
             length,
-            tie: false,
         });
     }
     out
@@ -163,7 +157,7 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
 /// stiffeners (the wall some wall stands on by its longest T-foot) over one
 /// that does not — a
 /// vertical web carrying flanges and stiffeners is a web — otherwise the
-/// lower one in the set-up (`height`); at equal height both ways (`tie`).
+/// lower one in the set-up (`height`); at equal height both ways.
 pub fn resolve_l_junctions(
     junctions: Vec<Junction>,
     height: impl Fn(usize) -> f64,
@@ -180,7 +174,7 @@ pub fn resolve_l_junctions(
     let carriers: std::collections::HashSet<usize> = best_tee.values().map(|j| j.base).collect();
     junctions
         .into_iter()
-        .filter_map(|mut j| {
+        .filter_map(|j| {
             if j.tee {
                 return Some(j);
             }
@@ -191,7 +185,6 @@ pub fn resolve_l_junctions(
             }
             let (hl, hb) = (height(j.leaf), height(j.base));
             if (hl - hb).abs() <= tie_tol {
-                j.tie = true;
                 Some(j)
             } else {
                 (hl > hb).then_some(j)

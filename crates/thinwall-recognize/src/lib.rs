@@ -68,7 +68,7 @@ pub fn recognize(part: &Part, graph: &AdjacencyGraph, config: &Config) -> Recogn
     let bbox = part.bounding_box();
     let tol = thinwall_geom::Tolerances::for_part(bbox.diagonal());
     let slab_tol = (tol.linear * 1000.0).max(1e-3);
-    let walls = walls::find_walls_with(part, config, &tol);
+    let walls = walls::find_walls(part, config, &tol);
     trace("walls");
     let heights: Vec<f64> = walls
         .iter()

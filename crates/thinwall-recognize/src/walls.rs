@@ -101,14 +101,9 @@ fn plane_ids(faces: &[PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
     ids
 }
 
-/// Find the walls of a part.
-pub fn find_walls(part: &Part, config: &Config) -> Vec<Wall> {
-    find_walls_with(part, config, &part.tolerances())
-}
-
-/// [`find_walls`] with the part's tolerances given (they cost a pass over
-/// the part's edges to compute).
-pub fn find_walls_with(part: &Part, config: &Config, tol: &thinwall_geom::Tolerances) -> Vec<Wall> {
+/// Find the walls of a part, with its tolerances (`Part::tolerances`, which
+/// costs a pass over the part's edges: callers usually have them already).
+pub fn find_walls(part: &Part, config: &Config, tol: &thinwall_geom::Tolerances) -> Vec<Wall> {
     let lin = (tol.linear * 100.0).max(1e-4);
     let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
     let faces: Vec<PlanarFace> = part

@@ -65,6 +65,7 @@ pub fn recognition_report(
     setup: &Setup,
     r: &Recognition,
     structure: &Structure,
+    props: &[thinwall_brep::FaceProps],
 ) -> RecognitionReport {
     let faces = part
         .face_ids()
@@ -74,7 +75,7 @@ pub fn recognition_report(
                 step_id: face.step_id,
                 name: face.name.clone(),
                 surface: face.surface.kind_name().to_string(),
-                area: compute_face_props(part, f).area,
+                area: props[f.index()].area,
             }
         })
         .collect();
@@ -307,8 +308,13 @@ pub fn run_recognition(
     structure
         .validate()
         .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
-    let mut report = recognition_report(file, part, setup, &r, &structure);
-    report.machining_features = thinwall_machining::recognize(part, graph);
+    // Face properties once, for the face list and the machining features.
+    let props: Vec<thinwall_brep::FaceProps> = part
+        .face_ids()
+        .map(|f| compute_face_props(part, f))
+        .collect();
+    let mut report = recognition_report(file, part, setup, &r, &structure, &props);
+    report.machining_features = thinwall_machining::recognize_with_props(part, graph, &props);
     Ok(report)
 }
 
