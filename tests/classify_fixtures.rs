@@ -7,6 +7,7 @@ mod common;
 
 use serde::Deserialize;
 use thinwall_classify::{classify, Classification, Request, Touch, Volume, VolumeType};
+use thinwall_analysis::{Machine, PartAnalysis, Setup};
 
 #[derive(Deserialize)]
 struct ExpectedVolume {
@@ -43,11 +44,12 @@ fn run(
         .collect();
     let before: Vec<(usize, usize)> =
         before_override.unwrap_or_else(|| exp.before.iter().map(|b| (b[0], b[1])).collect());
+    let setup = Setup::new(exp.up, Machine::ThreeAxis).unwrap();
+    let a = PartAnalysis::new(&part, setup);
     let r = classify(&Request {
-        part: &part,
+        part: &a,
         volumes: &volumes,
         before: &before,
-        up: exp.up,
         priority: vec![],
     })
     .unwrap();
@@ -194,22 +196,22 @@ fn current_type_is_kept_while_it_still_fits() {
         part: v,
         current: Some(VolumeType::Step),
     }];
+    let a = PartAnalysis::new(&part, Setup::default());
     let r = classify(&Request {
-        part: &part,
+        part: &a,
         volumes: &volumes,
         before: &[],
-        up: [0.0, 0.0, 1.0],
         priority: vec![],
     })
     .unwrap();
     // A U of closed sides is also a chain: a volume already typed a step stays one.
     assert_eq!(r[0].kind, VolumeType::Step);
-    assert!(classify(&Request {
-        part: &part,
+    let e = classify(&Request {
+        part: &a,
         volumes: &volumes,
         before: &[(0, 3)],
-        up: [0.0, 0.0, 1.0],
-        priority: vec![]
+        priority: vec![],
     })
-    .is_err());
+    .unwrap_err();
+    assert_eq!(e.code(), "sequence");
 }

@@ -6,7 +6,12 @@
 mod common;
 
 use common::fixtures::{load, load_with_up, names};
-use thinwall_connect::{connect, Connection, Machine, Options, Setup, Structure};
+use thinwall_connect::{connect, crossing, Connection, Machine, Options, Setup, Structure};
+use thinwall_recognize::{FeatureId, StiffnessKind as Kind};
+
+fn fid(s: &str) -> FeatureId {
+    FeatureId::parse(s).unwrap_or_else(|| panic!("{s} is not a feature id"))
+}
 
 fn structure(
     name: &str,
@@ -29,16 +34,13 @@ fn structure(
 
 fn has_base_leaf(s: &Structure, base: &str, leaf: &str) -> bool {
     s.connections.contains(&Connection::BaseLeaf {
-        base: base.into(),
-        leaf: leaf.into(),
+        base: fid(base),
+        leaf: fid(leaf),
     })
 }
 
 fn has_crossing(s: &Structure, a: &str, b: &str) -> bool {
-    let (x, y) = if a <= b { (a, b) } else { (b, a) };
-    s.connections.contains(&Connection::Crossing {
-        features: [x.into(), y.into()],
-    })
+    s.connections.contains(&crossing(fid(a), fid(b)))
 }
 
 #[test]
@@ -68,19 +70,19 @@ fn rib_grid_panel_structure() {
     for f in r
         .features
         .iter()
-        .filter(|f| f.kind == thinwall_recognize::Kind::Hole)
+        .filter(|f| f.kind == Kind::Hole)
     {
-        assert!(has_base_leaf(&s, id("RX1"), &f.id));
+        assert!(has_base_leaf(&s, id("RX1"), &f.id.to_string()));
     }
     for f in r
         .features
         .iter()
-        .filter(|f| f.kind == thinwall_recognize::Kind::Cutout)
+        .filter(|f| f.kind == Kind::Cutout)
     {
-        assert!(has_base_leaf(&s, id("F_y0"), &f.id));
+        assert!(has_base_leaf(&s, id("F_y0"), &f.id.to_string()));
     }
     // Every wall has at most one base and the web none.
-    assert_eq!(s.base_of(id("W")), None);
+    assert_eq!(s.base_of(fid(id("W"))), None);
     // Up +Z: the web's underside faces the table; every other side is reachable.
     let blocked: Vec<(String, usize)> = s
         .access
@@ -90,7 +92,7 @@ fn rib_grid_panel_structure() {
                 .iter()
                 .enumerate()
                 .filter(|(_, a)| !a.reachable)
-                .map(move |(i, _)| (w.clone(), i))
+                .map(move |(i, _)| (w.to_string(), i))
         })
         .collect();
     assert_eq!(blocked.len(), 1, "{blocked:?}");
@@ -102,14 +104,14 @@ fn fillet_and_chamfer_on_a_rib_are_its_leaves() {
     let (s, n, r) = structure("filleted_chamfered_rib", None);
     for f in r.features.iter().filter(|f| !f.kind.is_wall()) {
         assert!(
-            has_base_leaf(&s, &n["R"], &f.id),
+            has_base_leaf(&s, &n["R"], &f.id.to_string()),
             "{} {:?}",
             f.id,
             s.connections
         );
     }
     // The rib stands on a thick block: no base in the structure.
-    assert_eq!(s.base_of(&n["R"]), None);
+    assert_eq!(s.base_of(fid(&n["R"])), None);
 }
 
 #[test]
@@ -122,7 +124,7 @@ fn upright_c_frame_web_carries_horizontal_flanges() {
         assert!(has_crossing(&s, &n[a], &n[b]), "{a} x {b}");
     }
     // The top flange's underside faces the table: not reachable with 3 axes.
-    let ft = &s.access[&n["FT"]];
+    let ft = &s.access[&fid(&n["FT"])];
     assert_eq!(ft.iter().filter(|a| !a.reachable).count(), 1);
     assert!(ft.iter().any(|a| a.reason.contains("faces down")));
 }
@@ -135,7 +137,7 @@ fn turned_part_has_the_same_structure() {
     let reach = |s: &Structure| {
         s.access
             .iter()
-            .map(|(k, v)| (k.clone(), v[0].reachable, v[1].reachable))
+            .map(|(k, v)| (*k, v[0].reachable, v[1].reachable))
             .collect::<Vec<_>>()
     };
     assert_eq!(reach(&a), reach(&b));
@@ -147,15 +149,15 @@ fn two_setups_of_an_angle_bracket() {
     let (z, n, rz) = structure("angle_bracket", Some([0.0, 0.0, 1.0]));
     assert!(has_base_leaf(&z, &n["H"], &n["V"]), "{:?}", z.connections);
     let kind = |r: &thinwall_recognize::Recognition, id: &str| {
-        r.features.iter().find(|f| f.id == id).unwrap().kind
+        r.features.iter().find(|f| f.id == fid(id)).unwrap().kind
     };
-    assert_eq!(kind(&rz, &n["H"]), thinwall_recognize::Kind::Web);
-    assert_eq!(kind(&rz, &n["V"]), thinwall_recognize::Kind::Flange);
+    assert_eq!(kind(&rz, &n["H"]), Kind::Web);
+    assert_eq!(kind(&rz, &n["V"]), Kind::Flange);
     // Up +X: the upright plate is now the lower one and becomes the base.
     let (x, n, rx) = structure("angle_bracket", Some([1.0, 0.0, 0.0]));
     assert!(has_base_leaf(&x, &n["V"], &n["H"]), "{:?}", x.connections);
-    assert_eq!(kind(&rx, &n["V"]), thinwall_recognize::Kind::Web);
-    assert_eq!(kind(&rx, &n["H"]), thinwall_recognize::Kind::Flange);
+    assert_eq!(kind(&rx, &n["V"]), Kind::Web);
+    assert_eq!(kind(&rx, &n["H"]), Kind::Flange);
 }
 
 #[test]
@@ -173,7 +175,7 @@ fn sloped_rib_undercut_needs_five_axes() {
         },
         &Options::default(),
     );
-    let rib = &ids["R"];
+    let rib = &fid(&ids["R"]);
     // The leaning rib's lower side overhangs by 12°.
     assert_eq!(three.access[rib].iter().filter(|a| !a.reachable).count(), 1);
     assert!(five.access[rib].iter().all(|a| a.reachable));

@@ -4,7 +4,7 @@
 mod common;
 
 use std::collections::HashMap;
-use thinwall_recognize::{recognize, Config, Kind};
+use thinwall_recognize::{Config, StiffnessKind as Kind};
 
 fn parts() -> Vec<std::path::PathBuf> {
     let mut v = common::step_files(&common::root().join("fixtures/recognition"));
@@ -28,11 +28,10 @@ fn no_face_is_claimed_twice_in_any_priority_order() {
     ];
     for path in parts() {
         let (part, _) = thinwall_step::read_file(&path).unwrap();
-        let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
         for priority in &orders {
-            let r = recognize(
+            let r = common::recognize_with(
                 &part,
-                &graph,
+                [0.0, 0.0, 1.0],
                 &Config {
                     priority: priority.clone(),
                     ..Config::default()
@@ -43,7 +42,7 @@ fn no_face_is_claimed_twice_in_any_priority_order() {
                 // A wall's faces are its own (sides, top, ends); depressions
                 // and details claim theirs once.
                 for id in &f.faces {
-                    if let Some(prev) = owner.insert(*id, f.id.clone()) {
+                    if let Some(prev) = owner.insert(*id, f.id.to_string()) {
                         panic!(
                             "{}: face #{id} in {prev} and {} ({priority:?})",
                             path.display(),
@@ -60,10 +59,9 @@ fn no_face_is_claimed_twice_in_any_priority_order() {
 fn include_and_exclude_filter_kinds() {
     let path = common::root().join("fixtures/recognition/rib_grid_panel.step");
     let (part, _) = thinwall_step::read_file(&path).unwrap();
-    let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-    let only_holes = recognize(
+    let only_holes = common::recognize_with(
         &part,
-        &graph,
+        [0.0, 0.0, 1.0],
         &Config {
             include: vec![Kind::Hole],
             ..Config::default()
@@ -71,9 +69,9 @@ fn include_and_exclude_filter_kinds() {
     );
     assert_eq!(only_holes.features.len(), 3);
     assert!(only_holes.features.iter().all(|f| f.kind == Kind::Hole));
-    let no_ribs = recognize(
+    let no_ribs = common::recognize_with(
         &part,
-        &graph,
+        [0.0, 0.0, 1.0],
         &Config {
             exclude: vec![Kind::Rib, Kind::Cutout],
             ..Config::default()

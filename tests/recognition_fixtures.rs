@@ -6,7 +6,7 @@
 mod common;
 
 use std::collections::{BTreeSet, HashMap};
-use thinwall_recognize::Kind;
+use thinwall_recognize::StiffnessKind as Kind;
 
 use common::fixtures::{dir, ids_at, load, our_id, Fixture};
 
@@ -16,7 +16,7 @@ fn check(name: &str) -> Vec<String> {
     let mut ours_of: HashMap<String, String> = HashMap::new();
     let mut matched = BTreeSet::new();
     for e in &fx.features {
-        let Some(f) = our_id(&part, &r, e).and_then(|id| r.features.iter().find(|f| f.id == id))
+        let Some(f) = our_id(&part, &r, e).and_then(|id| r.features.iter().find(|f| f.id.to_string() == id))
         else {
             problems.push(format!(
                 "{name}: {} {:?} not found with its faces",
@@ -25,14 +25,14 @@ fn check(name: &str) -> Vec<String> {
             continue;
         };
         let is_wall = !e.side_faces_at.is_empty();
-        matched.insert(f.id.clone());
+        matched.insert(f.id.to_string());
         if let Some(n) = &e.name {
-            ours_of.insert(n.clone(), f.id.clone());
+            ours_of.insert(n.clone(), f.id.to_string());
         }
         if f.kind.name() != e.kind {
             problems.push(format!(
                 "{name}: {:?} is {} here, expected {}",
-                e.name.as_deref().unwrap_or(&f.id),
+                e.name.clone().unwrap_or(f.id.to_string()),
                 f.kind.name(),
                 e.kind
             ));
@@ -65,7 +65,7 @@ fn check(name: &str) -> Vec<String> {
             .iter()
             .find(|f| f.faces.iter().copied().collect::<BTreeSet<_>>() == want)
         {
-            if f.wall.as_ref() != ours_of.get(w) {
+            if f.wall.map(|x| x.to_string()).as_ref() != ours_of.get(w) {
                 problems.push(format!(
                     "{name}: {} {} is in {:?}, expected {w} = {:?}",
                     f.kind.name(),
@@ -77,7 +77,7 @@ fn check(name: &str) -> Vec<String> {
         }
     }
     for f in &r.features {
-        if f.thin == Some(true) && !matched.contains(&f.id) {
+        if f.thin == Some(true) && !matched.contains(&f.id.to_string()) {
             problems.push(format!(
                 "{name}: {} {} reported thin, not expected",
                 f.kind.name(),

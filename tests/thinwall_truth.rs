@@ -6,7 +6,7 @@ mod common;
 
 use serde::Deserialize;
 use std::collections::BTreeSet;
-use thinwall_recognize::{recognize, Config, StiffnessFeature};
+use thinwall_recognize::{Config, StiffnessFeature};
 
 #[derive(Deserialize)]
 struct TruthFeature {
@@ -57,7 +57,7 @@ fn id_map(truth: &Truth, ours: &[StiffnessFeature]) -> std::collections::HashMap
             }
         });
         if let Some(f) = hit {
-            m.insert(t.id.clone(), f.id.clone());
+            m.insert(t.id.clone(), f.id.to_string());
         }
     }
     m
@@ -108,7 +108,7 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
     for t in &truth.features {
         let Some(f) = id_of
             .get(&t.id)
-            .and_then(|id| ours.iter().find(|f| &f.id == id))
+            .and_then(|id| ours.iter().find(|f| f.id.to_string() == *id))
         else {
             problems.push(format!("{}: {} {} not found", truth.part, t.kind, t.id));
             continue;
@@ -142,8 +142,8 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
     // Depressions and details sit in the right wall.
     for t in &truth.features {
         if let (Some(w), Some(ours_id)) = (&t.wall, id_of.get(&t.id)) {
-            let f = ours.iter().find(|f| &f.id == ours_id).unwrap();
-            if f.wall.as_ref() != id_of.get(w) {
+            let f = ours.iter().find(|f| f.id.to_string() == *ours_id).unwrap();
+            if f.wall.map(|w| w.to_string()).as_ref() != id_of.get(w) {
                 problems.push(format!(
                     "{}: {} is in {:?}, truth {w} ({:?})",
                     truth.part,
@@ -155,7 +155,7 @@ fn compare(truth: &Truth, ours: &[StiffnessFeature]) -> Vec<String> {
         }
     }
     for f in ours {
-        if f.thin == Some(true) && !matched.contains(&f.id) {
+        if f.thin == Some(true) && !matched.contains(&f.id.to_string()) {
             problems.push(format!(
                 "{}: {} {} {:?} reported thin, not in the truth",
                 truth.part,
@@ -180,15 +180,7 @@ fn recognized_parts() -> Vec<(String, Truth, thinwall_recognize::Recognition)> {
             )
             .unwrap();
             let (part, _) = thinwall_step::read_file(&f).unwrap();
-            let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-            let r = recognize(
-                &part,
-                &graph,
-                &Config {
-                    up: truth.up,
-                    ..Config::default()
-                },
-            );
+            let r = common::recognize_with(&part, truth.up, &Config::default());
             (stem, truth, r)
         })
         .collect()

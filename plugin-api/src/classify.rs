@@ -1,7 +1,9 @@
 //! `tw_classification`: the dedicated classification of machining-feature
 //! volumes against a part, with a removal sequence.
 
-use crate::error::{construct, count, cstring, free, json_into, null, string_at, tw_status};
+use crate::error::{
+    classify_failure, construct, count, cstring, free, json_into, null, string_at, tw_status,
+};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::{c_char, CString};
@@ -58,16 +60,17 @@ pub unsafe extern "C" fn tw_classify(
             .collect();
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
-        let up = o.setup().up;
+        let setup = o.request.setup.clone();
+        let up = setup.up;
         let p = &*part;
+        let analysis = thinwall_analysis::PartAnalysis::with_graph(&p.part, &p.graph, setup);
         let result = thinwall_classify::classify(&thinwall_classify::Request {
-            part: &p.part,
+            part: &analysis,
             volumes: &vols,
             before: &pairs,
-            up,
             priority: vec![],
         })
-        .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        .map_err(classify_failure)?;
         let report = ClassificationReport::new(&p.name, up, &pairs, result);
         let types = report
             .volumes

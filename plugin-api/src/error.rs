@@ -28,6 +28,16 @@ pub enum tw_status {
     TW_ERR_BUFFER_TOO_SMALL = 8,
     /// The requested value does not apply to this item (a thickness of a hole).
     TW_ERR_NOT_APPLICABLE = 9,
+    /// The recognition settings are not usable (a non-positive model
+    /// parameter, a kind both included and excluded).
+    TW_ERR_INVALID_CONFIG = 10,
+    /// The set-up is not usable (a zero up direction, a tilt limit outside 0–90°).
+    TW_ERR_INVALID_SETUP = 11,
+    /// Recognition produced an inconsistent result (a connection structure
+    /// that is not a forest): a defect of Thinwall; the message names it.
+    TW_ERR_RECOGNITION = 12,
+    /// A removal sequence names volumes that are not there.
+    TW_ERR_INVALID_SEQUENCE = 13,
     /// Thinwall failed internally; the message says how.
     TW_ERR_INTERNAL = 98,
     /// Thinwall panicked; the panic was caught at the boundary.
@@ -164,4 +174,42 @@ pub(crate) unsafe fn free<T>(ptr: *mut T) {
 /// A C string of `s` (interior NULs dropped).
 pub(crate) fn cstring(s: &str) -> CString {
     CString::new(s.replace('\0', "")).unwrap_or_default()
+}
+
+/// The status of a read error, by its kind.
+pub(crate) fn read_failure(e: thinwall_step::StepError) -> Failure {
+    use thinwall_step::StepError as E;
+    let status = match &e {
+        E::Io { .. } => tw_status::TW_ERR_IO,
+        E::Syntax { .. } => tw_status::TW_ERR_PARSE,
+        E::NoBrep { .. } => tw_status::TW_ERR_NO_BREP,
+        E::OpenShell { .. }
+        | E::IdMismatch { .. }
+        | E::CyclicAssembly { .. }
+        | E::TooManyInstances { .. } => tw_status::TW_ERR_INVALID_PART,
+        _ => tw_status::TW_ERR_INTERNAL,
+    };
+    (status, e.to_string())
+}
+
+/// The status of a pipeline error, by its kind.
+pub(crate) fn pipeline_failure(e: thinwall_pipeline::PipelineError) -> Failure {
+    use thinwall_pipeline::PipelineError as E;
+    let status = match &e {
+        E::Config(_) => tw_status::TW_ERR_INVALID_CONFIG,
+        E::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
+        E::Structure(_) => tw_status::TW_ERR_RECOGNITION,
+        _ => tw_status::TW_ERR_INTERNAL,
+    };
+    (status, e.to_string())
+}
+
+/// The status of a classification error, by its kind.
+pub(crate) fn classify_failure(e: thinwall_classify::ClassifyError) -> Failure {
+    use thinwall_classify::ClassifyError as E;
+    let status = match &e {
+        E::Sequence { .. } => tw_status::TW_ERR_INVALID_SEQUENCE,
+        _ => tw_status::TW_ERR_INTERNAL,
+    };
+    (status, e.to_string())
 }

@@ -22,6 +22,17 @@ pub use result::*;
 
 use std::ffi::{c_char, CStr};
 
+/// The ABI version this header describes. A host checks at run time that
+/// `tw_abi_version()` equals it; it changes whenever a signature, a struct
+/// layout or the meaning of a status changes incompatibly.
+pub const TW_ABI_VERSION: u32 = 1;
+
+/// The ABI version of the loaded library (compare with `TW_ABI_VERSION`).
+#[no_mangle]
+pub extern "C" fn tw_abi_version() -> u32 {
+    TW_ABI_VERSION
+}
+
 /// The library version, e.g. "0.1.0" (static storage).
 #[no_mangle]
 pub extern "C" fn tw_version() -> *const c_char {

@@ -2,36 +2,15 @@
 //! before use; do not change an options object while another thread uses it.
 
 use crate::error::{construct, free, guard, null, tw_status};
-use thinwall_connect::{Machine, Options, Setup};
-use thinwall_recognize::Config;
+use thinwall_analysis::{Machine, Setup};
+use thinwall_pipeline::Request;
 
-/// Recognition settings (opaque). Defaults: up +Z, 3-axis machine,
-/// Popma's sizing parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
+/// Recognition settings (opaque): the set-up, the recognition settings and
+/// the connection options. Defaults: up +Z, 3-axis machine, Popma's sizing
+/// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
+#[derive(Clone, Default)]
 pub struct tw_options {
-    pub(crate) config: Config,
-    pub(crate) machine: Machine,
-    pub(crate) connect: Options,
-}
-
-impl Default for tw_options {
-    fn default() -> Self {
-        Self {
-            config: Config::default(),
-            machine: Machine::ThreeAxis,
-            connect: Options::default(),
-        }
-    }
-}
-
-impl tw_options {
-    pub(crate) fn setup(&self) -> Setup {
-        let u = self.config.up_unit();
-        Setup {
-            up: [u.x, u.y, u.z],
-            machine: self.machine,
-            placement: None,
-        }
-    }
+    pub(crate) request: Request,
 }
 
 /// New options with the defaults; free with `tw_options_free`.
@@ -40,6 +19,7 @@ pub unsafe extern "C" fn tw_options_new(out: *mut *mut tw_options) -> tw_status 
     construct(out, || Ok(tw_options::default()))
 }
 
+/// Change options; a change that fails (or panics) leaves them as they were.
 unsafe fn with(
     opt: *mut tw_options,
     f: impl FnOnce(&mut tw_options) -> Result<(), String>,
@@ -49,12 +29,19 @@ unsafe fn with(
             return Err(null("opt"));
         }
         let o = &mut *opt;
-        let before = o.config.clone();
-        f(o).map_err(|m| (tw_status::TW_ERR_INVALID_ARGUMENT, m))?;
-        if let Err(e) = o.config.validate() {
-            o.config = before;
-            return Err((tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()));
-        }
+        // Work on a copy and commit it only when it is valid: a panic in
+        // `f` unwinds past the copy and leaves `*o` untouched.
+        let mut next = o.clone();
+        f(&mut next).map_err(|m| (tw_status::TW_ERR_INVALID_ARGUMENT, m))?;
+        next.request
+            .config
+            .validate()
+            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        next.request
+            .setup
+            .validate()
+            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        *o = next;
         Ok(())
     })
 }
@@ -68,7 +55,8 @@ pub unsafe extern "C" fn tw_options_set_up(
     z: f64,
 ) -> tw_status {
     with(opt, |o| {
-        o.config.up = [x, y, z];
+        let s = Setup::new([x, y, z], o.request.setup.machine).map_err(|e| e.to_string())?;
+        o.request.setup = s;
         Ok(())
     })
 }
@@ -77,7 +65,7 @@ pub unsafe extern "C" fn tw_options_set_up(
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_set_force(opt: *mut tw_options, newton: f64) -> tw_status {
     with(opt, |o| {
-        o.config.thinness.force_n = newton;
+        o.request.config.thinness.force_n = newton;
         Ok(())
     })
 }
@@ -89,7 +77,7 @@ pub unsafe extern "C" fn tw_options_set_youngs_modulus(
     n_per_mm2: f64,
 ) -> tw_status {
     with(opt, |o| {
-        o.config.thinness.youngs_modulus_n_mm2 = n_per_mm2;
+        o.request.config.thinness.youngs_modulus_n_mm2 = n_per_mm2;
         Ok(())
     })
 }
@@ -101,7 +89,7 @@ pub unsafe extern "C" fn tw_options_set_allowed_deflection(
     mm: f64,
 ) -> tw_status {
     with(opt, |o| {
-        o.config.thinness.allowed_deflection_mm = mm;
+        o.request.config.thinness.allowed_deflection_mm = mm;
         Ok(())
     })
 }
@@ -110,7 +98,7 @@ pub unsafe extern "C" fn tw_options_set_allowed_deflection(
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_set_tool_diameter(opt: *mut tw_options, mm: f64) -> tw_status {
     with(opt, |o| {
-        o.config.thresholds.preferred_tool_diameter_mm = mm;
+        o.request.config.thresholds.preferred_tool_diameter_mm = mm;
         Ok(())
     })
 }
@@ -124,7 +112,7 @@ pub unsafe extern "C" fn tw_options_set_five_axis(
 ) -> tw_status {
     with(opt, |o| {
         if tilt_limit_deg < 0.0 {
-            o.machine = Machine::ThreeAxis;
+            o.request.setup.machine = Machine::ThreeAxis;
             return Ok(());
         }
         if !(tilt_limit_deg.is_finite() && tilt_limit_deg <= 90.0) {
@@ -132,7 +120,7 @@ pub unsafe extern "C" fn tw_options_set_five_axis(
                 "tilt limit must be within 0..90 degrees, got {tilt_limit_deg}"
             ));
         }
-        o.machine = Machine::FiveAxis { tilt_limit_deg };
+        o.request.setup.machine = Machine::FiveAxis { tilt_limit_deg };
         Ok(())
     })
 }
@@ -144,7 +132,7 @@ pub unsafe extern "C" fn tw_options_set_connect_thick(
     connect: bool,
 ) -> tw_status {
     with(opt, |o| {
-        o.connect.connect_thick_walls = connect;
+        o.request.connect.connect_thick_walls = connect;
         Ok(())
     })
 }

@@ -1,6 +1,6 @@
 //! `tw_part`: a STEP part read into memory with its adjacency graph.
 
-use crate::error::{construct, count, free, null, tw_status, Failure};
+use crate::error::{construct, count, free, null, read_failure, tw_status, Failure};
 use std::ffi::{c_char, CStr};
 use thinwall_brep::Part;
 use thinwall_graph::AdjacencyGraph;
@@ -12,22 +12,12 @@ pub struct tw_part {
     pub(crate) graph: AdjacencyGraph,
 }
 
-fn status_of(e: &thinwall_step::StepError) -> tw_status {
-    match e.code() {
-        "io" => tw_status::TW_ERR_IO,
-        "syntax" => tw_status::TW_ERR_PARSE,
-        "no_brep" => tw_status::TW_ERR_NO_BREP,
-        "open_shell" | "id_mismatch" => tw_status::TW_ERR_INVALID_PART,
-        _ => tw_status::TW_ERR_INTERNAL,
-    }
-}
-
 /// A part from a read, with its adjacency graph.
 fn finish(
     read: Result<(Part, thinwall_step::ReadReport), thinwall_step::StepError>,
     name: String,
 ) -> Result<tw_part, Failure> {
-    let (part, _) = read.map_err(|e| (status_of(&e), e.to_string()))?;
+    let (part, _) = read.map_err(read_failure)?;
     let graph = AdjacencyGraph::build(&part, &part.tolerances());
     Ok(tw_part { name, part, graph })
 }

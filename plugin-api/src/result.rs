@@ -1,7 +1,9 @@
 //! `tw_result`: the recognition of a part, with typed accessors and the
 //! same JSON as `thinwall recognize --format json`.
 
-use crate::error::{construct, count, cstring, free, guard, json_into, null, string_at, tw_status};
+use crate::error::{
+    construct, count, cstring, free, guard, json_into, null, pipeline_failure, string_at, tw_status,
+};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::{c_char, CString};
@@ -44,17 +46,14 @@ pub unsafe extern "C" fn tw_recognize(
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
         let p = &*part;
-        let report = thinwall_report::run_recognition(
-            &p.name,
-            &p.part,
-            &p.graph,
-            &o.config,
-            &o.setup(),
-            &o.connect,
-        )
-        .map_err(|m| (tw_status::TW_ERR_INTERNAL, m))?;
+        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &o.request)
+            .map_err(pipeline_failure)?;
+        let report = thinwall_report::recognition_report(&p.name, &p.part, &outcome);
         let feats = &report.stiffness_features;
-        let ids = feats.iter().map(|e| cstring(&e.feature.id)).collect();
+        let ids = feats
+            .iter()
+            .map(|e| cstring(&e.feature.id.to_string()))
+            .collect();
         let kinds = feats
             .iter()
             .map(|e| cstring(e.feature.kind.name()))
@@ -65,13 +64,13 @@ pub unsafe extern "C" fn tw_recognize(
             .map(|c| match c {
                 Connection::BaseLeaf { base, leaf } => (
                     tw_connection_kind::TW_CONNECTION_BASE_LEAF,
-                    cstring(base),
-                    cstring(leaf),
+                    cstring(&base.to_string()),
+                    cstring(&leaf.to_string()),
                 ),
                 Connection::Crossing { features } => (
                     tw_connection_kind::TW_CONNECTION_CROSSING,
-                    cstring(&features[0]),
-                    cstring(&features[1]),
+                    cstring(&features[0].to_string()),
+                    cstring(&features[1].to_string()),
                 ),
             })
             .collect();

@@ -6,7 +6,7 @@ use serde::Deserialize;
 use std::collections::{BTreeSet, HashMap};
 use thinwall_brep::{compute_face_props, Part};
 use thinwall_geom::Point3;
-use thinwall_recognize::{recognize, Config, Recognition};
+use thinwall_recognize::{Config, Recognition};
 
 #[derive(Deserialize)]
 pub struct Expected {
@@ -45,15 +45,7 @@ pub fn load_with_up(name: &str, up: Option<[f64; 3]>) -> (Part, Fixture, Recogni
     )
     .unwrap();
     let (part, _) = thinwall_step::read_file(dir().join(&fx.part)).unwrap();
-    let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
-    let r = recognize(
-        &part,
-        &graph,
-        &Config {
-            up: up.unwrap_or(fx.up),
-            ..Config::default()
-        },
-    );
+    let r = super::recognize_with(&part, up.unwrap_or(fx.up), &Config::default());
     (part, fx, r)
 }
 
@@ -109,7 +101,7 @@ pub fn our_id(part: &Part, r: &Recognition, e: &Expected) -> Option<String> {
             };
             got == want
         })
-        .map(|f| f.id.clone())
+        .map(|f| f.id.to_string())
 }
 
 /// Expected names (walls) to our ids.

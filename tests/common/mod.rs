@@ -32,3 +32,14 @@ pub fn step_files(dir: &Path) -> Vec<PathBuf> {
     v
 }
 pub mod fixtures;
+
+/// Recognize the stiffness features of `part` in a 3-axis set-up with `up`.
+pub fn recognize_with(
+    part: &thinwall_brep::Part,
+    up: [f64; 3],
+    config: &thinwall_recognize::Config,
+) -> thinwall_recognize::Recognition {
+    let setup = thinwall_analysis::Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap();
+    let a = thinwall_analysis::PartAnalysis::new(part, setup);
+    thinwall_recognize::recognize(&a, config)
+}

@@ -100,11 +100,10 @@ pub fn compute_face_props(part: &Part, id: FaceId) -> FaceProps {
         radius: None,
         warnings: Vec::new(),
     };
-    if part
+    if face
         .loops
         .iter()
-        .filter(|l| l.face == id)
-        .flat_map(|l| &l.coedges)
+        .flat_map(|&l| &part.loop_(l).coedges)
         .any(|ce| part.edge(ce.edge).nurbs.is_none())
     {
         props

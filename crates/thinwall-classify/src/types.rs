@@ -2,62 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The machining-feature types of a 2.5D volume (DOMAIN.md §5.3).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum VolumeType {
-    /// Cylindrical (a round hole is a rectangular one without straight sides).
-    Hole,
-    /// All sides closed, bottom closed.
-    Pocket,
-    /// All sides closed, bottom open (a through pocket).
-    Passage,
-    /// Three sides closed in a U, one end open.
-    BlindSlot,
-    /// Two opposite sides closed.
-    ThroughSlot,
-    /// Two adjacent sides closed.
-    CornerNotch,
-    /// One side, or one connected chain of sides, closed.
-    Step,
-    /// No side closed, bottom closed.
-    Face,
-    /// Free-shaped profile (curved sides other than corner radii), all sides closed.
-    FreePocket,
-    /// Free-shaped profile, all sides closed, bottom open.
-    FreePassage,
-    /// Free-shaped profile, some sides closed.
-    FreeStep,
-    /// Matches no type exactly; kept with its adjacency for a user to edit.
-    Unknown,
-}
-
-impl VolumeType {
-    pub fn name(self) -> &'static str {
-        match self {
-            VolumeType::Hole => "hole",
-            VolumeType::Pocket => "pocket",
-            VolumeType::Passage => "passage",
-            VolumeType::BlindSlot => "blind_slot",
-            VolumeType::ThroughSlot => "through_slot",
-            VolumeType::CornerNotch => "corner_notch",
-            VolumeType::Step => "step",
-            VolumeType::Face => "face",
-            VolumeType::FreePocket => "free_pocket",
-            VolumeType::FreePassage => "free_passage",
-            VolumeType::FreeStep => "free_step",
-            VolumeType::Unknown => "unknown",
-        }
-    }
-
-    pub fn parse(s: &str) -> Option<Self> {
-        DEFAULT_PRIORITY
-            .iter()
-            .copied()
-            .chain([VolumeType::Unknown])
-            .find(|t| t.name() == s)
-    }
-}
+pub use thinwall_analysis::VolumeType;
 
 /// The order in which types are tried when a pattern fits several (a U of
 /// closed sides is a blind slot and also a chain, i.e. a step).

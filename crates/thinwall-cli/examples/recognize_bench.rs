@@ -1,8 +1,10 @@
 //! Recognition timing: `recognize_bench [--repeat N] FILE...`.
 //!
 //! Per file, the median over N runs of: reading the STEP file, building the
-//! adjacency graph, and recognizing stiffness features. Panels for it come
-//! from `scripts/make_bench_panels.py` (rib grids of ~1k, 10k, 50k faces).
+//! adjacency graph, and the whole recognition (`thinwall_pipeline::run`:
+//! face properties, stiffness features, connections, machining features).
+//! Panels for it come from `scripts/make_bench_panels.py` (rib grids of
+//! ~1k, 10k, 50k faces).
 
 use std::time::Instant;
 
@@ -37,8 +39,13 @@ fn main() {
             let t1 = Instant::now();
             let g = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
             let t2 = Instant::now();
-            let r =
-                thinwall_recognize::recognize(&part, &g, &thinwall_recognize::Config::default());
+            let r = match thinwall_pipeline::run(&part, Some(&g), &Default::default()) {
+                Ok(out) => out.recognition,
+                Err(e) => {
+                    eprintln!("{path}: {e}");
+                    break;
+                }
+            };
             let t3 = Instant::now();
             faces = part.faces.len();
             walls = r.features.iter().filter(|f| f.kind.is_wall()).count();

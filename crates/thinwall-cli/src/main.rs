@@ -134,20 +134,22 @@ fn classify_command(
             current: None,
         });
     }
-    let up = up.unwrap_or([0.0, 0.0, 1.0]);
-    let n = (up[0] * up[0] + up[1] * up[1] + up[2] * up[2]).sqrt();
-    let up = [up[0] / n, up[1] / n, up[2] / n];
+    let setup = thinwall_analysis::Setup::new(
+        up.unwrap_or([0.0, 0.0, 1.0]),
+        thinwall_analysis::Machine::ThreeAxis,
+    )
+    .map_err(|e| e.to_string())?;
+    let analysis = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
     let result = thinwall_classify::classify(&thinwall_classify::Request {
-        part: &model,
+        part: &analysis,
         volumes: &volumes,
         before: &before,
-        up,
         priority: vec![],
     })
     .map_err(|e| e.to_string())?;
     let report = thinwall_report::ClassificationReport::new(
         &part.display().to_string(),
-        up,
+        setup.up,
         &before,
         result,
     );
@@ -219,22 +221,20 @@ fn run(cli: Cli) -> Result<(), String> {
             connect_thick,
             format,
         } => {
-            let mut cfg = match &config {
+            let settings = match &config {
                 Some(path) => {
                     let text = std::fs::read_to_string(path)
                         .map_err(|e| format!("{}: {e}", path.display()))?;
-                    thinwall_recognize::Config::from_toml(&text, &path.display().to_string())
+                    thinwall_pipeline::Settings::from_toml(&text, &path.display().to_string())
                         .map_err(|e| e.to_string())?
                 }
-                None => thinwall_recognize::Config::default(),
+                None => thinwall_pipeline::Settings::default(),
             };
-            if let Some(u) = up {
-                cfg.up = u;
-            }
+            let mut cfg = settings.config;
             for (list, names) in [(&mut cfg.include, &include), (&mut cfg.exclude, &exclude)] {
                 for n in names.iter().filter(|n| !n.is_empty()) {
                     list.push(
-                        thinwall_recognize::Kind::parse(n)
+                        thinwall_analysis::StiffnessKind::parse(n)
                             .ok_or_else(|| format!("unknown feature kind '{n}'"))?,
                     );
                 }
@@ -254,30 +254,26 @@ fn run(cli: Cli) -> Result<(), String> {
                     "--tilt-limit must be within 0..90 degrees, got {tilt_limit}"
                 ));
             }
-            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
-            let graph = AdjacencyGraph::build(&model, &model.tolerances());
-            let u = cfg.up_unit();
-            let setup = thinwall_connect::Setup {
-                up: [u.x, u.y, u.z],
-                machine: match machine {
-                    MachineArg::ThreeAxis => thinwall_connect::Machine::ThreeAxis,
-                    MachineArg::FiveAxis => thinwall_connect::Machine::FiveAxis {
-                        tilt_limit_deg: tilt_limit,
-                    },
+            let machine = match machine {
+                MachineArg::ThreeAxis => thinwall_analysis::Machine::ThreeAxis,
+                MachineArg::FiveAxis => thinwall_analysis::Machine::FiveAxis {
+                    tilt_limit_deg: tilt_limit,
                 },
-                placement: None,
             };
-            let options = thinwall_connect::Options {
-                connect_thick_walls: connect_thick,
+            let up = up.or(settings.up).unwrap_or([0.0, 0.0, 1.0]);
+            let setup = thinwall_analysis::Setup::new(up, machine).map_err(|e| e.to_string())?;
+            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+            let request = thinwall_pipeline::Request {
+                setup,
+                config: cfg,
+                connect: thinwall_connect::Options {
+                    connect_thick_walls: connect_thick,
+                },
             };
-            let report = thinwall_report::run_recognition(
-                &part.display().to_string(),
-                &model,
-                &graph,
-                &cfg,
-                &setup,
-                &options,
-            )?;
+            let outcome =
+                thinwall_pipeline::run(&model, None, &request).map_err(|e| e.to_string())?;
+            let report =
+                thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome);
             let text = match format {
                 Format::Text => report.to_text(),
                 Format::Json => report.to_json(),

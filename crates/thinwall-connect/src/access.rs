@@ -2,12 +2,12 @@
 //! tool access direction (its outward normal) against the machine's tool
 //! axis; obstruction by other material is not checked here.
 
-use crate::setup::Machine;
+use thinwall_analysis::Machine;
 use serde::{Deserialize, Serialize};
 use thinwall_geom::Vector3;
 
 /// Angle within which a side counts as facing straight up or as vertical.
-const ANGLE_TOL_DEG: f64 = 0.5;
+const ANGLE_TOL_DEG: f64 = thinwall_geom::tolerance::FEATURE_PARALLEL_DEG;
 
 /// The verdict for one side of a wall.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -5,34 +5,81 @@
 //!
 //! ```no_run
 //! # let (part, _) = thinwall_step::read_file("panel.step").unwrap();
-//! # let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
 //! let setup = thinwall_connect::Setup::default();
-//! let config = thinwall_recognize::Config { up: setup.up, ..Default::default() };
-//! let r = thinwall_recognize::recognize(&part, &graph, &config);
+//! let a = thinwall_analysis::PartAnalysis::new(&part, setup.clone());
+//! let r = thinwall_recognize::recognize(&a, &thinwall_recognize::Config::default());
 //! let s = thinwall_connect::connect(&r, &setup, &thinwall_connect::Options::default());
 //! for c in &s.connections { println!("{c:?}"); }
 //! ```
 
 pub mod access;
-pub mod setup;
 
 pub use access::{side_access, SideAccess};
-pub use setup::{Machine, Setup};
+pub use thinwall_analysis::{Machine, Setup};
 
 use petgraph::algo::is_cyclic_directed;
 use petgraph::graph::DiGraph;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
+use thinwall_analysis::FeatureId;
 use thinwall_recognize::{Recognition, StiffnessFeature};
+use thiserror::Error;
 
 /// A link of the structure, by feature id.
-#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Connection {
     /// The leaf is on or in the base.
-    BaseLeaf { base: String, leaf: String },
-    /// Two walls that meet and share a base; `features` sorted.
-    Crossing { features: [String; 2] },
+    BaseLeaf { base: FeatureId, leaf: FeatureId },
+    /// Two walls that meet and share a base; `features` in the order of
+    /// their written ids ([`crossing`]).
+    Crossing { features: [FeatureId; 2] },
+}
+
+/// A crossing of `a` and `b`, its features in the order of their written ids.
+pub fn crossing(a: FeatureId, b: FeatureId) -> Connection {
+    let features = if a.to_string() <= b.to_string() {
+        [a, b]
+    } else {
+        [b, a]
+    };
+    Connection::Crossing { features }
+}
+
+/// Why a connection structure is not a forest with symmetric crossings.
+#[derive(Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum StructureError {
+    #[error("{0} is its own base")]
+    OwnBase(FeatureId),
+    #[error("{leaf} has two bases: {first} and {second}")]
+    TwoBases {
+        leaf: FeatureId,
+        first: FeatureId,
+        second: FeatureId,
+    },
+    #[error("base-leaf links form a cycle")]
+    Cycle,
+    #[error("{0} crosses itself")]
+    CrossesItself(FeatureId),
+    #[error("crossing {0} x {1} not in canonical order")]
+    NotCanonical(FeatureId, FeatureId),
+    #[error("{0} and {1} are both crossing and base-leaf")]
+    CrossingAndBaseLeaf(FeatureId, FeatureId),
+}
+
+impl StructureError {
+    /// A stable machine-readable code for the error kind.
+    pub fn code(&self) -> &'static str {
+        match self {
+            StructureError::OwnBase(_) => "own_base",
+            StructureError::TwoBases { .. } => "two_bases",
+            StructureError::Cycle => "cycle",
+            StructureError::CrossesItself(_) => "crosses_itself",
+            StructureError::NotCanonical(..) => "crossing_order",
+            StructureError::CrossingAndBaseLeaf(..) => "crossing_and_base_leaf",
+        }
+    }
 }
 
 /// Connection options.
@@ -50,7 +97,7 @@ pub struct Options {
 pub struct Structure {
     pub connections: Vec<Connection>,
     /// Per wall feature id: its two sides' accessibility.
-    pub access: BTreeMap<String, [SideAccess; 2]>,
+    pub access: BTreeMap<FeatureId, [SideAccess; 2]>,
     /// Decisions worth telling the user (a second base suggested by the
     /// geometry, a cycle broken).
     pub notes: Vec<String>,
@@ -58,31 +105,29 @@ pub struct Structure {
 
 impl Structure {
     /// The base of a feature, if it has one.
-    pub fn base_of(&self, id: &str) -> Option<&str> {
+    pub fn base_of(&self, id: FeatureId) -> Option<FeatureId> {
         self.connections.iter().find_map(|c| match c {
-            Connection::BaseLeaf { base, leaf } if leaf == id => Some(base.as_str()),
+            Connection::BaseLeaf { base, leaf } if *leaf == id => Some(*base),
             _ => None,
         })
     }
 
     /// The structure as a petgraph graph: nodes are feature ids, edges
     /// `true` for base → leaf and `false` for a crossing (both directions).
-    pub fn graph(&self) -> DiGraph<String, bool> {
+    pub fn graph(&self) -> DiGraph<FeatureId, bool> {
         let mut g = DiGraph::new();
         let mut node = BTreeMap::new();
-        let mut id = |g: &mut DiGraph<String, bool>, s: &str| {
-            *node
-                .entry(s.to_string())
-                .or_insert_with(|| g.add_node(s.to_string()))
+        let mut id = |g: &mut DiGraph<FeatureId, bool>, f: FeatureId| {
+            *node.entry(f).or_insert_with(|| g.add_node(f))
         };
         for c in &self.connections {
-            match c {
+            match *c {
                 Connection::BaseLeaf { base, leaf } => {
                     let (a, b) = (id(&mut g, base), id(&mut g, leaf));
                     g.add_edge(a, b, true);
                 }
-                Connection::Crossing { features } => {
-                    let (a, b) = (id(&mut g, &features[0]), id(&mut g, &features[1]));
+                Connection::Crossing { features: [x, y] } => {
+                    let (a, b) = (id(&mut g, x), id(&mut g, y));
                     g.add_edge(a, b, false);
                     g.add_edge(b, a, false);
                 }
@@ -93,47 +138,41 @@ impl Structure {
 
     /// Check the structure: base-leaf links form a forest (no cycle, no
     /// feature its own base, at most one base each), crossings are between
-    /// distinct features and not also base-leaf.
-    pub fn validate(&self) -> Result<(), String> {
-        let mut bases: BTreeMap<&str, &str> = BTreeMap::new();
-        let mut tree = DiGraph::<&str, ()>::new();
+    /// distinct features, in canonical order, and not also base-leaf.
+    pub fn validate(&self) -> Result<(), StructureError> {
+        let mut bases: BTreeMap<FeatureId, FeatureId> = BTreeMap::new();
+        let mut tree = DiGraph::<FeatureId, ()>::new();
         let mut node = BTreeMap::new();
         for c in &self.connections {
-            match c {
-                Connection::BaseLeaf { base, leaf } => {
-                    if base == leaf {
-                        return Err(format!("{leaf} is its own base"));
-                    }
-                    if let Some(prev) = bases.insert(leaf, base) {
-                        return Err(format!("{leaf} has two bases: {prev} and {base}"));
-                    }
-                    let a = *node
-                        .entry(base.as_str())
-                        .or_insert_with(|| tree.add_node(base.as_str()));
-                    let b = *node
-                        .entry(leaf.as_str())
-                        .or_insert_with(|| tree.add_node(leaf.as_str()));
-                    tree.add_edge(a, b, ());
+            if let Connection::BaseLeaf { base, leaf } = *c {
+                if base == leaf {
+                    return Err(StructureError::OwnBase(leaf));
                 }
-                Connection::Crossing { features } => {
-                    if features[0] == features[1] {
-                        return Err(format!("{} crosses itself", features[0]));
-                    }
-                    if features[0] > features[1] {
-                        return Err(format!("crossing {features:?} not in canonical order"));
-                    }
+                if let Some(first) = bases.insert(leaf, base) {
+                    return Err(StructureError::TwoBases {
+                        leaf,
+                        first,
+                        second: base,
+                    });
                 }
+                let a = *node.entry(base).or_insert_with(|| tree.add_node(base));
+                let b = *node.entry(leaf).or_insert_with(|| tree.add_node(leaf));
+                tree.add_edge(a, b, ());
             }
         }
         if is_cyclic_directed(&tree) {
-            return Err("base-leaf links form a cycle".into());
+            return Err(StructureError::Cycle);
         }
         for c in &self.connections {
-            if let Connection::Crossing { features: [a, b] } = c {
-                if bases.get(a.as_str()) == Some(&b.as_str())
-                    || bases.get(b.as_str()) == Some(&a.as_str())
-                {
-                    return Err(format!("{a} and {b} are both crossing and base-leaf"));
+            if let Connection::Crossing { features: [a, b] } = *c {
+                if a == b {
+                    return Err(StructureError::CrossesItself(a));
+                }
+                if crossing(a, b) != *c {
+                    return Err(StructureError::NotCanonical(a, b));
+                }
+                if bases.get(&a) == Some(&b) || bases.get(&b) == Some(&a) {
+                    return Err(StructureError::CrossingAndBaseLeaf(a, b));
                 }
             }
         }
@@ -154,45 +193,61 @@ pub fn connect(r: &Recognition, setup: &Setup, options: &Options) -> Structure {
     let in_structure = |i: usize| {
         feats[i].kind.is_wall() && (options.connect_thick_walls || feats[i].thin == Some(true))
     };
-    let mut base: BTreeMap<usize, usize> = BTreeMap::new();
     let mut notes = Vec::new();
-    for (&leaf, &b) in &r.bases {
-        if in_structure(leaf) && in_structure(b) {
-            base.insert(leaf, b);
+    let mut base: BTreeMap<usize, usize> = r
+        .bases
+        .iter()
+        .filter(|(&leaf, &b)| in_structure(leaf) && in_structure(b))
+        .map(|(&leaf, &b)| (leaf, b))
+        .collect();
+    break_cycles(feats, &mut base, &up, &mut notes);
+    let crossings = link_junctions(r, &in_structure, &mut base, &up, &mut notes);
+    let mut connections: Vec<Connection> = base
+        .iter()
+        .map(|(&leaf, &b)| Connection::BaseLeaf {
+            base: feats[b].id,
+            leaf: feats[leaf].id,
+        })
+        .collect();
+    // Depressions and details are leaves of the wall they are in or on.
+    for f in feats.iter().filter(|f| !f.kind.is_wall()) {
+        if let Some(w) = f.wall {
+            connections.push(Connection::BaseLeaf {
+                base: w,
+                leaf: f.id,
+            });
         }
     }
-    // Break cycles (two walls each standing on the other along equally long
-    // feet): keep the lower wall as the base.
-    loop {
-        let mut cycle = None;
-        for &start in base.keys() {
-            let mut seen = BTreeSet::new();
-            let mut at = start;
-            while let Some(&b) = base.get(&at) {
-                if !seen.insert(at) {
-                    cycle = Some(at);
-                    break;
-                }
-                at = b;
-            }
-            if cycle.is_some() {
-                break;
-            }
-        }
-        let Some(on_cycle) = cycle else { break };
+    for (a, b) in crossings {
+        connections.push(crossing(feats[a].id, feats[b].id));
+    }
+    Structure {
+        connections,
+        access: access(feats, &up, setup),
+        notes,
+    }
+}
+
+/// Break cycles (two walls each standing on the other along equally long
+/// feet): on each, drop the link whose base is highest, so the lower wall
+/// stays the base.
+fn break_cycles(
+    feats: &[StiffnessFeature],
+    base: &mut BTreeMap<usize, usize>,
+    up: &thinwall_geom::Vector3,
+    notes: &mut Vec<String>,
+) {
+    while let Some(on_cycle) = first_cycle(base) {
         let mut members = vec![on_cycle];
         let mut at = base[&on_cycle];
         while at != on_cycle {
             members.push(at);
             at = base[&at];
         }
-        // Drop the link whose base is highest.
         let drop = members
             .iter()
             .copied()
-            .max_by(|&a, &b| {
-                height(&feats[base[&a]], &up).total_cmp(&height(&feats[base[&b]], &up))
-            })
+            .max_by(|&a, &b| height(&feats[base[&a]], up).total_cmp(&height(&feats[base[&b]], up)))
             .expect("cycle");
         notes.push(format!(
             "{} and {} stood on each other; {} kept as the base (lower in the set-up)",
@@ -200,19 +255,48 @@ pub fn connect(r: &Recognition, setup: &Setup, options: &Options) -> Structure {
         ));
         base.remove(&drop);
     }
-    let ancestors = |mut w: usize, base: &BTreeMap<usize, usize>| {
-        let mut v = vec![w];
-        while let Some(&b) = base.get(&w) {
-            if v.contains(&b) {
-                break;
+}
+
+/// A wall on a cycle of bases: the first repeated wall on the walk down
+/// from the first leaf (in order) whose walk repeats.
+fn first_cycle(base: &BTreeMap<usize, usize>) -> Option<usize> {
+    base.keys().find_map(|&start| {
+        let mut seen = BTreeSet::new();
+        let mut at = start;
+        while let Some(&b) = base.get(&at) {
+            if !seen.insert(at) {
+                return Some(at);
             }
-            v.push(b);
-            w = b;
+            at = b;
         }
-        v
-    };
-    // Junctions not used as a base: crossing when the walls share a base,
-    // else (procedure 2) base-leaf with the lower wall as base.
+        None
+    })
+}
+
+/// A wall and its bases down to the root.
+fn ancestors(mut w: usize, base: &BTreeMap<usize, usize>) -> Vec<usize> {
+    let mut v = vec![w];
+    while let Some(&b) = base.get(&w) {
+        if v.contains(&b) {
+            break;
+        }
+        v.push(b);
+        w = b;
+    }
+    v
+}
+
+/// Junctions not used as a base: a crossing when the walls share a base,
+/// else (procedure 2) base-leaf with the lower wall as base. Returns the
+/// crossings (by position, smaller first).
+fn link_junctions(
+    r: &Recognition,
+    in_structure: &impl Fn(usize) -> bool,
+    base: &mut BTreeMap<usize, usize>,
+    up: &thinwall_geom::Vector3,
+    notes: &mut Vec<String>,
+) -> BTreeSet<(usize, usize)> {
+    let feats = &r.features;
     let mut crossings: BTreeSet<(usize, usize)> = BTreeSet::new();
     let mut junctions: Vec<(usize, usize)> = r.junctions.iter().map(|j| (j.leaf, j.base)).collect();
     junctions.sort();
@@ -224,7 +308,7 @@ pub fn connect(r: &Recognition, setup: &Setup, options: &Options) -> Structure {
         if base.get(&a) == Some(&b) || base.get(&b) == Some(&a) {
             continue;
         }
-        let (anc_a, anc_b) = (ancestors(a, &base), ancestors(b, &base));
+        let (anc_a, anc_b) = (ancestors(a, base), ancestors(b, base));
         let common = anc_a
             .iter()
             .any(|x| anc_b.contains(x) && *x != a && *x != b);
@@ -232,7 +316,7 @@ pub fn connect(r: &Recognition, setup: &Setup, options: &Options) -> Structure {
             crossings.insert((a.min(b), a.max(b)));
             continue;
         }
-        let (lower, upper) = if height(&feats[a], &up) <= height(&feats[b], &up) {
+        let (lower, upper) = if height(&feats[a], up) <= height(&feats[b], up) {
             (a, b)
         } else {
             (b, a)
@@ -250,44 +334,27 @@ pub fn connect(r: &Recognition, setup: &Setup, options: &Options) -> Structure {
             }
         }
     }
-    let mut connections: Vec<Connection> = Vec::new();
-    for (&leaf, &b) in &base {
-        connections.push(Connection::BaseLeaf {
-            base: feats[b].id.clone(),
-            leaf: feats[leaf].id.clone(),
-        });
-    }
-    // Depressions and details are leaves of the wall they are in or on.
-    for f in feats.iter().filter(|f| !f.kind.is_wall()) {
-        if let Some(w) = &f.wall {
-            connections.push(Connection::BaseLeaf {
-                base: w.clone(),
-                leaf: f.id.clone(),
-            });
-        }
-    }
-    for (a, b) in crossings {
-        let (x, y) = (feats[a].id.clone(), feats[b].id.clone());
-        let features = if x <= y { [x, y] } else { [y, x] };
-        connections.push(Connection::Crossing { features });
-    }
-    let access = feats
+    crossings
+}
+
+/// Each wall's two sides judged for access in the set-up.
+fn access(
+    feats: &[StiffnessFeature],
+    up: &thinwall_geom::Vector3,
+    setup: &Setup,
+) -> BTreeMap<FeatureId, [SideAccess; 2]> {
+    feats
         .iter()
         .filter(|f| f.kind.is_wall())
         .filter_map(|f| {
             let d = f.access_directions.as_ref()?;
             Some((
-                f.id.clone(),
+                f.id,
                 [
-                    side_access(d[0], &up, &setup.machine),
-                    side_access(d[1], &up, &setup.machine),
+                    side_access(d[0], up, &setup.machine),
+                    side_access(d[1], up, &setup.machine),
                 ],
             ))
         })
-        .collect();
-    Structure {
-        connections,
-        access,
-        notes,
-    }
+        .collect()
 }

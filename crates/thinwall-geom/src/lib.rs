@@ -26,7 +26,7 @@ pub use curve::CurveKind;
 pub use frame::Frame;
 pub use nurbs::{NurbsCurve, NurbsSurface};
 pub use surface::Surface;
-pub use tolerance::Tolerances;
+pub use tolerance::{PartTolerances, Tolerances};
 
 /// A point in model space, millimetres.
 pub type Point3 = nalgebra::Point3<f64>;

@@ -31,25 +31,30 @@ pub struct NurbsSurface {
 }
 
 /// Why a NURBS definition was refused.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum NurbsError {
+    #[error("degree {0} outside 1..={MAX_DEGREE}")]
     Degree(usize),
+    #[error("{found} knots where {expected} are needed")]
     KnotCount { expected: usize, found: usize },
+    #[error("knots decrease")]
     NotIncreasing,
+    #[error("a weight is not positive and finite")]
     BadWeight,
+    #[error("no control points")]
     Empty,
 }
 
-impl std::fmt::Display for NurbsError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl NurbsError {
+    /// A stable machine-readable code for the error kind.
+    pub fn code(&self) -> &'static str {
         match self {
-            NurbsError::Degree(d) => write!(f, "degree {d} outside 1..={MAX_DEGREE}"),
-            NurbsError::KnotCount { expected, found } => {
-                write!(f, "{found} knots where {expected} are needed")
-            }
-            NurbsError::NotIncreasing => f.write_str("knots decrease"),
-            NurbsError::BadWeight => f.write_str("a weight is not positive and finite"),
-            NurbsError::Empty => f.write_str("no control points"),
+            NurbsError::Degree(_) => "nurbs_degree",
+            NurbsError::KnotCount { .. } => "nurbs_knot_count",
+            NurbsError::NotIncreasing => "nurbs_knots_decrease",
+            NurbsError::BadWeight => "nurbs_weight",
+            NurbsError::Empty => "nurbs_empty",
         }
     }
 }

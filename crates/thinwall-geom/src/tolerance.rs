@@ -55,6 +55,58 @@ impl Tolerances {
     }
 }
 
+/// Angle within which two feature directions count as parallel, degrees
+/// (wall side faces, volume faces, set-up directions).
+pub const FEATURE_PARALLEL_DEG: f64 = 0.5;
+/// `1 − cos` under which two unit normals of feature faces are the same
+/// direction (machining features: block planes, floors).
+pub const UNIT_PARALLEL_EPS: f64 = 1e-9;
+
+/// The linear tolerances recognizers and planners use, all derived from one
+/// part's bounding-box diagonal (mm) and built once per part by the
+/// analysis context. Each is a named multiple of the part's size with a
+/// floor, so a 20 mm bracket and a 2 m panel are judged alike.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PartTolerances {
+    /// The part's bounding-box diagonal, mm.
+    pub diagonal: f64,
+    /// Point coincidence ([`Tolerances::linear`]), mm.
+    pub linear: f64,
+    /// Two planar faces lie in one plane, mm: 100 × linear, at least 1e-4.
+    pub coplanar: f64,
+    /// Smallest overlap area of two wall side faces, mm².
+    pub min_overlap_area: f64,
+    /// A face lies within a wall's slab, mm: 1000 × linear, at least 1e-3.
+    pub slab: f64,
+    /// Feature geometry coincides (block planes, hole ends, equal heights),
+    /// mm: 1e-6 of the diagonal (of at least 1 mm).
+    pub feature: f64,
+    /// Faces of a volume and of the part coincide, mm: 1e-6 of the diagonal,
+    /// at least 1e-5.
+    pub coincidence: f64,
+    /// Smallest coincidence area of two faces, mm².
+    pub min_coincidence_area: f64,
+}
+
+impl PartTolerances {
+    /// The tolerances of a part whose bounding-box diagonal is `diagonal` mm.
+    pub fn for_diagonal(diagonal: f64) -> Self {
+        let linear = Tolerances::for_part(diagonal).linear;
+        let coplanar = (linear * 100.0).max(1e-4);
+        let coincidence = (diagonal * 1e-6).max(1e-5);
+        Self {
+            diagonal,
+            linear,
+            coplanar,
+            min_overlap_area: (coplanar * coplanar * 100.0).max(1e-6),
+            slab: (linear * 1000.0).max(1e-3),
+            feature: 1e-6 * diagonal.max(1.0),
+            coincidence,
+            min_coincidence_area: coincidence.powi(2) * 100.0,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -65,5 +117,17 @@ mod tests {
         let big = Tolerances::for_part(2000.0).linear;
         assert!((big - 2e-4).abs() < 1e-12);
         assert_eq!(Tolerances::for_part(f64::NAN).linear, MIN_LINEAR_MM);
+    }
+
+    #[test]
+    fn part_tolerances_scale_and_keep_their_floors() {
+        let small = PartTolerances::for_diagonal(1.0);
+        assert_eq!(small.coplanar, 1e-4);
+        assert_eq!(small.slab, 1e-3);
+        assert_eq!(small.coincidence, 1e-5);
+        let big = PartTolerances::for_diagonal(20_000.0);
+        assert!((big.slab - 2.0).abs() < 1e-12, "{}", big.slab);
+        assert!((big.feature - 0.02).abs() < 1e-15);
+        assert!(big.min_overlap_area > small.min_overlap_area);
     }
 }

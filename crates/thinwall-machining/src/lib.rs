@@ -29,22 +29,22 @@
 use geo::{Area, MultiPolygon};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
-use thinwall_brep::{compute_face_props, FaceId, FaceProps, Part};
-use thinwall_geom::{Point3, Surface, Vector3};
-use thinwall_graph::{AdjacencyGraph, Convexity};
+use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
+use thinwall_analysis::{Cylinder, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
+use thinwall_brep::{FaceId, FaceProps};
+use thinwall_geom::tolerance::UNIT_PARALLEL_EPS;
+use thinwall_geom::{Surface, Vector3};
+use thinwall_graph::Convexity;
 
 /// A machining feature on the part.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MachiningFeature {
     /// `M1`, `M2`, … by smallest face id.
-    pub id: String,
-    /// hole, pocket, slot, step, passage, chamfer, fillet.
-    pub kind: String,
+    pub id: MachiningId,
+    pub kind: MachiningKind,
     /// Opens through the part (no bottom).
     pub through: bool,
-    /// rectangular, triangular, hexagonal, circular, slanted, two_sided,
-    /// free; for holes also counterbored / countersunk / multi_segment.
-    pub profile: String,
+    pub profile: Profile,
     /// Unit tool (access) direction, into the part.
     pub direction: [f64; 3],
     /// `step_id`s of all faces it creates, floors included.
@@ -66,6 +66,10 @@ pub struct MachiningFeature {
     /// passage or hole), mm; absent when there is no floor to measure.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub largest_tool_diameter: Option<f64>,
+    /// The stiffness features sharing a face with it (filled by the
+    /// pipeline, which runs both recognizers).
+    #[serde(default)]
+    pub related: Vec<FeatureId>,
 }
 
 /// The six planes of the part's bounding block: index `2k` is the `min`
@@ -73,12 +77,12 @@ pub struct MachiningFeature {
 fn stock_plane(p: &FaceProps, bb: &thinwall_geom::BoundingBox, tol: f64) -> Option<usize> {
     let n = p.normal?;
     (0..3).find_map(|k| {
-        if n[k] > 1.0 - 1e-9
+        if n[k] > 1.0 - UNIT_PARALLEL_EPS
             && (p.bbox.min[k] - bb.max[k]).abs() < tol
             && (p.bbox.max[k] - bb.max[k]).abs() < tol
         {
             Some(2 * k + 1)
-        } else if n[k] < -1.0 + 1e-9
+        } else if n[k] < -1.0 + UNIT_PARALLEL_EPS
             && (p.bbox.max[k] - bb.min[k]).abs() < tol
             && (p.bbox.min[k] - bb.min[k]).abs() < tol
         {
@@ -95,455 +99,377 @@ fn plane_normal(sp: usize) -> Vector3 {
     v
 }
 
-/// A concave cylinder (outward normal towards its axis): a hole wall.
-fn hole_cylinder(part: &Part, f: FaceId) -> Option<(Point3, Vector3, f64)> {
-    let face = part.face(f);
-    match face.surface {
-        Surface::Cylinder { frame, radius } if !face.same_sense => {
-            Some((frame.origin, frame.z, radius))
-        }
-        _ => None,
-    }
+/// Whether two unit normals point the same way.
+fn same_direction(a: &Vector3, b: &Vector3) -> bool {
+    a.dot(b) > 1.0 - UNIT_PARALLEL_EPS
 }
 
-fn coaxial(a: (Point3, Vector3, f64), b: (Point3, Vector3, f64), tol: f64) -> bool {
-    let d = b.0 - a.0;
-    a.1.dot(&b.1).abs() > 1.0 - 1e-9 && (d - a.1 * d.dot(&a.1)).norm() < tol
-}
-
-/// Recognize the machining features of `part`.
-pub fn recognize(part: &Part, graph: &AdjacencyGraph) -> Vec<MachiningFeature> {
-    let props: Vec<FaceProps> = part
-        .face_ids()
-        .map(|f| compute_face_props(part, f))
+/// Recognize the machining features of the analysed part.
+pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
+    let part = a.part();
+    let bb = a.bounding_box();
+    let tol = a.tol().feature;
+    let stock: Vec<Option<usize>> = a
+        .face_props()
+        .iter()
+        .map(|p| stock_plane(p, bb, tol))
         .collect();
-    recognize_with_props(part, graph, &props)
-}
-
-/// [`recognize`] with every face's properties already computed
-/// (`props[face.index()]`): they are the costly part on free-form faces.
-pub fn recognize_with_props(
-    part: &Part,
-    graph: &AdjacencyGraph,
-    props: &[FaceProps],
-) -> Vec<MachiningFeature> {
-    let bb = part.bounding_box();
-    let diag = bb.diagonal().max(1.0);
-    let tol = 1e-6 * diag;
-    let stock: Vec<Option<usize>> = props.iter().map(|p| stock_plane(p, &bb, tol)).collect();
-    let is_blend = |f: FaceId| {
-        if hole_cylinder(part, f).is_some()
-            && graph
-                .neighbours(f)
-                .all(|(g, a)| a.convexity != Convexity::Smooth || hole_cylinder(part, g).is_some())
-        {
-            return false;
-        }
-        let curved = !matches!(part.face(f).surface, Surface::Plane { .. });
-        let smooth: BTreeSet<FaceId> = graph
-            .neighbours(f)
-            .filter(|(_, a)| a.convexity == Convexity::Smooth)
-            .map(|(g, _)| g)
-            .collect();
-        curved && smooth.len() >= 2
-    };
-    let mut taken: BTreeSet<FaceId> = part
-        .face_ids()
-        .filter(|f| stock[f.index()].is_some())
-        .collect();
+    let is_stock = |f: FaceId| stock[f.index()].is_some();
     let mut out: Vec<MachiningFeature> = Vec::new();
     // Blends: chains of tangent curved faces.
-    let blends: BTreeSet<FaceId> = part
+    let blends: Vec<FaceId> = part
         .face_ids()
-        .filter(|&f| !taken.contains(&f) && is_blend(f))
+        .filter(|&f| !is_stock(f) && is_blend(a, f))
         .collect();
-    for group in components(&blends, |f| {
-        graph
-            .neighbours(f)
-            .filter(|(g, a)| a.convexity == Convexity::Smooth && blends.contains(g))
-            .map(|(g, _)| g)
-            .collect()
-    }) {
-        taken.extend(group.iter().copied());
-        out.push(blend_feature(part, props, &group));
+    for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
+        out.push(blend_feature(a, &group));
     }
+    let blend_set: BTreeSet<FaceId> = blends.iter().copied().collect();
     // Depressions: concave-connected groups (hole halves across their seam).
-    let rest: BTreeSet<FaceId> = part.face_ids().filter(|f| !taken.contains(f)).collect();
-    for group in components(&rest, |f| {
-        graph
-            .neighbours(f)
-            .filter(|(g, a)| {
-                rest.contains(g)
-                    && (a.convexity == Convexity::Concave
-                        || (a.convexity == Convexity::Smooth
-                            && matches!((hole_cylinder(part, f), hole_cylinder(part, *g)), (Some(x), Some(y)) if coaxial(x, y, tol * 100.0))))
-            })
-            .map(|(g, _)| g)
-            .collect()
-    }) {
-        let mut touched = BTreeSet::new();
-        for &f in &group {
-            for (h, _) in graph.neighbours(f) {
-                if let Some(sp) = stock[h.index()] {
-                    touched.insert(sp);
-                }
-            }
-        }
-        out.push(depression_feature(part, props, &group, &touched, tol));
+    let rest: Vec<FaceId> = part
+        .face_ids()
+        .filter(|f| !is_stock(*f) && !blend_set.contains(f))
+        .collect();
+    let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
+        adj.convexity == Convexity::Concave
+            || (adj.convexity == Convexity::Smooth
+                && matches!((a.concave_cylinder(f), a.concave_cylinder(g)),
+                    (Some(x), Some(y)) if x.coaxial(&y, tol * 100.0)))
+    };
+    for group in a.components(&rest, joined) {
+        let touched: BTreeSet<usize> = group
+            .iter()
+            .flat_map(|&f| a.graph().neighbours(f))
+            .filter_map(|(h, _)| stock[h.index()])
+            .collect();
+        out.push(depression_feature(a, &group, &touched));
     }
     out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
     for (i, m) in out.iter_mut().enumerate() {
-        m.id = format!("M{}", i + 1);
+        m.id = MachiningId(i as u32 + 1);
     }
     out
 }
 
-fn components(set: &BTreeSet<FaceId>, next: impl Fn(FaceId) -> Vec<FaceId>) -> Vec<Vec<FaceId>> {
-    let mut seen = BTreeSet::new();
-    let mut out = Vec::new();
-    for &s in set {
-        if !seen.insert(s) {
-            continue;
-        }
-        let mut comp = vec![s];
-        let mut i = 0;
-        while i < comp.len() {
-            for g in next(comp[i]) {
-                if set.contains(&g) && seen.insert(g) {
-                    comp.push(g);
-                }
-            }
-            i += 1;
-        }
-        comp.sort();
-        out.push(comp);
-    }
-    out
-}
-
-fn ids(part: &Part, fs: &[FaceId]) -> Vec<u64> {
-    let mut v: Vec<u64> = fs.iter().map(|&f| part.face(f).step_id).collect();
-    v.sort();
-    v
-}
-
-fn radii(part: &Part, fs: &[FaceId]) -> Vec<f64> {
-    let mut r: Vec<f64> = fs
-        .iter()
-        .filter_map(|&f| match part.face(f).surface {
-            Surface::Cylinder { radius, .. } | Surface::Sphere { radius, .. } => Some(radius),
-            Surface::Torus { minor_radius, .. } => Some(minor_radius),
-            _ => None,
+/// A curved face tangent to two or more faces, but not a hole's cylinder
+/// whose tangent neighbours are all hole cylinders (its other half).
+fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
+    if a.concave_cylinder(f).is_some()
+        && a.graph().neighbours(f).all(|(g, adj)| {
+            adj.convexity != Convexity::Smooth || a.concave_cylinder(g).is_some()
         })
-        .collect();
+    {
+        return false;
+    }
+    let curved = !matches!(a.part().face(f).surface, Surface::Plane { .. });
+    curved && a.smooth_degree(f) >= 2
+}
+
+fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
+    let mut r: Vec<f64> = fs.iter().filter_map(|&f| a.blend_radius(f)).collect();
     r.sort_by(f64::total_cmp);
     r.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
     r
 }
 
-fn blend_feature(part: &Part, props: &[FaceProps], group: &[FaceId]) -> MachiningFeature {
-    let convex = part.face(group[0]).same_sense;
-    let dir = props[group[0].index()].axis.map_or(Vector3::z(), |a| a.1);
+fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
+    let convex = a.part().face(group[0]).same_sense;
+    let dir = a.props(group[0]).axis.map_or(Vector3::z(), |ax| ax.1);
     MachiningFeature {
-        id: String::new(),
-        kind: "fillet".into(),
+        id: MachiningId::default(),
+        kind: MachiningKind::Fillet,
         through: false,
         profile: if convex {
-            "round".into()
+            Profile::Round
         } else {
-            "fillet".into()
+            Profile::Fillet
         },
         direction: [dir.x, dir.y, dir.z],
-        faces: ids(part, group),
+        faces: a.step_ids(group),
         bottom_faces: vec![],
-        side_faces: ids(part, group),
+        side_faces: a.step_ids(group),
         open_to: vec![],
         depth: 0.0,
         length: 0.0,
         width: 0.0,
-        radii: radii(part, group),
+        radii: radii(a, group),
         largest_tool_diameter: None,
+        related: vec![],
     }
-}
-
-/// Extent of faces' boundary points along `dir`.
-fn extent(part: &Part, fs: &[FaceId], dir: &Vector3) -> (f64, f64) {
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
-    for &f in fs {
-        for p in thinwall_recognize::depressions::face_points(part, f) {
-            let x = p.coords.dot(dir);
-            lo = lo.min(x);
-            hi = hi.max(x);
-        }
-    }
-    (lo, hi)
 }
 
 /// Walls of `group` adjacent to wall `w` (sharing an edge).
-fn wall_neighbours(part: &Part, w: FaceId, walls: &[FaceId]) -> usize {
-    let mut n = BTreeSet::new();
-    for &l in &part.face(w).loops {
-        for ce in &part.loop_(l).coedges {
-            for &x in walls {
-                if x != w
-                    && part
-                        .face(x)
-                        .loops
-                        .iter()
-                        .any(|&m| part.loop_(m).coedges.iter().any(|c| c.edge == ce.edge))
+fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
+    a.graph()
+        .neighbours(w)
+        .filter(|(x, _)| *x != w && walls.contains(x))
+        .map(|(x, _)| x)
+        .collect::<BTreeSet<FaceId>>()
+        .len()
+}
+
+/// What typing a depression group needs: the stock planes it opens to,
+/// its distinct planes, its concave cylinders.
+struct GroupShape<'g> {
+    group: &'g [FaceId],
+    touched: &'g BTreeSet<usize>,
+    /// Axes with both block planes touched.
+    opposite: Vec<usize>,
+    /// Distinct planes among the planar faces: normal and offset.
+    planes: Vec<(Vector3, f64)>,
+    cylinders: Vec<Cylinder>,
+    /// The stock plane it is entered from.
+    entry: Option<usize>,
+}
+
+impl<'g> GroupShape<'g> {
+    fn new(a: &PartAnalysis, group: &'g [FaceId], touched: &'g BTreeSet<usize>) -> Self {
+        let tol = a.tol().feature;
+        let opposite: Vec<usize> = (0..3)
+            .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
+            .collect();
+        let mut planes: Vec<(Vector3, f64)> = Vec::new();
+        for &f in group {
+            if let Some(n) = a.props(f).normal {
+                let off = n.dot(&a.props(f).centroid.coords);
+                if !planes
+                    .iter()
+                    .any(|(m, o)| same_direction(m, &n) && (o - off).abs() < tol * 10.0)
                 {
-                    n.insert(x);
+                    planes.push((n, off));
                 }
             }
         }
-    }
-    n.len()
-}
-
-fn depression_feature(
-    part: &Part,
-    props: &[FaceProps],
-    group: &[FaceId],
-    touched: &BTreeSet<usize>,
-    tol: f64,
-) -> MachiningFeature {
-    let t = touched.len();
-    let opposite: Vec<usize> = (0..3)
-        .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
-        .collect();
-    // Distinct planes among the planar faces.
-    let mut planes: Vec<(Vector3, f64)> = Vec::new();
-    for &f in group {
-        if let Some(n) = props[f.index()].normal {
-            let off = n.dot(&props[f.index()].centroid.coords);
-            if !planes
-                .iter()
-                .any(|(m, o)| m.dot(&n) > 1.0 - 1e-9 && (o - off).abs() < tol * 10.0)
-            {
-                planes.push((n, off));
-            }
-        }
-    }
-    let d = planes.len();
-    let cylinders: Vec<(Point3, Vector3, f64)> = group
-        .iter()
-        .filter_map(|&f| hole_cylinder(part, f))
-        .collect();
-    let aligned = planes
-        .iter()
-        .all(|(n, _)| n.iter().any(|c| c.abs() > 1.0 - 1e-9));
-    let profile_of = |k: usize| match k {
-        3 => "triangular",
-        4 => "rectangular",
-        6 => "hexagonal",
-        _ => "free",
-    };
-    // The stock plane it is entered from: the one not in an opposite pair,
-    // facing the same way as a floor if there is one.
-    let entry: Option<usize> = {
+        let cylinders = group.iter().filter_map(|&f| a.concave_cylinder(f)).collect();
+        // The entry: a touched plane not in an opposite pair, facing the
+        // same way as a floor if there is one.
         let candidates: Vec<usize> = touched
             .iter()
             .copied()
             .filter(|sp| !opposite.contains(&(sp / 2)))
             .collect();
-        candidates
+        let entry = candidates
             .iter()
             .copied()
-            .find(|&sp| {
-                planes
-                    .iter()
-                    .any(|(n, _)| n.dot(&plane_normal(sp)) > 1.0 - 1e-9)
-            })
+            .find(|&sp| planes.iter().any(|(n, _)| same_direction(n, &plane_normal(sp))))
             .or_else(|| candidates.first().copied())
-            .or_else(|| touched.iter().next().copied())
-    };
-    let floor_up = if t == 1 {
-        entry.map(plane_normal)
-    } else {
-        None
-    };
-    let has_floor = floor_up.is_some_and(|u| planes.iter().any(|(n, _)| n.dot(&u) > 1.0 - 1e-9));
-    // Walls closing a ring around the floor: each wall meets two others.
-    let ring = {
-        let walls: Vec<FaceId> = group
+            .or_else(|| touched.iter().next().copied());
+        Self {
+            group,
+            touched,
+            opposite,
+            planes,
+            cylinders,
+            entry,
+        }
+    }
+
+    /// A floor facing the only stock plane it opens to.
+    fn floor_up(&self) -> Option<Vector3> {
+        if self.touched.len() == 1 {
+            self.entry.map(plane_normal)
+        } else {
+            None
+        }
+    }
+
+    /// Walls closing a ring around the floor: each wall meets two others.
+    fn ring(&self, a: &PartAnalysis) -> bool {
+        let floor_up = self.floor_up();
+        let walls: Vec<FaceId> = self
+            .group
             .iter()
             .copied()
             .filter(|&f| {
-                !floor_up.is_some_and(|u| {
-                    props[f.index()]
-                        .normal
-                        .is_some_and(|n| n.dot(&u) > 1.0 - 1e-9)
-                })
+                !floor_up.is_some_and(|u| a.props(f).normal.is_some_and(|n| same_direction(&n, &u)))
             })
             .collect();
-        !walls.is_empty() && walls.iter().all(|&w| wall_neighbours(part, w, &walls) >= 2)
-    };
-    let (kind, through, profile): (&str, bool, String) = if !cylinders.is_empty() {
-        // Holes: concave cylinders. Blind when a face closes the far end:
-        // a plane across the axis, or a drill point (cone, sphere) there.
-        let axis = cylinders[0].1;
-        let (lo, hi) = extent(part, group, &axis);
-        let at_end = |f: FaceId| {
-            let (a, b) = extent(part, &[f], &axis);
-            (a - lo).abs() < tol * 100.0 || (b - hi).abs() < tol * 100.0
+        !walls.is_empty() && walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
+    }
+
+    /// Kind, through and profile.
+    fn typing(&self, a: &PartAnalysis) -> (MachiningKind, bool, Profile) {
+        use MachiningKind::*;
+        if !self.cylinders.is_empty() {
+            return hole_typing(a, self.group, &self.cylinders);
+        }
+        let (t, d) = (self.touched.len(), self.planes.len());
+        let opposite = !self.opposite.is_empty();
+        let has_floor = self
+            .floor_up()
+            .is_some_and(|u| self.planes.iter().any(|(n, _)| same_direction(n, &u)));
+        let tri_or_rect = |two: bool| {
+            if two {
+                Profile::Triangular
+            } else {
+                Profile::Rectangular
+            }
         };
-        let closes = |f: FaceId| match part.face(f).surface {
+        if d == 1 && t >= 3 {
+            (Chamfer, false, Profile::Slanted)
+        } else if has_floor && self.ring(a) {
+            (Pocket, false, Profile::of_sides(d - 1))
+        } else if has_floor {
+            // A floor whose walls do not close: it opens sideways into another feature.
+            (Step, false, tri_or_rect(d <= 2))
+        } else if t == 1 || (t == 2 && self.opposite.len() == 1) {
+            (Passage, true, Profile::of_sides(d))
+        } else if opposite && t == 3 {
+            (Slot, true, tri_or_rect(d == 2))
+        } else if opposite && t == 4 {
+            let aligned = self
+                .planes
+                .iter()
+                .all(|(n, _)| n.iter().any(|c| c.abs() > 1.0 - UNIT_PARALLEL_EPS));
+            let profile = if d == 3 {
+                Profile::TwoSided
+            } else if aligned {
+                Profile::Rectangular
+            } else {
+                Profile::Slanted
+            };
+            (Step, true, profile)
+        } else if !opposite && t == 3 {
+            (Step, false, tri_or_rect(d == 2))
+        } else if !opposite && t == 2 && d == 4 {
+            (Slot, false, Profile::Rectangular)
+        } else if !opposite && t == 2 {
+            (Step, false, tri_or_rect(d <= 2))
+        } else {
+            // Opens to no block plane, or in a way none of the above describes.
+            (Pocket, false, Profile::Free)
+        }
+    }
+
+    /// Into the part from the entry plane (holes: along the axis).
+    fn direction(&self) -> Vector3 {
+        if let Some(c) = self.cylinders.first() {
+            match self.entry {
+                Some(sp) if plane_normal(sp).dot(&c.axis) > 0.0 => -c.axis,
+                _ => c.axis,
+            }
+        } else {
+            self.entry
+                .map(|sp| -plane_normal(sp))
+                .unwrap_or(-Vector3::z())
+        }
+    }
+}
+
+/// Holes: concave cylinders. Blind when a face closes the far end: a plane
+/// across the axis, or a drill point (cone, sphere) there.
+fn hole_typing(
+    a: &PartAnalysis,
+    group: &[FaceId],
+    cylinders: &[Cylinder],
+) -> (MachiningKind, bool, Profile) {
+    let part = a.part();
+    let tol = a.tol().feature;
+    let axis = cylinders[0].axis;
+    let (lo, hi) = a.extent(group, &axis);
+    let at_end = |f: FaceId| {
+        let (x, y) = a.extent(&[f], &axis);
+        (x - lo).abs() < tol * 100.0 || (y - hi).abs() < tol * 100.0
+    };
+    let closes = |f: FaceId| {
+        let face = part.face(f);
+        match face.surface {
             Surface::Plane { .. } => {
-                props[f.index()]
+                a.props(f)
                     .normal
                     .is_some_and(|n| n.dot(&axis).abs() > 1.0 - 1e-6)
                     && at_end(f)
-                    && part.face(f).loops.len() == 1
+                    && face.loops.len() == 1
             }
             // A drill point: at the far end, coming to a tip (a vertex
             // loop) or a single boundary.
             Surface::Cone { .. } | Surface::Sphere { .. } => {
-                let face = part.face(f);
                 at_end(f)
                     && (face.loops.len() == 1
                         || face.loops.iter().any(|&l| part.loop_(l).vertex.is_some()))
             }
             _ => false,
-        };
-        let bottom = group.iter().any(|&f| closes(f));
-        let distinct_r = radii(part, group).len();
-        let cone = group
-            .iter()
-            .any(|&f| matches!(part.face(f).surface, Surface::Cone { .. }));
-        let profile = if cone && distinct_r >= 1 {
-            "countersunk"
-        } else if distinct_r == 2 {
-            "counterbored"
-        } else if distinct_r > 2 {
-            "multi_segment"
-        } else {
-            "circular"
-        };
-        ("hole", !bottom, profile.to_string())
-    } else if d == 1 && t >= 3 {
-        ("chamfer", false, "slanted".to_string())
-    } else if has_floor && ring {
-        ("pocket", false, profile_of(d - 1).to_string())
-    } else if has_floor {
-        // A floor whose walls do not close: it opens sideways into another feature.
-        (
-            "step",
-            false,
-            if d <= 2 { "triangular" } else { "rectangular" }.to_string(),
-        )
-    } else if t == 1 || (t == 2 && opposite.len() == 1) {
-        ("passage", true, profile_of(d).to_string())
-    } else if !opposite.is_empty() && t == 3 {
-        (
-            "slot",
-            true,
-            if d == 2 { "triangular" } else { "rectangular" }.to_string(),
-        )
-    } else if !opposite.is_empty() && t == 4 {
-        (
-            "step",
-            true,
-            if d == 3 {
-                "two_sided"
-            } else if aligned {
-                "rectangular"
-            } else {
-                "slanted"
-            }
-            .to_string(),
-        )
-    } else if opposite.is_empty() && t == 3 {
-        (
-            "step",
-            false,
-            if d == 2 { "triangular" } else { "rectangular" }.to_string(),
-        )
-    } else if opposite.is_empty() && t == 2 && d == 4 {
-        ("slot", false, "rectangular".to_string())
-    } else if opposite.is_empty() && t == 2 {
-        (
-            "step",
-            false,
-            if d <= 2 { "triangular" } else { "rectangular" }.to_string(),
-        )
-    } else {
-        // Opens to no block plane, or in a way none of the above describes.
-        ("pocket", false, "free".to_string())
-    };
-    // Direction: into the part from the entry plane (holes: along the axis).
-    let dir = if let Some(c) = cylinders.first() {
-        let a = c.1;
-        match entry {
-            Some(sp) if plane_normal(sp).dot(&a) > 0.0 => -a,
-            _ => a,
         }
-    } else {
-        entry.map(|sp| -plane_normal(sp)).unwrap_or(-Vector3::z())
     };
-    let bottom: Vec<FaceId> = group
+    let bottom = group.iter().any(|&f| closes(f));
+    let distinct_r = radii(a, group).len();
+    let cone = group
         .iter()
-        .copied()
-        .filter(|&f| {
-            props[f.index()]
-                .normal
-                .is_some_and(|n| n.dot(&-dir) > 1.0 - 1e-6)
-        })
-        .collect();
-    let sides: Vec<FaceId> = group
-        .iter()
-        .copied()
-        .filter(|f| !bottom.contains(f))
-        .collect();
-    let (lo, hi) = extent(part, group, &dir);
-    // Profile sizes: the faces' points projected on the plane across `dir`.
-    let u = thinwall_geom::frame::any_perpendicular(&dir);
+        .any(|&f| matches!(part.face(f).surface, Surface::Cone { .. }));
+    let profile = if cone && distinct_r >= 1 {
+        Profile::Countersunk
+    } else if distinct_r == 2 {
+        Profile::Counterbored
+    } else if distinct_r > 2 {
+        Profile::MultiSegment
+    } else {
+        Profile::Circular
+    };
+    (MachiningKind::Hole, !bottom, profile)
+}
+
+/// Profile length and width: the faces' boundary points projected on the
+/// plane across `dir`, their minimum rectangle.
+fn profile_sizes(a: &PartAnalysis, group: &[FaceId], dir: &Vector3) -> (f64, f64) {
+    let u = thinwall_geom::frame::any_perpendicular(dir);
     let v = dir.cross(&u);
-    let mut pts: Vec<geo::Coord<f64>> = Vec::new();
-    for &f in group {
-        for p in thinwall_recognize::depressions::face_points(part, f) {
-            pts.push(geo::Coord {
-                x: p.coords.dot(&u),
-                y: p.coords.dot(&v),
-            });
-        }
+    let pts: Vec<geo::Point<f64>> = group
+        .iter()
+        .flat_map(|&f| a.boundary_points(f))
+        .map(|p| geo::Point::new(p.coords.dot(&u), p.coords.dot(&v)))
+        .collect();
+    min_rect_sides(&geo::MultiPoint::from(pts)).unwrap_or((0.0, 0.0))
+}
+
+/// The largest tool that fits: a hole's diameter, or twice the inscribed
+/// radius of the floor.
+fn largest_tool(
+    a: &PartAnalysis,
+    kind: MachiningKind,
+    radii: &[f64],
+    bottom: &[FaceId],
+) -> Option<f64> {
+    if kind == MachiningKind::Hole {
+        return radii.first().map(|r| 2.0 * r);
     }
-    let (length, width) = {
-        use geo::MinimumRotatedRect;
-        let mp =
-            geo::MultiPoint::from(pts.iter().map(|c| geo::Point::from(*c)).collect::<Vec<_>>());
-        mp.minimum_rotated_rect().map_or((0.0, 0.0), |r| {
-            let c: Vec<geo::Coord<f64>> = r.exterior().coords().copied().collect();
-            let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
-            let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
-            (a.max(b), a.min(b))
-        })
-    };
-    let radii_v = radii(part, group);
-    let largest_tool_diameter = if kind == "hole" {
-        radii_v.first().map(|r| 2.0 * r)
-    } else if !bottom.is_empty() {
-        let floors: MultiPolygon<f64> = MultiPolygon::new(
-            bottom
-                .iter()
-                .filter_map(|&f| thinwall_recognize::planar::PlanarFace::new(part, f))
-                .flat_map(|p| p.polygon_in(&p.frame).0)
-                .collect(),
-        );
-        (floors.unsigned_area() > 0.0)
-            .then(|| 2.0 * thinwall_recognize::planar::inscribed_radius(&floors))
-    } else {
-        None
-    };
+    if bottom.is_empty() {
+        return None;
+    }
+    let floors: MultiPolygon<f64> = MultiPolygon::new(
+        bottom
+            .iter()
+            .filter_map(|&f| a.polygon(f))
+            .flat_map(|p| p.0)
+            .collect(),
+    );
+    (floors.unsigned_area() > 0.0).then(|| 2.0 * inscribed_radius(&floors))
+}
+
+fn depression_feature(
+    a: &PartAnalysis,
+    group: &[FaceId],
+    touched: &BTreeSet<usize>,
+) -> MachiningFeature {
+    let shape = GroupShape::new(a, group, touched);
+    let (kind, through, profile) = shape.typing(a);
+    let dir = shape.direction();
+    let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
+        a.props(f)
+            .normal
+            .is_some_and(|n| n.dot(&-dir) > 1.0 - 1e-6)
+    });
+    let (lo, hi) = a.extent(group, &dir);
+    let (length, width) = profile_sizes(a, group, &dir);
+    let radii_v = radii(a, group);
     MachiningFeature {
-        id: String::new(),
-        kind: kind.into(),
+        id: MachiningId::default(),
+        kind,
         through,
         profile,
         direction: [dir.x, dir.y, dir.z],
-        faces: ids(part, group),
-        bottom_faces: ids(part, &bottom),
-        side_faces: ids(part, &sides),
+        faces: a.step_ids(group),
+        bottom_faces: a.step_ids(&bottom),
+        side_faces: a.step_ids(&sides),
         open_to: touched
             .iter()
             .map(|&sp| {
@@ -554,32 +480,8 @@ fn depression_feature(
         depth: if hi.is_finite() { hi - lo } else { 0.0 },
         length,
         width,
+        largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
         radii: radii_v,
-        largest_tool_diameter,
-    }
-}
-
-/// The MFCAD class (0–15) of a face, from the features (15 = stock).
-pub fn mfcad_class(features: &[MachiningFeature], step_id: u64) -> u64 {
-    let Some(m) = features.iter().find(|m| m.faces.contains(&step_id)) else {
-        return 15;
-    };
-    match (m.kind.as_str(), m.through, m.profile.as_str()) {
-        ("chamfer", _, _) => 0,
-        ("passage", true, "triangular") => 1,
-        ("passage", true, "rectangular") => 2,
-        ("passage", true, "hexagonal") => 3,
-        ("slot", true, "triangular") => 4,
-        ("slot", true, "rectangular") => 5,
-        ("step", true, "rectangular") => 6,
-        ("step", true, "two_sided") => 7,
-        ("step", true, "slanted") => 8,
-        ("pocket", false, "triangular") => 9,
-        ("pocket", false, "rectangular") => 10,
-        ("pocket", false, "hexagonal") => 11,
-        ("slot", false, "rectangular") => 12,
-        ("step", false, "triangular") => 13,
-        ("step", false, "rectangular") => 14,
-        _ => 99,
+        related: vec![],
     }
 }

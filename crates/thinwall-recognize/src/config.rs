@@ -3,58 +3,8 @@
 //! `DOMAIN.md`; every value can be overridden from a TOML file or flags.
 
 use serde::{Deserialize, Serialize};
+use thinwall_analysis::StiffnessKind as Kind;
 use thiserror::Error;
-
-/// Feature kinds a user can include or exclude.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Kind {
-    Web,
-    Rib,
-    Flange,
-    Wall,
-    Hole,
-    Cutout,
-    Notch,
-    Chamfer,
-    Fillet,
-}
-
-impl Kind {
-    pub const ALL: [Kind; 9] = [
-        Kind::Web,
-        Kind::Rib,
-        Kind::Flange,
-        Kind::Wall,
-        Kind::Hole,
-        Kind::Cutout,
-        Kind::Notch,
-        Kind::Chamfer,
-        Kind::Fillet,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Kind::Web => "web",
-            Kind::Rib => "rib",
-            Kind::Flange => "flange",
-            Kind::Wall => "wall",
-            Kind::Hole => "hole",
-            Kind::Cutout => "cutout",
-            Kind::Notch => "notch",
-            Kind::Chamfer => "chamfer",
-            Kind::Fillet => "fillet",
-        }
-    }
-
-    pub fn is_wall(self) -> bool {
-        matches!(self, Kind::Web | Kind::Rib | Kind::Flange | Kind::Wall)
-    }
-
-    pub fn parse(s: &str) -> Option<Kind> {
-        Kind::ALL.into_iter().find(|k| k.name() == s)
-    }
-}
 
 /// The cantilever model deciding whether a wall is thin (Popma 4.1.2, 6.1.1).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -109,12 +59,11 @@ impl Default for Thresholds {
     }
 }
 
-/// Everything recognition needs besides the part.
+/// Everything recognition needs besides the part and its set-up (which
+/// the analysis context holds).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Config {
-    /// The set-up's up direction (tool axis of a 3-axis machine).
-    pub up: [f64; 3],
     /// Kinds to report (all when empty).
     pub include: Vec<Kind>,
     /// Kinds never reported.
@@ -129,7 +78,6 @@ pub struct Config {
 impl Default for Config {
     fn default() -> Self {
         Self {
-            up: [0.0, 0.0, 1.0],
             include: Vec::new(),
             exclude: Vec::new(),
             priority: vec![
@@ -146,18 +94,41 @@ impl Default for Config {
 }
 
 /// A configuration that cannot be used.
-#[derive(Debug, Error)]
+#[derive(Debug, Error, PartialEq)]
+#[non_exhaustive]
 pub enum ConfigError {
     #[error("{file}: {message}")]
     Toml { file: String, message: String },
-    #[error("invalid setting: {0}")]
-    Invalid(String),
+    #[error("invalid setting: {name} must be positive, got {value}")]
+    NotPositive { name: &'static str, value: f64 },
+    #[error("invalid setting: {kind} is both included and excluded")]
+    IncludedAndExcluded { kind: Kind },
+}
+
+impl ConfigError {
+    /// A stable machine-readable code for the error kind.
+    pub fn code(&self) -> &'static str {
+        match self {
+            ConfigError::Toml { .. } => "config_file",
+            ConfigError::NotPositive { .. } => "not_positive",
+            ConfigError::IncludedAndExcluded { .. } => "included_and_excluded",
+        }
+    }
 }
 
 impl Config {
     /// Parse TOML text (`file` names it in errors) over the defaults.
     pub fn from_toml(text: &str, file: &str) -> Result<Self, ConfigError> {
-        let c: Config = toml::from_str(text).map_err(|e| ConfigError::Toml {
+        let table: toml::Table = toml::from_str(text).map_err(|e| ConfigError::Toml {
+            file: file.to_string(),
+            message: e.to_string(),
+        })?;
+        Self::from_table(table, file)
+    }
+
+    /// Settings from an already parsed TOML table (`file` names it in errors).
+    pub fn from_table(table: toml::Table, file: &str) -> Result<Self, ConfigError> {
+        let c = Config::deserialize(table).map_err(|e| ConfigError::Toml {
             file: file.to_string(),
             message: e.to_string(),
         })?;
@@ -167,15 +138,8 @@ impl Config {
 
     /// Reject values the models cannot work with.
     pub fn validate(&self) -> Result<(), ConfigError> {
-        let n = (self.up[0].powi(2) + self.up[1].powi(2) + self.up[2].powi(2)).sqrt();
-        if !(n.is_finite() && n > 1e-9) {
-            return Err(ConfigError::Invalid(format!(
-                "up direction {:?} has no length",
-                self.up
-            )));
-        }
         let t = &self.thinness;
-        for (name, v) in [
+        for (name, value) in [
             ("force_n", t.force_n),
             ("youngs_modulus_n_mm2", t.youngs_modulus_n_mm2),
             ("allowed_deflection_mm", t.allowed_deflection_mm),
@@ -185,11 +149,12 @@ impl Config {
                 self.thresholds.preferred_tool_diameter_mm,
             ),
         ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(ConfigError::Invalid(format!(
-                    "{name} must be positive, got {v}"
-                )));
+            if !(value.is_finite() && value > 0.0) {
+                return Err(ConfigError::NotPositive { name, value });
             }
+        }
+        if let Some(&kind) = self.include.iter().find(|k| self.exclude.contains(k)) {
+            return Err(ConfigError::IncludedAndExcluded { kind });
         }
         Ok(())
     }
@@ -199,10 +164,6 @@ impl Config {
         (self.include.is_empty() || self.include.contains(&kind)) && !self.exclude.contains(&kind)
     }
 
-    /// The unit up vector.
-    pub fn up_unit(&self) -> thinwall_geom::Vector3 {
-        thinwall_geom::Vector3::new(self.up[0], self.up[1], self.up[2]).normalize()
-    }
 }
 
 #[cfg(test)]
@@ -212,18 +173,25 @@ mod tests {
     #[test]
     fn toml_overrides_defaults_and_rejects_nonsense() {
         let c = Config::from_toml(
-            "up = [1.0, 0.0, 0.0]\nexclude = [\"chamfer\"]\n[thinness]\nforce_n = 150.0\n",
+            "exclude = [\"chamfer\"]\n[thinness]\nforce_n = 150.0\n",
             "t.toml",
         )
         .unwrap();
-        assert_eq!(c.up, [1.0, 0.0, 0.0]);
         assert_eq!(c.thinness.force_n, 150.0);
         assert_eq!(c.thinness.youngs_modulus_n_mm2, 70_000.0);
         assert!(!c.reports(Kind::Chamfer) && c.reports(Kind::Rib));
         let e = Config::from_toml("[thinness]\nforce_n = -1.0\n", "t.toml").unwrap_err();
         assert!(e.to_string().contains("force_n"));
+        assert_eq!(e.code(), "not_positive");
         let e = Config::from_toml("bogus = 1\n", "bad.toml").unwrap_err();
         assert!(e.to_string().starts_with("bad.toml:"));
-        assert!(Config::from_toml("up = [0.0, 0.0, 0.0]\n", "t.toml").is_err());
+        // `up` belongs to the set-up, not to recognition settings.
+        assert_eq!(
+            Config::from_toml("up = [0.0, 0.0, 1.0]\n", "t.toml").unwrap_err().code(),
+            "config_file"
+        );
+        let both = "include = [\"hole\"]\nexclude = [\"hole\"]\n";
+        let e = Config::from_toml(both, "t.toml").unwrap_err();
+        assert_eq!(e.code(), "included_and_excluded");
     }
 }

@@ -1,13 +1,12 @@
 //! Depressions in a wall: holes (closed openings through it, from the inner
 //! loops of its side faces), cut-outs and notches (openings from its rim).
 
-use crate::junctions::is_concave_blend;
 use crate::walls::Wall;
-use std::collections::{BTreeSet, HashSet, VecDeque};
-use thinwall_brep::{FaceId, Part};
+use std::collections::{BTreeSet, HashSet};
+use thinwall_analysis::PartAnalysis;
+use thinwall_brep::FaceId;
 use thinwall_geom::Surface;
-use thinwall_geom::{Point3, Vector3};
-use thinwall_graph::{AdjacencyGraph, Convexity};
+use thinwall_graph::Convexity;
 
 /// A depression found in a wall.
 #[derive(Clone, Debug)]
@@ -24,34 +23,10 @@ pub enum DepressionKind {
     Notch,
 }
 
-/// Sample points on a face's boundary.
-pub fn face_points(part: &Part, f: FaceId) -> Vec<Point3> {
-    let mut pts = Vec::new();
-    for &l in &part.face(f).loops {
-        let lp = part.loop_(l);
-        if let Some(v) = lp.vertex {
-            pts.push(part.vertex(v).point);
-        }
-        for ce in &lp.coedges {
-            let e = part.edge(ce.edge);
-            match &e.nurbs {
-                Some(c) => {
-                    for (a, b) in c.spans() {
-                        for k in 0..=4 {
-                            pts.push(c.point(a + (b - a) * k as f64 / 4.0));
-                        }
-                    }
-                }
-                None => pts.push(part.vertex(e.start).point),
-            }
-        }
-    }
-    pts
-}
-
 /// Whether all of a face lies within the wall's slab (between its side planes).
-pub fn within_slab(part: &Part, wall: &Wall, f: FaceId, tol: f64) -> bool {
-    face_points(part, f).iter().all(|p| {
+pub fn within_slab(a: &PartAnalysis, wall: &Wall, f: FaceId) -> bool {
+    let tol = a.tol().slab;
+    a.boundary_points(f).iter().all(|p| {
         let d = (p - wall.frame.origin).dot(&wall.frame.z);
         d <= tol && d >= -wall.thickness - tol
     })
@@ -60,35 +35,36 @@ pub fn within_slab(part: &Part, wall: &Wall, f: FaceId, tol: f64) -> bool {
 /// Holes of wall `w`: from each inner loop of a side face, the faces beyond
 /// it, flooded while they stay within the slab.
 pub fn holes(
-    part: &Part,
-    graph: &AdjacencyGraph,
+    a: &PartAnalysis,
     walls: &[Wall],
     w: usize,
     taken: &mut HashSet<FaceId>,
     any_side: &HashSet<FaceId>,
-    tol: f64,
 ) -> Vec<Depression> {
+    let (part, graph) = (a.part(), a.graph());
     let wall = &walls[w];
     let mut out = Vec::new();
     for s in 0..2 {
         for &f in &wall.sides[s] {
             let face = part.face(f);
-            let outer = crate::planar::outer_loops(part, f);
+            let outer = thinwall_analysis::polygon::outer_loops(part, f);
             for (i, &l) in face.loops.iter().enumerate() {
-                let lp = part.loop_(l);
                 if outer[i] {
                     continue;
                 }
                 // Faces across this loop's edges.
-                let mut seeds = Vec::new();
-                for ce in &lp.coedges {
-                    for e in &graph.edges[ce.edge.index()].faces {
-                        if *e != f && !any_side.contains(e) && !taken.contains(e) {
-                            seeds.push(*e);
-                        }
-                    }
-                }
-                let set = flood(part, graph, wall, seeds, taken, any_side, tol);
+                let seeds: Vec<FaceId> = part
+                    .loop_(l)
+                    .coedges
+                    .iter()
+                    .flat_map(|ce| graph.edges[ce.edge.index()].faces.iter().copied())
+                    .filter(|e| *e != f && !any_side.contains(e) && !taken.contains(e))
+                    .collect();
+                let set = a.reachable(
+                    seeds,
+                    |g| !taken.contains(&g) && !any_side.contains(&g) && within_slab(a, wall, g),
+                    |_, _, _| true,
+                );
                 if set.is_empty() {
                     continue;
                 }
@@ -112,60 +88,26 @@ pub fn holes(
     out
 }
 
-fn flood(
-    part: &Part,
-    graph: &AdjacencyGraph,
-    wall: &Wall,
-    seeds: Vec<FaceId>,
-    taken: &HashSet<FaceId>,
-    any_side: &HashSet<FaceId>,
-    tol: f64,
-) -> BTreeSet<FaceId> {
-    let mut set = BTreeSet::new();
-    let mut queue: VecDeque<FaceId> = seeds.into_iter().collect();
-    while let Some(f) = queue.pop_front() {
-        if set.contains(&f)
-            || taken.contains(&f)
-            || any_side.contains(&f)
-            || !within_slab(part, wall, f, tol)
-        {
-            continue;
-        }
-        set.insert(f);
-        for (g, _) in graph.neighbours(f) {
-            if !set.contains(&g) {
-                queue.push_back(g);
-            }
-        }
-    }
-    set
-}
-
 /// The rim of wall `w`: faces that touch both of its sides and lie within
 /// its slab (top, ends, and the faces of openings from the edge).
 pub fn rim_faces(
-    part: &Part,
-    graph: &AdjacencyGraph,
-    walls: &[Wall],
-    w: usize,
+    a: &PartAnalysis,
+    wall: &Wall,
     taken: &HashSet<FaceId>,
     any_side: &HashSet<FaceId>,
-    tol: f64,
 ) -> Vec<FaceId> {
-    let wall = &walls[w];
-    let mut candidates: BTreeSet<FaceId> = BTreeSet::new();
-    for &f in &wall.sides[0] {
-        for (g, _) in graph.neighbours(f) {
-            candidates.insert(g);
-        }
-    }
+    let graph = a.graph();
+    let candidates: BTreeSet<FaceId> = wall.sides[0]
+        .iter()
+        .flat_map(|&f| graph.neighbours(f).map(|(g, _)| g))
+        .collect();
     candidates
         .into_iter()
         .filter(|&g| {
             !any_side.contains(&g)
                 && !taken.contains(&g)
                 && graph.neighbours(g).any(|(h, _)| wall.sides[1].contains(&h))
-                && within_slab(part, wall, g, tol)
+                && within_slab(a, wall, g)
         })
         .collect()
 }
@@ -173,48 +115,30 @@ pub fn rim_faces(
 /// Cut-outs and notches among a wall's rim faces: rim faces joined by
 /// concave edges (the inside corners of a slot or step), or a single
 /// concave cylindrical scallop.
-pub fn edge_openings(
-    part: &Part,
-    graph: &AdjacencyGraph,
-    w: usize,
-    rim: &[FaceId],
-) -> Vec<Depression> {
-    let in_rim: HashSet<FaceId> = rim.iter().copied().collect();
-    let mut seen: HashSet<FaceId> = HashSet::new();
+pub fn edge_openings(a: &PartAnalysis, w: usize, rim: &[FaceId]) -> Vec<Depression> {
+    let graph = a.graph();
+    let concave = |_: FaceId, _: FaceId, adj: &thinwall_graph::Adjacency| {
+        adj.convexity == Convexity::Concave
+    };
     let mut out = Vec::new();
-    for &start in rim {
-        if seen.contains(&start) {
-            continue;
-        }
-        let mut comp = vec![start];
-        seen.insert(start);
-        let mut i = 0;
-        let mut concave_arcs = 0;
-        while i < comp.len() {
-            let f = comp[i];
-            for (g, adj) in graph.neighbours(f) {
-                if in_rim.contains(&g) && adj.convexity == Convexity::Concave {
-                    if f < g {
-                        concave_arcs += 1;
-                    }
-                    if seen.insert(g) {
-                        comp.push(g);
-                    }
-                }
-            }
-            i += 1;
-        }
-        comp.sort();
+    for comp in a.components(rim, concave) {
+        let concave_arcs = comp
+            .iter()
+            .flat_map(|&f| graph.neighbours(f).map(move |(g, adj)| (f, g, adj)))
+            .filter(|(f, g, adj)| f < g && adj.convexity == Convexity::Concave)
+            .filter(|(_, g, _)| comp.binary_search(g).is_ok())
+            .count();
+        let start = comp[0];
         let kind = if comp.len() >= 2 && concave_arcs >= 2 {
             Some(DepressionKind::Cutout)
         } else if comp.len() == 2 && concave_arcs == 1 {
             Some(DepressionKind::Notch)
         } else if comp.len() == 1
-            && is_concave_blend(part, start)
-            && matches!(part.face(start).surface, Surface::Cylinder { .. })
+            && a.is_concave_blend(start)
+            && matches!(a.part().face(start).surface, Surface::Cylinder { .. })
             && !graph
                 .neighbours(start)
-                .any(|(_, a)| a.convexity == Convexity::Smooth)
+                .any(|(_, adj)| adj.convexity == Convexity::Smooth)
         {
             // A scallop from the edge. A concave cylinder tangent to its
             // neighbours is an inside corner radius (a fillet) instead.
@@ -231,18 +155,4 @@ pub fn edge_openings(
         }
     }
     out
-}
-
-/// Extent of a set of faces along a direction, mm.
-pub fn extent(part: &Part, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
-    for &f in faces {
-        for p in face_points(part, f) {
-            let x = p.coords.dot(dir);
-            lo = lo.min(x);
-            hi = hi.max(x);
-        }
-    }
-    (lo, hi)
 }

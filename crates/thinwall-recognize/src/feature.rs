@@ -1,7 +1,10 @@
 //! The recognizer's results: plain data with stable ids.
 
-use crate::config::Kind;
+use geo::MultiPolygon;
 use serde::{Deserialize, Serialize};
+use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_brep::FaceId;
+use thinwall_geom::{Frame, Point3, Vector3};
 
 /// A point and unit normal, mm.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -15,8 +18,8 @@ pub struct Plane {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StiffnessFeature {
     /// Stable within a report: kind prefix and a number (`R2`, `H1`).
-    pub id: String,
-    pub kind: Kind,
+    pub id: FeatureId,
+    pub kind: StiffnessKind,
     /// `step_id`s of all its faces.
     pub faces: Vec<u64>,
     /// Walls: `step_id`s of the faces of both sides.
@@ -54,10 +57,10 @@ pub struct StiffnessFeature {
     pub top_end_faces: Option<Vec<u64>>,
     /// Walls: the wall it stands on (may be a thick one).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub base: Option<String>,
+    pub base: Option<FeatureId>,
     /// Depressions and details: the wall it is in or on.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub wall: Option<String>,
+    pub wall: Option<FeatureId>,
     /// Holes: mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub diameter: Option<f64>,
@@ -76,12 +79,52 @@ pub struct StiffnessFeature {
     /// Cut-outs, notches, chamfers: width, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub width: Option<f64>,
+    /// Walls: the geometry a planner builds on (region, side polygons, foot
+    /// line). Library only, not in the JSON.
+    #[serde(skip)]
+    pub geometry: Option<WallGeometry>,
+}
+
+/// What a planner needs of a wall's shape, in the frame of its side 0
+/// (`frame.z` is side 0's outward normal; side 1 lies at `z = −thickness`,
+/// the mid-plane at `z = −thickness / 2`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct WallGeometry {
+    pub frame: Frame,
+    /// mm.
+    pub thickness: f64,
+    /// Where the two sides bound the slab, in `frame`'s xy coordinates (mm):
+    /// the wall's outline in its mid-plane.
+    pub region: MultiPolygon<f64>,
+    /// Each side's faces with their polygons in `frame`'s xy coordinates.
+    pub side_polygons: [Vec<(FaceId, MultiPolygon<f64>)>; 2],
+    /// Unit direction of its height (away from the base; in-plane up for a
+    /// wall without a base).
+    pub height_direction: Vector3,
+    /// Walls on a base: where the mid-plane meets the base's side, from one
+    /// end of the wall to the other (mm).
+    pub foot: Option<[Point3; 2]>,
+}
+
+impl WallGeometry {
+    /// The outline of the region on the mid-plane, in model coordinates.
+    pub fn outline(&self) -> Vec<Point3> {
+        self.region
+            .0
+            .iter()
+            .flat_map(|p| p.exterior().coords())
+            .map(|c| {
+                self.frame
+                    .to_world(&Vector3::new(c.x, c.y, -0.5 * self.thickness))
+            })
+            .collect()
+    }
 }
 
 impl StiffnessFeature {
-    pub fn new(kind: Kind, faces: Vec<u64>) -> Self {
+    pub fn new(kind: StiffnessKind, faces: Vec<u64>) -> Self {
         Self {
-            id: String::new(),
+            id: FeatureId::new(kind, 0),
             kind,
             faces,
             side_faces: None,
@@ -103,21 +146,7 @@ impl StiffnessFeature {
             radius: None,
             convex: None,
             width: None,
+            geometry: None,
         }
-    }
-}
-
-/// Id prefix of a kind.
-pub fn prefix(kind: Kind) -> &'static str {
-    match kind {
-        Kind::Web => "W",
-        Kind::Rib => "R",
-        Kind::Flange => "F",
-        Kind::Wall => "L",
-        Kind::Hole => "H",
-        Kind::Cutout => "C",
-        Kind::Notch => "N",
-        Kind::Chamfer => "CH",
-        Kind::Fillet => "FL",
     }
 }

@@ -4,8 +4,8 @@
 
 use crate::walls::Wall;
 use std::collections::HashMap;
+use thinwall_analysis::PartAnalysis;
 use thinwall_brep::{FaceId, Part};
-use thinwall_geom::Surface;
 use thinwall_graph::{AdjacencyGraph, Convexity};
 
 /// One wall meeting another.
@@ -25,13 +25,14 @@ pub struct Junction {
 /// Faces reached from `f` across concave edges, directly or through one
 /// concave blend face (a fillet between them), with the length of the
 /// edge on `f`'s side.
-fn concave_reach(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> Vec<(FaceId, f64)> {
+fn concave_reach(a: &PartAnalysis, f: FaceId) -> Vec<(FaceId, f64)> {
+    let (part, graph) = (a.part(), a.graph());
     let mut out = Vec::new();
     for (g, adj) in graph.neighbours(f) {
         let len = edges_length(part, graph, &adj.edges);
         match adj.convexity {
             Convexity::Concave => out.push((g, len)),
-            Convexity::Smooth if is_concave_blend(part, g) => {
+            Convexity::Smooth if a.is_concave_blend(g) => {
                 for (h, adj2) in graph.neighbours(g) {
                     if h != f && matches!(adj2.convexity, Convexity::Smooth | Convexity::Concave) {
                         out.push((h, len));
@@ -42,15 +43,6 @@ fn concave_reach(part: &Part, graph: &AdjacencyGraph, f: FaceId) -> Vec<(FaceId,
         }
     }
     out
-}
-
-/// A cylinder or torus face whose outward normal points towards its axis.
-pub fn is_concave_blend(part: &Part, f: FaceId) -> bool {
-    let face = part.face(f);
-    matches!(
-        face.surface,
-        Surface::Cylinder { .. } | Surface::Torus { .. }
-    ) && !face.same_sense
 }
 
 fn edges_length(part: &Part, graph: &AdjacencyGraph, edges: &[usize]) -> f64 {
@@ -75,7 +67,7 @@ fn edges_length(part: &Part, graph: &AdjacencyGraph, edges: &[usize]) -> f64 {
 
 /// All junctions between walls; an L-junction is listed both ways (see
 /// [`resolve_l_junctions`]).
-pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Vec<Junction> {
+pub fn find_junctions(a: &PartAnalysis, walls: &[Wall]) -> Vec<Junction> {
     // face -> (wall, side)
     let mut side_of: HashMap<FaceId, (usize, usize)> = HashMap::new();
     for (w, wall) in walls.iter().enumerate() {
@@ -90,7 +82,7 @@ pub fn find_junctions(part: &Part, graph: &AdjacencyGraph, walls: &[Wall]) -> Ve
     for (w, wall) in walls.iter().enumerate() {
         for s in 0..2 {
             for &f in &wall.sides[s] {
-                for (g, len) in concave_reach(part, graph, f) {
+                for (g, len) in concave_reach(a, f) {
                     if let Some(&(v, t)) = side_of.get(&g) {
                         if v != w {
                             links.entry((w, v)).or_insert([[0.0; 2]; 2])[s][t] += len;

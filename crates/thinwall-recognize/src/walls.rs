@@ -9,10 +9,11 @@
 //! it is thick (a rib seen from below is a strip, not a wall).
 
 use crate::config::Config;
-use crate::planar::{intersect, narrow_width, PlanarFace};
 use geo::{Area, BooleanOps, BoundingRect, MultiPolygon};
 use std::collections::HashMap;
-use thinwall_brep::{FaceId, Part};
+use thinwall_analysis::polygon::{intersect, narrow_width};
+use thinwall_analysis::{PartAnalysis, PlanarFace};
+use thinwall_brep::FaceId;
 use thinwall_geom::{Frame, Point3, Vector3};
 
 /// A wall before it is classified.
@@ -57,13 +58,25 @@ impl Wall {
         )
     }
 
+    /// A point on side `s`'s plane and that side's outward normal.
+    pub fn side_plane(&self, s: usize) -> (Point3, Vector3) {
+        if s == 0 {
+            (self.frame.origin, self.normals[0])
+        } else {
+            (
+                self.frame.origin - self.frame.z * self.thickness,
+                self.normals[1],
+            )
+        }
+    }
+
     pub fn contains_side_face(&self, f: FaceId) -> Option<usize> {
         (0..2).find(|&s| self.sides[s].contains(&f))
     }
 }
 
 /// Planes shared by coplanar faces: `plane_of[face]` for planar faces.
-fn plane_ids(faces: &[PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
+fn plane_ids(faces: &[&PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
     let mut ids = vec![usize::MAX; faces.len()];
     let mut planes: Vec<(Vector3, f64)> = Vec::new();
     // Bucket by rounded normal to keep this near-linear.
@@ -101,153 +114,36 @@ fn plane_ids(faces: &[PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
     ids
 }
 
-/// Find the walls of a part, with its tolerances (`Part::tolerances`, which
-/// costs a pass over the part's edges: callers usually have them already).
-pub fn find_walls(part: &Part, config: &Config, tol: &thinwall_geom::Tolerances) -> Vec<Wall> {
-    let lin = (tol.linear * 100.0).max(1e-4);
-    let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
-    let faces: Vec<PlanarFace> = part
-        .face_ids()
-        .filter_map(|f| PlanarFace::new(part, f))
-        .collect();
-    let plane_of = plane_ids(&faces, lin, cos_tol);
-    let n_planes = plane_of.iter().copied().max().map_or(0, |m| m + 1);
-    let mut members: Vec<Vec<usize>> = vec![Vec::new(); n_planes];
-    for (i, &p) in plane_of.iter().enumerate() {
-        members[p].push(i);
-    }
-    // Per plane: its normal and a point (of its first face).
-    let plane_normal: Vec<Vector3> = members.iter().map(|m| faces[m[0]].normal()).collect();
-    let plane_point: Vec<Point3> = members.iter().map(|m| faces[m[0]].frame.origin).collect();
-    let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
-    let own_area: Vec<f64> = own.iter().map(|p| p.unsigned_area()).collect();
-    let boxes: Vec<thinwall_geom::BoundingBox> = faces
-        .iter()
-        .map(|f| {
-            let mut b = thinwall_geom::BoundingBox::empty();
-            f.loops.outer.iter().flatten().for_each(|p| b.add_point(p));
-            b
-        })
-        .collect();
-    let min_area = (lin * lin * 100.0).max(1e-6);
-    struct Group {
-        faces: [Vec<FaceId>; 2],
-        frame: Frame,
-        normals: [Vector3; 2],
-        thickness: f64,
-        parts: Vec<geo::Polygon<f64>>,
-    }
+/// Per planar face and per plane, what pairing needs, prepared once.
+struct Pairing<'p> {
+    faces: Vec<&'p PlanarFace>,
+    plane_of: Vec<usize>,
+    members: Vec<Vec<usize>>,
+    plane_normal: Vec<Vector3>,
+    plane_point: Vec<Point3>,
+    own: Vec<MultiPolygon<f64>>,
+    own_area: Vec<f64>,
+    boxes: Vec<thinwall_geom::BoundingBox>,
+    lin: f64,
+    cos_tol: f64,
+    min_area: f64,
+}
+
+/// Two opposed side planes bounding a slab, while their faces are collected.
+struct Group {
+    faces: [Vec<FaceId>; 2],
+    frame: Frame,
+    normals: [Vector3; 2],
+    thickness: f64,
+    parts: Vec<geo::Polygon<f64>>,
+}
+
+/// Find the walls of a part.
+pub fn find_walls(a: &PartAnalysis, config: &Config) -> Vec<Wall> {
+    let p = Pairing::new(a, config);
     let mut groups: HashMap<(usize, usize), Group> = HashMap::new();
-    for (i, f) in faces.iter().enumerate() {
-        let n = f.normal();
-        // Opposed planes behind F, nearest first.
-        let mut behind: Vec<(f64, usize)> = (0..n_planes)
-            .filter(|&p| plane_normal[p].dot(&n) < -cos_tol)
-            .map(|p| ((f.frame.origin - plane_point[p]).dot(&n), p))
-            .filter(|(d, _)| *d > lin)
-            .collect();
-        behind.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
-        let mut covered_area = 0.0;
-        for (d, p) in behind {
-            if covered_area >= own_area[i] - min_area {
-                break; // F is bounded everywhere by nearer faces
-            }
-            let overlapping: Vec<usize> = members[p]
-                .iter()
-                .copied()
-                .filter(|&j| boxes_overlap_across(&boxes[i], &boxes[j], &n))
-                .collect();
-            if overlapping.is_empty() {
-                continue;
-            }
-            let projected = MultiPolygon::new(
-                overlapping
-                    .iter()
-                    .flat_map(|&j| faces[j].polygon_in(&f.frame).0)
-                    .collect(),
-            );
-            let region = intersect(&own[i], &projected);
-            let region_area = region.unsigned_area();
-            if region_area <= min_area {
-                continue;
-            }
-            let fresh = if covered.0.is_empty() {
-                region.clone()
-            } else {
-                region.difference(&covered)
-            };
-            covered = if covered.0.is_empty() {
-                region
-            } else {
-                covered.union(&region)
-            };
-            covered_area = covered.unsigned_area();
-            if fresh.unsigned_area() <= min_area {
-                continue;
-            }
-            // The faces of plane p that bound the fresh part.
-            // (Tested against the fresh components near each face only:
-            // a plane may hold thousands of faces.)
-            let components: Vec<(geo::Rect<f64>, &geo::Polygon<f64>)> = fresh
-                .0
-                .iter()
-                .filter_map(|c| c.bounding_rect().map(|r| (r, c)))
-                .collect();
-            let partners: Vec<usize> = overlapping
-                .into_iter()
-                .filter(|&j| {
-                    let proj = faces[j].polygon_in(&f.frame);
-                    let Some(pr) = proj.bounding_rect() else {
-                        return false;
-                    };
-                    let near: Vec<geo::Polygon<f64>> = components
-                        .iter()
-                        .filter(|(r, _)| rects_overlap(r, &pr))
-                        .map(|(_, c)| (*c).clone())
-                        .collect();
-                    !near.is_empty()
-                        && intersect(&MultiPolygon::new(near), &proj).unsigned_area() > min_area
-                })
-                .collect();
-            if partners.is_empty() {
-                continue;
-            }
-            let pa = plane_of[i];
-            let (key, f_is_side0) = if pa < p {
-                ((pa, p), true)
-            } else {
-                ((p, pa), false)
-            };
-            let g = groups.entry(key).or_insert_with(|| {
-                let (s0, s1) = if f_is_side0 {
-                    (i, partners[0])
-                } else {
-                    (partners[0], i)
-                };
-                Group {
-                    faces: [Vec::new(), Vec::new()],
-                    frame: faces[s0].frame,
-                    normals: [faces[s0].normal(), faces[s1].normal()],
-                    thickness: d,
-                    parts: Vec::new(),
-                }
-            });
-            let (mine, theirs) = if f_is_side0 { (0, 1) } else { (1, 0) };
-            if !g.faces[mine].contains(&f.face) {
-                g.faces[mine].push(f.face);
-            }
-            for j in partners {
-                if !g.faces[theirs].contains(&faces[j].face) {
-                    g.faces[theirs].push(faces[j].face);
-                }
-            }
-            // Regions are collected from side 0's faces only: they are
-            // disjoint, so the group's region is their plain collection.
-            if f_is_side0 {
-                g.parts.extend(reproject(&fresh, &f.frame, &g.frame).0);
-            }
-        }
+    for i in 0..p.faces.len() {
+        p.pair_face(i, &mut groups);
     }
     let mut keys: Vec<_> = groups.keys().copied().collect();
     keys.sort();
@@ -272,6 +168,182 @@ pub fn find_walls(part: &Part, config: &Config, tol: &thinwall_geom::Tolerances)
         });
     }
     walls
+}
+
+impl<'p> Pairing<'p> {
+    fn new(a: &'p PartAnalysis, config: &Config) -> Self {
+        let lin = a.tol().coplanar;
+        let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
+        let faces: Vec<&PlanarFace> = a.planar_faces().collect();
+        let plane_of = plane_ids(&faces, lin, cos_tol);
+        let n_planes = plane_of.iter().copied().max().map_or(0, |m| m + 1);
+        let mut members: Vec<Vec<usize>> = vec![Vec::new(); n_planes];
+        for (i, &p) in plane_of.iter().enumerate() {
+            members[p].push(i);
+        }
+        // Per plane: its normal and a point (of its first face).
+        let plane_normal = members.iter().map(|m| faces[m[0]].normal()).collect();
+        let plane_point = members.iter().map(|m| faces[m[0]].frame.origin).collect();
+        let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
+        let own_area = own.iter().map(|p| p.unsigned_area()).collect();
+        let boxes = faces
+            .iter()
+            .map(|f| {
+                let mut b = thinwall_geom::BoundingBox::empty();
+                f.loops.outer.iter().flatten().for_each(|p| b.add_point(p));
+                b
+            })
+            .collect();
+        Self {
+            faces,
+            plane_of,
+            members,
+            plane_normal,
+            plane_point,
+            own,
+            own_area,
+            boxes,
+            lin,
+            cos_tol,
+            min_area: a.tol().min_overlap_area,
+        }
+    }
+
+    /// Pair face `i` with the opposed planes behind it, nearest first, until
+    /// it is bounded everywhere; record each pairing in its group.
+    fn pair_face(&self, i: usize, groups: &mut HashMap<(usize, usize), Group>) {
+        let f = self.faces[i];
+        let n = f.normal();
+        let mut behind: Vec<(f64, usize)> = (0..self.members.len())
+            .filter(|&p| self.plane_normal[p].dot(&n) < -self.cos_tol)
+            .map(|p| ((f.frame.origin - self.plane_point[p]).dot(&n), p))
+            .filter(|(d, _)| *d > self.lin)
+            .collect();
+        behind.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
+        let mut covered_area = 0.0;
+        for (d, p) in behind {
+            if covered_area >= self.own_area[i] - self.min_area {
+                break; // F is bounded everywhere by nearer faces
+            }
+            let overlapping: Vec<usize> = self.members[p]
+                .iter()
+                .copied()
+                .filter(|&j| boxes_overlap_across(&self.boxes[i], &self.boxes[j], &n))
+                .collect();
+            if overlapping.is_empty() {
+                continue;
+            }
+            let projected = MultiPolygon::new(
+                overlapping
+                    .iter()
+                    .flat_map(|&j| self.faces[j].polygon_in(&f.frame).0)
+                    .collect(),
+            );
+            let region = intersect(&self.own[i], &projected);
+            if region.unsigned_area() <= self.min_area {
+                continue;
+            }
+            let fresh = if covered.0.is_empty() {
+                region.clone()
+            } else {
+                region.difference(&covered)
+            };
+            covered = if covered.0.is_empty() {
+                region
+            } else {
+                covered.union(&region)
+            };
+            covered_area = covered.unsigned_area();
+            if fresh.unsigned_area() <= self.min_area {
+                continue;
+            }
+            let partners = self.partners(f, overlapping, &fresh);
+            if !partners.is_empty() {
+                self.record(i, p, d, &partners, &fresh, groups);
+            }
+        }
+    }
+
+    /// The faces among `overlapping` that bound the fresh part of F (tested
+    /// against the fresh components near each face only: a plane may hold
+    /// thousands of faces).
+    fn partners(
+        &self,
+        f: &PlanarFace,
+        overlapping: Vec<usize>,
+        fresh: &MultiPolygon<f64>,
+    ) -> Vec<usize> {
+        let components: Vec<(geo::Rect<f64>, &geo::Polygon<f64>)> = fresh
+            .0
+            .iter()
+            .filter_map(|c| c.bounding_rect().map(|r| (r, c)))
+            .collect();
+        overlapping
+            .into_iter()
+            .filter(|&j| {
+                let proj = self.faces[j].polygon_in(&f.frame);
+                let Some(pr) = proj.bounding_rect() else {
+                    return false;
+                };
+                let near: Vec<geo::Polygon<f64>> = components
+                    .iter()
+                    .filter(|(r, _)| rects_overlap(r, &pr))
+                    .map(|(_, c)| (*c).clone())
+                    .collect();
+                !near.is_empty()
+                    && intersect(&MultiPolygon::new(near), &proj).unsigned_area() > self.min_area
+            })
+            .collect()
+    }
+
+    /// Add face `i` (on plane pair with `p`, `d` apart) and its partners to
+    /// their group.
+    fn record(
+        &self,
+        i: usize,
+        p: usize,
+        d: f64,
+        partners: &[usize],
+        fresh: &MultiPolygon<f64>,
+        groups: &mut HashMap<(usize, usize), Group>,
+    ) {
+        let f = self.faces[i];
+        let pa = self.plane_of[i];
+        let (key, f_is_side0) = if pa < p {
+            ((pa, p), true)
+        } else {
+            ((p, pa), false)
+        };
+        let g = groups.entry(key).or_insert_with(|| {
+            let (s0, s1) = if f_is_side0 {
+                (i, partners[0])
+            } else {
+                (partners[0], i)
+            };
+            Group {
+                faces: [Vec::new(), Vec::new()],
+                frame: self.faces[s0].frame,
+                normals: [self.faces[s0].normal(), self.faces[s1].normal()],
+                thickness: d,
+                parts: Vec::new(),
+            }
+        });
+        let (mine, theirs) = if f_is_side0 { (0, 1) } else { (1, 0) };
+        if !g.faces[mine].contains(&f.face) {
+            g.faces[mine].push(f.face);
+        }
+        for &j in partners {
+            if !g.faces[theirs].contains(&self.faces[j].face) {
+                g.faces[theirs].push(self.faces[j].face);
+            }
+        }
+        // Regions are collected from side 0's faces only: they are
+        // disjoint, so the group's region is their plain collection.
+        if f_is_side0 {
+            g.parts.extend(reproject(fresh, &f.frame, &g.frame).0);
+        }
+    }
 }
 
 fn rects_overlap(a: &geo::Rect<f64>, b: &geo::Rect<f64>) -> bool {
@@ -322,34 +394,4 @@ fn reproject(region: &MultiPolygon<f64>, from: &Frame, to: &Frame) -> MultiPolyg
         let l = to.to_local(&p);
         geo::Coord { x: l.x, y: l.y }
     })
-}
-
-/// The extent of a region's outline along a 3D direction.
-pub fn extent_along(points: &[Point3], dir: &Vector3) -> f64 {
-    let (lo, hi) = points
-        .iter()
-        .map(|p| p.coords.dot(dir))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |m, x| {
-            (m.0.min(x), m.1.max(x))
-        });
-    if lo.is_finite() {
-        hi - lo
-    } else {
-        0.0
-    }
-}
-
-/// Longest side of the region's minimum rotated rectangle.
-pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
-    use geo::MinimumRotatedRect;
-    region
-        .minimum_rotated_rect()
-        .map(|r| {
-            let c: Vec<geo::Coord<f64>> = r.exterior().coords().copied().collect();
-            let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
-            let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
-            a.max(b)
-        })
-        .or_else(|| region.bounding_rect().map(|r| r.width().max(r.height())))
-        .unwrap_or(0.0)
 }

@@ -1,6 +1,6 @@
-//! Report contracts: plain serde structs built from a part and its graph,
-//! plus a text rendering a person can scan. The CLI and the C ABI are thin
-//! faces over these.
+//! Report contracts: plain serde structs built from a pipeline outcome (or
+//! a part and its graph, for `inspect`), plus a text rendering a person can
+//! scan. Nothing here runs a recognizer: `thinwall-pipeline` does.
 
 pub mod classify;
 pub mod inspect;
@@ -8,4 +8,4 @@ pub mod recognize;
 
 pub use classify::ClassificationReport;
 pub use inspect::{inspect, InspectReport};
-pub use recognize::{recognition_report, run_recognition, FeatureEntry, RecognitionReport};
+pub use recognize::{recognition_report, FeatureEntry, RecognitionReport};

@@ -3,10 +3,11 @@
 
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
-use thinwall_brep::{compute_face_props, Part, Units};
-use thinwall_connect::{Connection, Setup, SideAccess, Structure};
+use thinwall_brep::{Part, Units};
+use thinwall_connect::{Connection, Setup, SideAccess};
 use thinwall_geom::BoundingBox;
-use thinwall_recognize::{Recognition, StiffnessFeature};
+use thinwall_pipeline::Outcome;
+use thinwall_recognize::{StiffnessFeature, StiffnessKind};
 
 /// Version tag of the JSON layout.
 pub const RECOGNITION_SCHEMA: &str = "thinwall/recognition/1";
@@ -58,15 +59,8 @@ pub struct RecognitionReport {
     pub machining_features: Vec<thinwall_machining::MachiningFeature>,
 }
 
-/// Build the report.
-pub fn recognition_report(
-    file: &str,
-    part: &Part,
-    setup: &Setup,
-    r: &Recognition,
-    structure: &Structure,
-    props: &[thinwall_brep::FaceProps],
-) -> RecognitionReport {
+/// Build the report of a pipeline run on `part` (read from `file`).
+pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> RecognitionReport {
     let faces = part
         .face_ids()
         .map(|f| {
@@ -75,7 +69,7 @@ pub fn recognition_report(
                 step_id: face.step_id,
                 name: face.name.clone(),
                 surface: face.surface.kind_name().to_string(),
-                area: props[f.index()].area,
+                area: out.face_props[f.index()].area,
             }
         })
         .collect();
@@ -88,19 +82,20 @@ pub fn recognition_report(
             faces: part.faces.len(),
             bounding_box: part.bounding_box(),
         },
-        setup: setup.clone(),
+        setup: out.setup.clone(),
         faces,
-        stiffness_features: r
+        stiffness_features: out
+            .recognition
             .features
             .iter()
             .map(|f| FeatureEntry {
                 feature: f.clone(),
-                access: structure.access.get(&f.id).cloned(),
+                access: out.structure.access.get(&f.id).cloned(),
             })
             .collect(),
-        connections: structure.connections.clone(),
-        notes: structure.notes.clone(),
-        machining_features: Vec::new(),
+        connections: out.structure.connections.clone(),
+        notes: out.structure.notes.clone(),
+        machining_features: out.machining.clone(),
     }
 }
 
@@ -130,7 +125,7 @@ impl RecognitionReport {
             "id", "kind", "thin", "t mm", "h mm", "L mm", "defl. mm", "h/t", "faces"
         );
         let mut sorted = walls.clone();
-        sorted.sort_by_key(|f| (f.thin != Some(true), f.kind, f.id.clone()));
+        sorted.sort_by_key(|f| (f.thin != Some(true), f.kind, f.id.to_string()));
         for f in sorted {
             let _ = writeln!(
                 s,
@@ -144,7 +139,7 @@ impl RecognitionReport {
                 f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
                 f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
                 f.faces.len(),
-                f.base.clone().unwrap_or_default()
+                f.base.map(|b| b.to_string()).unwrap_or_default()
             );
         }
         let others: Vec<&StiffnessFeature> = feats
@@ -155,7 +150,7 @@ impl RecognitionReport {
         let _ = writeln!(s, "in and on walls: {}", others.len());
         for f in others {
             let size = match f.kind {
-                thinwall_recognize::Kind::Hole => format!(
+                StiffnessKind::Hole => format!(
                     "Ø{} h {}{}{}",
                     mm(f.diameter),
                     mm(f.height),
@@ -166,7 +161,7 @@ impl RecognitionReport {
                         ""
                     }
                 ),
-                thinwall_recognize::Kind::Fillet => format!(
+                StiffnessKind::Fillet => format!(
                     "r {}{}",
                     mm(f.radius),
                     if f.convex == Some(true) {
@@ -184,7 +179,7 @@ impl RecognitionReport {
                 f.kind.name(),
                 size,
                 f.faces.len(),
-                f.wall.clone().unwrap_or_else(|| "-".into())
+                f.wall.map_or_else(|| "-".into(), |w| w.to_string())
             );
         }
         s.push_str(&self.structure_text());
@@ -219,32 +214,33 @@ impl RecognitionReport {
         if self.connections.is_empty() {
             return s;
         }
-        let mut children: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+        // Ids as written, so the tree is ordered as the ids read.
+        let mut children: BTreeMap<String, Vec<String>> = BTreeMap::new();
         let mut has_base = BTreeSet::new();
         let mut crossings = Vec::new();
         for c in &self.connections {
             match c {
                 Connection::BaseLeaf { base, leaf } => {
                     children
-                        .entry(base.as_str())
+                        .entry(base.to_string())
                         .or_default()
-                        .push(leaf.as_str());
-                    has_base.insert(leaf.as_str());
+                        .push(leaf.to_string());
+                    has_base.insert(leaf.to_string());
                 }
                 Connection::Crossing { features } => crossings.push(features),
             }
         }
-        let kinds: BTreeMap<&str, &'static str> = self
+        let kinds: BTreeMap<String, &'static str> = self
             .stiffness_features
             .iter()
-            .map(|e| (e.feature.id.as_str(), e.feature.kind.name()))
+            .map(|e| (e.feature.id.to_string(), e.feature.kind.name()))
             .collect();
         fn walk(
             s: &mut String,
             id: &str,
             depth: usize,
-            children: &BTreeMap<&str, Vec<&str>>,
-            kinds: &BTreeMap<&str, &'static str>,
+            children: &BTreeMap<String, Vec<String>>,
+            kinds: &BTreeMap<String, &'static str>,
         ) {
             let _ = writeln!(
                 s,
@@ -289,33 +285,6 @@ impl RecognitionReport {
         }
         s
     }
-}
-
-/// Everything `recognize` does after reading: graph, recognition,
-/// connections (validated), report. Shared by the CLI and the C ABI so both
-/// give the same answer.
-pub fn run_recognition(
-    file: &str,
-    part: &Part,
-    graph: &thinwall_graph::AdjacencyGraph,
-    config: &thinwall_recognize::Config,
-    setup: &Setup,
-    options: &thinwall_connect::Options,
-) -> Result<RecognitionReport, String> {
-    config.validate().map_err(|e| e.to_string())?;
-    let r = thinwall_recognize::recognize(part, graph, config);
-    let structure = thinwall_connect::connect(&r, setup, options);
-    structure
-        .validate()
-        .map_err(|e| format!("internal error: invalid connection structure: {e}"))?;
-    // Face properties once, for the face list and the machining features.
-    let props: Vec<thinwall_brep::FaceProps> = part
-        .face_ids()
-        .map(|f| compute_face_props(part, f))
-        .collect();
-    let mut report = recognition_report(file, part, setup, &r, &structure, &props);
-    report.machining_features = thinwall_machining::recognize_with_props(part, graph, &props);
-    Ok(report)
 }
 
 impl RecognitionReport {

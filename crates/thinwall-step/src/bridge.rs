@@ -20,8 +20,13 @@ use thinwall_geom::{CurveKind, Frame, NurbsCurve, NurbsSurface, Point3, Surface,
 
 type Matrix = [[f64; 4]; 4];
 
-/// Deepest assembly nesting followed (guards against cyclic product structures).
+/// Deepest assembly nesting followed.
 const MAX_ASSEMBLY_DEPTH: usize = 32;
+/// Deepest nesting of surface curves followed to their 3D curve.
+const MAX_CURVE_NESTING: usize = 16;
+/// Most definition instances an assembly walk places (a definition used
+/// twice at each of 32 levels would otherwise place 2³² of them).
+const MAX_INSTANCES: usize = 100_000;
 
 /// Read `bytes` (named `file` in messages) into a part.
 pub fn read(bytes: &[u8], file: &str) -> Result<(Part, ReadReport), StepError> {
@@ -206,6 +211,14 @@ struct Builder<'s, 'm> {
     placed: HashSet<(EntityKey, [u64; 12])>,
 }
 
+/// The state of an assembly walk: the definitions above the current one,
+/// and how many instances have been placed.
+#[derive(Default)]
+struct Walk {
+    ancestors: Vec<EntityKey>,
+    instances: usize,
+}
+
 fn matrix_key(m: &Matrix) -> [u64; 12] {
     let mut k = [0u64; 12];
     for (i, row) in m.iter().take(3).enumerate() {
@@ -278,8 +291,9 @@ impl<'s, 'm> Builder<'s, 'm> {
     /// or surface model it does not reach, in place.
     fn collect_bodies(&mut self) -> Result<(), StepError> {
         let roots: Vec<_> = self.scene.root_definitions().collect();
+        let mut walk = Walk::default();
         for def in roots {
-            self.visit_definition(def, IDENTITY, def.id().to_string(), 0)?;
+            self.visit_definition(def, IDENTITY, def.id().to_string(), &mut walk)?;
         }
         let mapped: Vec<_> = self.scene.all_mapped_instances().collect();
         for mi in mapped {
@@ -313,13 +327,30 @@ impl<'s, 'm> Builder<'s, 'm> {
         Ok(())
     }
 
+    /// Place a definition's solids and walk its occurrences, refusing a
+    /// definition that contains itself and a walk that places too many.
     fn visit_definition(
         &mut self,
         def: step_io::scene::ProductDef<'s>,
         matrix: Matrix,
         path: String,
-        depth: usize,
+        walk: &mut Walk,
     ) -> Result<(), StepError> {
+        let depth = walk.ancestors.len();
+        if walk.ancestors.contains(&def.key()) {
+            return Err(StepError::CyclicAssembly {
+                file: self.file.to_string(),
+                definition: def.id().to_string(),
+                path,
+            });
+        }
+        walk.instances += 1;
+        if walk.instances > MAX_INSTANCES {
+            return Err(StepError::TooManyInstances {
+                file: self.file.to_string(),
+                limit: MAX_INSTANCES,
+            });
+        }
         if depth > MAX_ASSEMBLY_DEPTH {
             self.issue(
                 None,
@@ -334,6 +365,7 @@ impl<'s, 'm> Builder<'s, 'm> {
         for sm in def.surface_models() {
             self.add_surface_model(sm, matrix, placement.clone());
         }
+        walk.ancestors.push(def.key());
         for occ in def.occurrences() {
             let Some(child) = occ.definition() else {
                 continue;
@@ -352,8 +384,9 @@ impl<'s, 'm> Builder<'s, 'm> {
                 }
             };
             let child_path = format!("{path}/{}", child.id());
-            self.visit_definition(child, compose(&matrix, &local), child_path, depth + 1)?;
+            self.visit_definition(child, compose(&matrix, &local), child_path, walk)?;
         }
+        walk.ancestors.pop();
         Ok(())
     }
 
@@ -548,7 +581,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             c.map_points(|p| place.point(&[p.x, p.y, p.z]).unwrap_or(p));
             Some(c)
         });
-        let curve = self.curve_kind(edge.curve(), place);
+        let curve = self.curve_kind(edge.curve(), place, 0);
         // step-io returns a closed edge (start = end vertex) as its whole
         // curve in the curve's own direction, even when the edge runs
         // against it.
@@ -644,14 +677,27 @@ impl<'s, 'm> Builder<'s, 'm> {
         NurbsCurve::ellipse_arc(frame, a, b, t0, sweep)
     }
 
-    fn curve_kind(&self, curve: step_io::scene::Curve<'s>, place: &Place) -> CurveKind {
+    /// The analytic description of an edge curve; surface curves are
+    /// followed to their 3D curve at most `MAX_CURVE_NESTING` deep (a file
+    /// may nest them, or make one refer to itself).
+    fn curve_kind(
+        &self,
+        curve: step_io::scene::Curve<'s>,
+        place: &Place,
+        depth: usize,
+    ) -> CurveKind {
+        if depth > MAX_CURVE_NESTING {
+            return CurveKind::Other {
+                keyword: format!("SURFACE_CURVE nested deeper than {MAX_CURVE_NESTING}"),
+            };
+        }
         let kind = curve.kind();
         match kind {
             SCurve::SurfaceCurve(_)
             | SCurve::SeamCurve(_)
             | SCurve::BoundedSurfaceCurve(_)
             | SCurve::IntersectionCurve(_) => match curve.curve_3d() {
-                Some(c3) => self.curve_kind(c3, place),
+                Some(c3) => self.curve_kind(c3, place, depth + 1),
                 None => CurveKind::Other {
                     keyword: "SURFACE_CURVE".into(),
                 },

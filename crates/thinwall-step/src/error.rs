@@ -5,6 +5,7 @@ use thiserror::Error;
 
 /// Why a STEP file could not be read into a part.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum StepError {
     #[error("{file}: cannot read file: {source}")]
     Io {
@@ -29,6 +30,14 @@ pub enum StepError {
         expected: usize,
         found: usize,
     },
+    #[error("{file}: the assembly is cyclic: product definition '{definition}' contains itself (path {path})")]
+    CyclicAssembly {
+        file: String,
+        definition: String,
+        path: String,
+    },
+    #[error("{file}: the assembly places more than {limit} instances")]
+    TooManyInstances { file: String, limit: usize },
     #[error("{file}: internal error while reading: {message}")]
     Internal { file: String, message: String },
 }
@@ -42,6 +51,8 @@ impl StepError {
             StepError::NoBrep { .. } => "no_brep",
             StepError::OpenShell { .. } => "open_shell",
             StepError::IdMismatch { .. } => "id_mismatch",
+            StepError::CyclicAssembly { .. } => "cyclic_assembly",
+            StepError::TooManyInstances { .. } => "too_many_instances",
             StepError::Internal { .. } => "internal",
         }
     }

@@ -2,7 +2,28 @@
 //! machine class, and the part's placement on the table.
 
 use serde::{Deserialize, Serialize};
+use thiserror::Error;
 use thinwall_geom::Vector3;
+
+/// A set-up that cannot be used.
+#[derive(Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum SetupError {
+    #[error("up direction {0:?} has no length")]
+    ZeroUp([f64; 3]),
+    #[error("tilt limit must be within 0..90 degrees, got {0}")]
+    TiltLimit(f64),
+}
+
+impl SetupError {
+    /// A stable machine-readable code for the error kind.
+    pub fn code(&self) -> &'static str {
+        match self {
+            SetupError::ZeroUp(_) => "zero_up",
+            SetupError::TiltLimit(_) => "tilt_limit",
+        }
+    }
+}
 
 /// What the machine can do with its tool axis.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -35,6 +56,36 @@ impl Default for Setup {
 }
 
 impl Setup {
+    /// A set-up with `up` (any length but zero, stored unit) on `machine`,
+    /// with no placement.
+    pub fn new(up: [f64; 3], machine: Machine) -> Result<Self, SetupError> {
+        let s = Self {
+            up,
+            machine,
+            placement: None,
+        };
+        s.validate()?;
+        let u = Vector3::new(up[0], up[1], up[2]).normalize();
+        Ok(Self {
+            up: [u.x, u.y, u.z],
+            ..s
+        })
+    }
+
+    /// Reject a zero or non-finite up and a tilt limit outside 0..90°.
+    pub fn validate(&self) -> Result<(), SetupError> {
+        let n = Vector3::new(self.up[0], self.up[1], self.up[2]).norm();
+        if !(n.is_finite() && n > 1e-9) {
+            return Err(SetupError::ZeroUp(self.up));
+        }
+        if let Machine::FiveAxis { tilt_limit_deg } = self.machine {
+            if !(tilt_limit_deg.is_finite() && (0.0..=90.0).contains(&tilt_limit_deg)) {
+                return Err(SetupError::TiltLimit(tilt_limit_deg));
+            }
+        }
+        Ok(())
+    }
+
     /// Up expressed in the part's own coordinates (the placement's rotation
     /// undone), unit length.
     pub fn up_in_part(&self) -> Vector3 {
@@ -73,5 +124,15 @@ mod tests {
         let u = s.up_in_part();
         assert!((u - Vector3::x()).norm() < 1e-12, "{u}");
         assert!((Setup::default().up_in_part() - Vector3::z()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn new_normalizes_and_rejects_nonsense() {
+        let s = Setup::new([0.0, 0.0, 2.0], Machine::ThreeAxis).unwrap();
+        assert_eq!(s.up, [0.0, 0.0, 1.0]);
+        let e = Setup::new([0.0, 0.0, 0.0], Machine::ThreeAxis).unwrap_err();
+        assert_eq!(e.code(), "zero_up");
+        let e = Setup::new([0.0, 0.0, 1.0], Machine::FiveAxis { tilt_limit_deg: 95.0 });
+        assert_eq!(e.unwrap_err().code(), "tilt_limit");
     }
 }

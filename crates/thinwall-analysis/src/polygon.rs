@@ -1,5 +1,7 @@
 //! Planar faces as polygons: their loops sampled into 3D polylines, and
-//! projected into the 2D frame of any plane for overlap tests (geo).
+//! projected into the 2D frame of any plane for overlap tests (geo); and the
+//! measures of 2-D regions every recognizer shares (minimum rectangle,
+//! narrow width, inscribed circle).
 
 use geo::{Area, BooleanOps, Coord, LineString, MultiPolygon, Orient, Polygon};
 use thinwall_brep::{FaceId, Part};
@@ -180,7 +182,7 @@ pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
 /// short side and `4·area/perimeter` (which is small for thin strips and
 /// crosses whose rectangle is wide).
 pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
-    use geo::{Euclidean, Length, MinimumRotatedRect};
+    use geo::{Euclidean, Length};
     let area = region.unsigned_area();
     if area <= 0.0 {
         return 0.0;
@@ -201,16 +203,31 @@ pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
     } else {
         0.0
     };
-    let rect = region
-        .minimum_rotated_rect()
-        .map(|r| {
-            let c: Vec<Coord<f64>> = r.exterior().coords().copied().collect();
-            let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
-            let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
-            a.min(b)
-        })
-        .unwrap_or(0.0);
+    let rect = min_rect_sides(region).map_or(0.0, |(_, short)| short);
     strip.min(rect)
+}
+
+/// Long and short side of the minimum-area rectangle around `shape`, mm.
+pub fn min_rect_sides<G>(shape: &G) -> Option<(f64, f64)>
+where
+    G: geo::MinimumRotatedRect<f64, Scalar = f64>,
+{
+    shape.minimum_rotated_rect().map(|r| {
+        let c: Vec<Coord<f64>> = r.exterior().coords().copied().collect();
+        let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
+        let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
+        (a.max(b), a.min(b))
+    })
+}
+
+/// Longest side of the region's minimum rotated rectangle (of its bounding
+/// rectangle when it has none), mm.
+pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
+    use geo::BoundingRect;
+    min_rect_sides(region)
+        .map(|(long, _)| long)
+        .or_else(|| region.bounding_rect().map(|r| r.width().max(r.height())))
+        .unwrap_or(0.0)
 }
 
 /// Radius of the largest circle inside `region` (approximate: a grid

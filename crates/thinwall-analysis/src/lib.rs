@@ -1,0 +1,312 @@
+//! One analysis of a part that every recognizer, the classifier and the
+//! planners read: the part and its set-up, the adjacency graph, every face's
+//! properties, the planar faces' polygons, boundary samples, the tolerances
+//! scaled to the part, blend and chamfer candidates, concave cylinders, and
+//! the geometric helpers they share (extents, minimum rectangles, inscribed
+//! circles, components over filtered graph views). Built once; costly pieces
+//! are computed on first use and kept.
+//!
+//! It also holds the one set-up type ([`Setup`]) and the one feature
+//! vocabulary ([`vocabulary`]).
+//!
+//! ```no_run
+//! use thinwall_analysis::{PartAnalysis, Setup};
+//! let (part, _) = thinwall_step::read_file("panel.step").unwrap();
+//! let a = PartAnalysis::new(&part, Setup::default());
+//! for f in part.face_ids() {
+//!     println!("{} mm², planar: {}", a.props(f).area, a.planar(f).is_some());
+//! }
+//! ```
+
+pub mod components;
+pub mod measure;
+pub mod polygon;
+pub mod setup;
+pub mod vocabulary;
+
+pub use polygon::{FaceLoops, PlanarFace};
+pub use setup::{Machine, Setup, SetupError};
+pub use vocabulary::{FeatureId, MachiningId, MachiningKind, Profile, StiffnessKind, VolumeType};
+
+use geo::MultiPolygon;
+use std::borrow::Cow;
+use std::collections::BTreeSet;
+use std::sync::OnceLock;
+use thinwall_brep::{compute_face_props, FaceId, FaceProps, Part};
+use thinwall_geom::{BoundingBox, PartTolerances, Point3, Surface, Vector3};
+use thinwall_graph::{Adjacency, AdjacencyGraph, Convexity};
+
+/// A cylinder face: a point on its axis, the axis, the radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cylinder {
+    pub origin: Point3,
+    pub axis: Vector3,
+    pub radius: f64,
+    /// Its outward normal points away from the axis (a boss, not a hole).
+    pub convex: bool,
+}
+
+impl Cylinder {
+    /// Same axis line (either direction), within `tol` mm.
+    pub fn coaxial(&self, other: &Cylinder, tol: f64) -> bool {
+        let d = other.origin - self.origin;
+        self.axis.dot(&other.axis).abs() > 1.0 - thinwall_geom::tolerance::UNIT_PARALLEL_EPS
+            && (d - self.axis * d.dot(&self.axis)).norm() < tol
+    }
+}
+
+/// The analysis of one part in one set-up.
+pub struct PartAnalysis<'a> {
+    part: &'a Part,
+    graph: Cow<'a, AdjacencyGraph>,
+    setup: Setup,
+    bbox: BoundingBox,
+    tol: PartTolerances,
+    props: OnceLock<Vec<FaceProps>>,
+    boundary: OnceLock<Vec<Vec<Point3>>>,
+    planar: OnceLock<Vec<Option<PlanarFace>>>,
+    smooth_degree: OnceLock<Vec<usize>>,
+}
+
+impl<'a> PartAnalysis<'a> {
+    /// Analyse `part` in `setup`, building its adjacency graph.
+    pub fn new(part: &'a Part, setup: Setup) -> Self {
+        let graph = AdjacencyGraph::build(part, &part.tolerances());
+        Self::from_parts(part, Cow::Owned(graph), setup)
+    }
+
+    /// Analyse `part` with a graph already built for it (a host keeps one
+    /// per loaded part).
+    pub fn with_graph(part: &'a Part, graph: &'a AdjacencyGraph, setup: Setup) -> Self {
+        Self::from_parts(part, Cow::Borrowed(graph), setup)
+    }
+
+    fn from_parts(part: &'a Part, graph: Cow<'a, AdjacencyGraph>, setup: Setup) -> Self {
+        let bbox = part.bounding_box();
+        Self {
+            part,
+            graph,
+            setup,
+            tol: PartTolerances::for_diagonal(bbox.diagonal()),
+            bbox,
+            props: OnceLock::new(),
+            boundary: OnceLock::new(),
+            planar: OnceLock::new(),
+            smooth_degree: OnceLock::new(),
+        }
+    }
+
+    pub fn part(&self) -> &'a Part {
+        self.part
+    }
+
+    pub fn graph(&self) -> &AdjacencyGraph {
+        &self.graph
+    }
+
+    pub fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
+    /// Up in the part's own coordinates (unit).
+    pub fn up(&self) -> Vector3 {
+        self.setup.up_in_part()
+    }
+
+    pub fn bounding_box(&self) -> &BoundingBox {
+        &self.bbox
+    }
+
+    /// The tolerances in force for this part.
+    pub fn tol(&self) -> &PartTolerances {
+        &self.tol
+    }
+
+    /// Every face's properties, by `face.index()` (computed on first use:
+    /// free-form faces are the costly part).
+    pub fn face_props(&self) -> &[FaceProps] {
+        self.props.get_or_init(|| {
+            self.part
+                .face_ids()
+                .map(|f| compute_face_props(self.part, f))
+                .collect()
+        })
+    }
+
+    /// The face properties, computed if they were not yet.
+    pub fn into_face_props(self) -> Vec<FaceProps> {
+        self.face_props();
+        self.props.into_inner().unwrap_or_default()
+    }
+
+    pub fn props(&self, f: FaceId) -> &FaceProps {
+        &self.face_props()[f.index()]
+    }
+
+    /// Sample points on a face's boundary ([`measure::boundary_points`]).
+    pub fn boundary_points(&self, f: FaceId) -> &[Point3] {
+        &self.boundary.get_or_init(|| {
+            self.part
+                .face_ids()
+                .map(|f| measure::boundary_points(self.part, f))
+                .collect()
+        })[f.index()]
+    }
+
+    /// Lowest and highest extent of faces' boundaries along `dir`, mm.
+    pub fn extent(&self, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
+        measure::extent(
+            faces.iter().flat_map(|&f| self.boundary_points(f)),
+            dir,
+        )
+    }
+
+    /// A planar face with its loops, or `None` for a curved face.
+    pub fn planar(&self, f: FaceId) -> Option<&PlanarFace> {
+        self.planar.get_or_init(|| {
+            self.part
+                .face_ids()
+                .map(|f| PlanarFace::new(self.part, f))
+                .collect()
+        })[f.index()]
+            .as_ref()
+    }
+
+    /// Every planar face, in face order.
+    pub fn planar_faces(&self) -> impl Iterator<Item = &PlanarFace> {
+        self.part.face_ids().filter_map(|f| self.planar(f))
+    }
+
+    /// A planar face's polygon in its own plane frame.
+    pub fn polygon(&self, f: FaceId) -> Option<MultiPolygon<f64>> {
+        self.planar(f).map(|p| p.polygon_in(&p.frame))
+    }
+
+    /// Number of distinct faces meeting `f` along smooth (tangent) edges.
+    pub fn smooth_degree(&self, f: FaceId) -> usize {
+        self.smooth_degree.get_or_init(|| {
+            self.part
+                .face_ids()
+                .map(|f| {
+                    self.graph
+                        .neighbours(f)
+                        .filter(|(_, a)| a.convexity == Convexity::Smooth)
+                        .map(|(g, _)| g)
+                        .collect::<BTreeSet<FaceId>>()
+                        .len()
+                })
+                .collect()
+        })[f.index()]
+    }
+
+    /// A face that may be a blend: a cylinder, torus, sphere or free-form
+    /// face tangent to two or more faces.
+    pub fn is_blend_candidate(&self, f: FaceId) -> bool {
+        let curved = matches!(
+            self.part.face(f).surface,
+            Surface::Cylinder { .. }
+                | Surface::Torus { .. }
+                | Surface::Sphere { .. }
+                | Surface::Freeform { .. }
+        );
+        curved && self.smooth_degree(f) >= 2
+    }
+
+    /// The radius a blend face rounds with (cylinder, sphere, torus minor).
+    pub fn blend_radius(&self, f: FaceId) -> Option<f64> {
+        match self.part.face(f).surface {
+            Surface::Cylinder { radius, .. } | Surface::Sphere { radius, .. } => Some(radius),
+            Surface::Torus { minor_radius, .. } => Some(minor_radius),
+            _ => None,
+        }
+    }
+
+    /// A cylinder face, either sense.
+    pub fn cylinder(&self, f: FaceId) -> Option<Cylinder> {
+        let face = self.part.face(f);
+        match face.surface {
+            Surface::Cylinder { frame, radius } => Some(Cylinder {
+                origin: frame.origin,
+                axis: frame.z,
+                radius,
+                convex: face.same_sense,
+            }),
+            _ => None,
+        }
+    }
+
+    /// A concave cylinder (outward normal towards its axis): a hole's wall,
+    /// an inside corner radius.
+    pub fn concave_cylinder(&self, f: FaceId) -> Option<Cylinder> {
+        self.cylinder(f).filter(|c| !c.convex)
+    }
+
+    /// A cylinder or torus whose outward normal points towards its axis (a
+    /// concave blend between walls).
+    pub fn is_concave_blend(&self, f: FaceId) -> bool {
+        let face = self.part.face(f);
+        matches!(
+            face.surface,
+            Surface::Cylinder { .. } | Surface::Torus { .. }
+        ) && !face.same_sense
+    }
+
+    /// A planar face meeting two or more neighbours at convex edges with an
+    /// obtuse interior angle (100°–170°): it may be a chamfer.
+    pub fn is_chamfer_candidate(&self, f: FaceId) -> bool {
+        if self.planar(f).is_none() {
+            return false;
+        }
+        let bevels = self
+            .graph
+            .neighbours(f)
+            .filter(|(_, a)| {
+                a.convexity == Convexity::Convex
+                    && a.edges.iter().all(|&e| {
+                        let ea = &self.graph.edges[e];
+                        ea.angle_min_deg > 100.0 && ea.angle_max_deg < 170.0
+                    })
+            })
+            .count();
+        bevels >= 2
+    }
+
+    /// Width and length of a narrow face: its area over half its boundary
+    /// length, and that half length, mm.
+    pub fn strip_width(&self, f: FaceId) -> (f64, f64) {
+        let half = self
+            .boundary_points(f)
+            .windows(2)
+            .map(|w| (w[1] - w[0]).norm())
+            .sum::<f64>()
+            .max(1e-9)
+            / 2.0;
+        (self.props(f).area / half, half)
+    }
+
+    /// Faces reachable from `seeds` ([`components::reachable`]).
+    pub fn reachable(
+        &self,
+        seeds: impl IntoIterator<Item = FaceId>,
+        node_ok: impl Fn(FaceId) -> bool,
+        arc_ok: impl Fn(FaceId, FaceId, &Adjacency) -> bool,
+    ) -> BTreeSet<FaceId> {
+        components::reachable(&self.graph, seeds, node_ok, arc_ok)
+    }
+
+    /// Groups of `members` joined by accepted arcs ([`components::components`]).
+    pub fn components(
+        &self,
+        members: &[FaceId],
+        arc_ok: impl Fn(FaceId, FaceId, &Adjacency) -> bool,
+    ) -> Vec<Vec<FaceId>> {
+        components::components(&self.graph, members, arc_ok)
+    }
+
+    /// `step_id`s of faces, sorted.
+    pub fn step_ids(&self, faces: &[FaceId]) -> Vec<u64> {
+        let mut v: Vec<u64> = faces.iter().map(|&f| self.part.face(f).step_id).collect();
+        v.sort();
+        v
+    }
+}

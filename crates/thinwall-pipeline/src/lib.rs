@@ -1,0 +1,123 @@
+//! The library entry point: one call runs the analysis of a part in a
+//! set-up, stiffness feature recognition, connections (validated) and
+//! machining features, links each machining feature to the stiffness
+//! features on its faces, and returns typed results. The CLI and the C ABI
+//! both call [`run`]; `thinwall-report` only turns its [`Outcome`] into
+//! JSON and text.
+//!
+//! ```no_run
+//! let (part, _) = thinwall_step::read_file("panel.step").unwrap();
+//! let out = thinwall_pipeline::run(&part, None, &thinwall_pipeline::Request::default()).unwrap();
+//! println!("{} stiffness features, {} machining features",
+//!     out.recognition.features.len(), out.machining.len());
+//! ```
+
+mod settings;
+
+pub use settings::Settings;
+
+use std::collections::BTreeMap;
+use thinwall_analysis::{FeatureId, PartAnalysis, Setup, SetupError};
+use thinwall_brep::{FaceProps, Part};
+use thinwall_connect::{Options, Structure, StructureError};
+use thinwall_graph::AdjacencyGraph;
+use thinwall_machining::MachiningFeature;
+use thinwall_recognize::{Config, ConfigError, Recognition};
+use thiserror::Error;
+
+/// What to run: the set-up, recognition settings, connection options.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Request {
+    pub setup: Setup,
+    pub config: Config,
+    pub connect: Options,
+}
+
+/// Everything the pipeline found.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub setup: Setup,
+    pub recognition: Recognition,
+    pub structure: Structure,
+    /// Conventional machining features, each with the stiffness features
+    /// sharing its faces (`related`).
+    pub machining: Vec<MachiningFeature>,
+    /// Every face's properties, by `face.index()`.
+    pub face_props: Vec<FaceProps>,
+}
+
+/// Why the pipeline could not run, or failed.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum PipelineError {
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    #[error(transparent)]
+    Setup(#[from] SetupError),
+    /// The connection layer produced a structure that is not a forest: a
+    /// defect of Thinwall, reported rather than returned.
+    #[error("internal error: invalid connection structure: {0}")]
+    Structure(#[from] StructureError),
+}
+
+impl PipelineError {
+    /// A stable machine-readable code: the inner error's, prefixed by the layer.
+    pub fn code(&self) -> String {
+        match self {
+            PipelineError::Config(e) => format!("config.{}", e.code()),
+            PipelineError::Setup(e) => format!("setup.{}", e.code()),
+            PipelineError::Structure(e) => format!("structure.{}", e.code()),
+        }
+    }
+}
+
+/// Run analysis → recognizers → connections → machining on `part`, with
+/// its adjacency graph when the caller already has one.
+pub fn run(
+    part: &Part,
+    graph: Option<&AdjacencyGraph>,
+    req: &Request,
+) -> Result<Outcome, PipelineError> {
+    req.config.validate()?;
+    req.setup.validate()?;
+    let a = match graph {
+        Some(g) => PartAnalysis::with_graph(part, g, req.setup.clone()),
+        None => PartAnalysis::new(part, req.setup.clone()),
+    };
+    let recognition = thinwall_recognize::recognize(&a, &req.config);
+    let structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
+    structure.validate()?;
+    let mut machining = thinwall_machining::recognize(&a);
+    relate(&mut machining, &recognition);
+    Ok(Outcome {
+        setup: req.setup.clone(),
+        recognition,
+        structure,
+        machining,
+        face_props: a.into_face_props(),
+    })
+}
+
+/// Fill each machining feature's `related`: the stiffness features sharing
+/// a face with it, in report order.
+fn relate(machining: &mut [MachiningFeature], r: &Recognition) {
+    let mut by_face: BTreeMap<u64, Vec<FeatureId>> = BTreeMap::new();
+    for f in &r.features {
+        for &face in &f.faces {
+            by_face.entry(face).or_default().push(f.id);
+        }
+    }
+    for m in machining {
+        let mut related: Vec<FeatureId> = Vec::new();
+        for face in &m.faces {
+            for &id in by_face.get(face).into_iter().flatten() {
+                if !related.contains(&id) {
+                    related.push(id);
+                }
+            }
+        }
+        let pos = |id: &FeatureId| r.features.iter().position(|f| f.id == *id);
+        related.sort_by_key(pos);
+        m.related = related;
+    }
+}

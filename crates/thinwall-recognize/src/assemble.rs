@@ -1,0 +1,266 @@
+//! Recognition results as features: walls with their figures and geometry,
+//! depressions and details with theirs, numbered by kind and smallest face
+//! id, references as typed ids.
+
+use crate::claims::Claims;
+use crate::config::Config;
+use crate::depressions::{Depression, DepressionKind};
+use crate::feature::{Plane, StiffnessFeature, WallGeometry};
+use crate::sizing::WallSize;
+use crate::walls::Wall;
+use std::collections::BTreeMap;
+use thinwall_analysis::{measure, FeatureId, PartAnalysis, StiffnessKind};
+use thinwall_brep::FaceId;
+use thinwall_geom::{Point3, Surface, Vector3};
+
+/// Features before numbering, with references by position.
+pub struct Draft {
+    pub features: Vec<StiffnessFeature>,
+    /// Per feature: its base (walls) or the wall it is in or on, by position.
+    pub refs: Vec<Option<usize>>,
+    /// Per wall: its feature's position, when reported.
+    pub wall_feature: Vec<Option<usize>>,
+}
+
+/// The wall features (those `config` reports).
+pub fn walls(
+    a: &PartAnalysis,
+    walls: &[Wall],
+    sizes: &[WallSize],
+    kinds: &[StiffnessKind],
+    claims: &Claims,
+    config: &Config,
+) -> Draft {
+    let mut d = Draft {
+        features: Vec::new(),
+        refs: Vec::new(),
+        wall_feature: vec![None; walls.len()],
+    };
+    for (w, wall) in walls.iter().enumerate() {
+        if config.reports(kinds[w]) {
+            d.wall_feature[w] = Some(d.features.len());
+            d.features
+                .push(wall_feature(a, wall, &sizes[w], kinds[w], &claims.rims[w]));
+        }
+    }
+    for (w, &fi) in d.wall_feature.clone().iter().enumerate() {
+        if fi.is_some() {
+            d.refs.push(sizes[w].base.and_then(|b| d.wall_feature[b]));
+        }
+    }
+    d
+}
+
+fn xyz(v: &Vector3) -> [f64; 3] {
+    [v.x, v.y, v.z]
+}
+
+fn wall_feature(
+    a: &PartAnalysis,
+    wall: &Wall,
+    s: &WallSize,
+    kind: StiffnessKind,
+    rim: &[FaceId],
+) -> StiffnessFeature {
+    let sides = [a.step_ids(&wall.sides[0]), a.step_ids(&wall.sides[1])];
+    let mut side_faces: Vec<u64> = sides.iter().flatten().copied().collect();
+    side_faces.sort();
+    let top = a.step_ids(rim);
+    let mut faces = side_faces.clone();
+    faces.extend(&top);
+    faces.sort();
+    faces.dedup();
+    let (p, n) = wall.mid_plane();
+    let mut f = StiffnessFeature::new(kind, faces);
+    f.side_faces = Some(side_faces);
+    f.sides = Some(sides);
+    f.thin = Some(s.thin);
+    f.thickness = Some(wall.thickness);
+    f.height = Some(s.height);
+    f.length = Some(s.length);
+    f.deflection = Some(s.deflection);
+    f.slenderness = Some(if wall.thickness > 0.0 {
+        s.height / wall.thickness
+    } else {
+        0.0
+    });
+    f.mid_plane = Some(Plane {
+        point: [p.x, p.y, p.z],
+        normal: xyz(&n),
+    });
+    f.access_directions = Some([xyz(&wall.normals[0]), xyz(&wall.normals[1])]);
+    f.top_end_faces = Some(top);
+    f.geometry = Some(geometry(a, wall, s));
+    f
+}
+
+/// The wall's region, side polygons and foot line.
+fn geometry(a: &PartAnalysis, wall: &Wall, s: &WallSize) -> WallGeometry {
+    let side_polygons = [0, 1].map(|k| {
+        wall.sides[k]
+            .iter()
+            .filter_map(|&f| Some((f, a.planar(f)?.polygon_in(&wall.frame))))
+            .collect()
+    });
+    let foot = s.foot_plane.and_then(|(origin, n)| {
+        let along = wall.frame.z.cross(&n).try_normalize(1e-6)?;
+        let on_base: Vec<Point3> = wall
+            .outline()
+            .iter()
+            .map(|p| p - n * (p - origin).dot(&n))
+            .collect();
+        let key = |p: &&Point3| p.coords.dot(&along);
+        let lo = on_base.iter().min_by(|x, y| key(x).total_cmp(&key(y)))?;
+        let hi = on_base.iter().max_by(|x, y| key(x).total_cmp(&key(y)))?;
+        Some([*lo, *hi])
+    });
+    WallGeometry {
+        frame: wall.frame,
+        thickness: wall.thickness,
+        region: wall.region.clone(),
+        side_polygons,
+        height_direction: s.height_dir,
+        foot,
+    }
+}
+
+/// Add the depressions (holes, cut-outs, notches) `config` reports.
+pub fn depressions(
+    a: &PartAnalysis,
+    d: &mut Draft,
+    walls: &[Wall],
+    sizes: &[WallSize],
+    deps: &[Depression],
+    config: &Config,
+) {
+    for dep in deps {
+        let kind = match dep.kind {
+            DepressionKind::Hole { .. } => StiffnessKind::Hole,
+            DepressionKind::Cutout => StiffnessKind::Cutout,
+            DepressionKind::Notch => StiffnessKind::Notch,
+        };
+        if !config.reports(kind) {
+            continue;
+        }
+        let mut f = StiffnessFeature::new(kind, a.step_ids(&dep.faces));
+        let dir = sizes[dep.wall].height_dir;
+        let (lo, hi) = a.extent(&dep.faces, &dir);
+        match dep.kind {
+            DepressionKind::Hole { through } => {
+                let diameter = dep
+                    .faces
+                    .iter()
+                    .filter_map(|&h| match a.part().face(h).surface {
+                        Surface::Cylinder { radius, .. } => Some(2.0 * radius),
+                        _ => None,
+                    })
+                    .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |y| y.max(x))));
+                let height = hi - lo;
+                let t = &config.thresholds;
+                f.diameter = Some(diameter.unwrap_or(height));
+                f.height = Some(height);
+                f.through = Some(through);
+                f.large = Some(height > t.large_hole_factor * t.preferred_tool_diameter_mm);
+            }
+            _ => {
+                let wall = &walls[dep.wall];
+                let (_, top) = measure::extent(&wall.outline(), &dir);
+                f.height = Some((top - lo).max(0.0));
+                if let Some(along) = wall.frame.z.cross(&dir).try_normalize(1e-6) {
+                    let (l0, l1) = a.extent(&dep.faces, &along);
+                    f.width = Some(l1 - l0);
+                }
+            }
+        }
+        d.features.push(f);
+        d.refs.push(d.wall_feature[dep.wall]);
+    }
+}
+
+/// Add fillets and chamfers, each on the thin leaf among the walls whose
+/// side it touches.
+pub fn details(a: &PartAnalysis, d: &mut Draft, walls: &[Wall], sizes: &[WallSize], claims: &Claims, config: &Config) {
+    let mut walls_of_face: BTreeMap<FaceId, Vec<usize>> = BTreeMap::new();
+    for (w, wall) in walls.iter().enumerate() {
+        for &f in wall.sides.iter().flatten() {
+            let list = walls_of_face.entry(f).or_default();
+            if !list.contains(&w) {
+                list.push(w);
+            }
+        }
+    }
+    let wall_of_detail = |faces: &[FaceId]| -> Option<usize> {
+        let mut touched: Vec<usize> = Vec::new();
+        for &f in faces {
+            for (g, _) in a.graph().neighbours(f) {
+                for &w in walls_of_face.get(&g).into_iter().flatten() {
+                    if !touched.contains(&w) {
+                        touched.push(w);
+                    }
+                }
+            }
+        }
+        touched.sort_by_key(|&w| (!sizes[w].thin, sizes[w].base.is_none(), w));
+        touched.first().copied()
+    };
+    if config.reports(StiffnessKind::Fillet) {
+        for b in &claims.blends {
+            let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
+            f.radius = b.radius;
+            f.convex = Some(b.convex);
+            d.features.push(f);
+            d.refs.push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
+        }
+    }
+    if config.reports(StiffnessKind::Chamfer) {
+        for (c, width) in &claims.chamfers {
+            let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
+            f.width = Some(*width);
+            d.features.push(f);
+            d.refs.push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
+        }
+    }
+}
+
+/// Number the features by kind, then by smallest face id, and sort them so;
+/// references become ids. Returns the features and each draft position's
+/// new position.
+pub fn number(d: Draft) -> (Vec<StiffnessFeature>, Vec<usize>) {
+    let Draft {
+        mut features, refs, ..
+    } = d;
+    let mut order: Vec<usize> = (0..features.len()).collect();
+    order.sort_by_key(|&i| {
+        (
+            features[i].kind,
+            features[i].faces.first().copied().unwrap_or(0),
+        )
+    });
+    let mut counters: BTreeMap<StiffnessKind, u32> = BTreeMap::new();
+    let mut ids = vec![FeatureId::new(StiffnessKind::Web, 0); features.len()];
+    for &i in &order {
+        let n = counters.entry(features[i].kind).or_insert(0);
+        *n += 1;
+        ids[i] = FeatureId::new(features[i].kind, *n);
+    }
+    for (i, f) in features.iter_mut().enumerate() {
+        f.faces.dedup();
+        f.id = ids[i];
+        let target = refs[i].map(|r| ids[r]);
+        if f.kind.is_wall() {
+            f.base = target;
+        } else {
+            f.wall = target;
+        }
+    }
+    let mut new_pos = vec![0; features.len()];
+    for (new, &old) in order.iter().enumerate() {
+        new_pos[old] = new;
+    }
+    let mut slots: Vec<Option<StiffnessFeature>> = features.into_iter().map(Some).collect();
+    let sorted = order
+        .iter()
+        .map(|&i| slots[i].take().expect("each once"))
+        .collect();
+    (sorted, new_pos)
+}

@@ -1,0 +1,162 @@
+//! A wall's figures in the set-up: its base (the wall it meets along its
+//! longest foot), height, length and direction of height, the cantilever
+//! deflection and thinness; and its kind from those (DOMAIN.md §1–2).
+
+use crate::config::Config;
+use crate::deflection::deflection_mm;
+use crate::junctions::Junction;
+use crate::walls::Wall;
+use thinwall_analysis::polygon::{inscribed_radius, long_side};
+use thinwall_analysis::{measure, PartAnalysis, StiffnessKind};
+use thinwall_geom::{Point3, Vector3};
+
+/// A wall's figures.
+#[derive(Clone, Debug)]
+pub struct WallSize {
+    pub base: Option<usize>,
+    pub tee: bool,
+    /// mm.
+    pub height: f64,
+    /// mm.
+    pub length: f64,
+    pub deflection: f64,
+    pub thin: bool,
+    /// Unit direction of the height.
+    pub height_dir: Vector3,
+    /// The foot on the base: the base side's point and outward normal.
+    pub foot_plane: Option<(Point3, Vector3)>,
+}
+
+/// Size every wall: walls on a base from the base, walls without one (webs)
+/// by their widest cell; then their deflection and thinness.
+pub fn size_walls(
+    a: &PartAnalysis,
+    walls: &[Wall],
+    junctions: &[Junction],
+    heights: &[f64],
+    config: &Config,
+) -> Vec<WallSize> {
+    let mut sizes: Vec<WallSize> = walls
+        .iter()
+        .enumerate()
+        .map(|(w, wall)| on_base(walls, wall, w, junctions, heights, a.up()))
+        .collect();
+    for (w, wall) in walls.iter().enumerate() {
+        if sizes[w].base.is_none() {
+            without_base(a, wall, w, junctions, &mut sizes[w]);
+        }
+    }
+    for (wall, s) in walls.iter().zip(&mut sizes) {
+        s.deflection = deflection_mm(
+            wall.thickness,
+            s.height,
+            s.length.max(s.height),
+            &config.thinness,
+        );
+        s.thin = s.deflection > config.thinness.allowed_deflection_mm;
+    }
+    sizes
+}
+
+/// Figures of a wall from the wall it meets along its longest foot (ties:
+/// the lower base); zero when it meets none.
+fn on_base(
+    walls: &[Wall],
+    wall: &Wall,
+    w: usize,
+    junctions: &[Junction],
+    heights: &[f64],
+    up: Vector3,
+) -> WallSize {
+    let best = junctions.iter().filter(|j| j.leaf == w).max_by(|a, b| {
+        a.length
+            .total_cmp(&b.length)
+            .then(heights[b.base].total_cmp(&heights[a.base]))
+    });
+    let mut size = WallSize {
+        base: best.map(|j| j.base),
+        tee: best.is_some_and(|j| j.tee),
+        height: 0.0,
+        length: 0.0,
+        deflection: 0.0,
+        thin: false,
+        height_dir: up,
+        foot_plane: None,
+    };
+    if let Some(j) = best {
+        let (origin, n) = walls[j.base].side_plane(j.base_side);
+        let pts = wall.outline();
+        size.height = pts
+            .iter()
+            .map(|p| (p - origin).dot(&n).abs())
+            .fold(0.0, f64::max);
+        let along = wall.frame.z.cross(&n);
+        size.length = match along.try_normalize(1e-6) {
+            Some(a) => measure::span(&pts, &a),
+            None => long_side(&wall.region),
+        };
+        size.height_dir = n;
+        size.foot_plane = Some((origin, n));
+    }
+    size
+}
+
+/// A wall without a base (a web) is measured by its widest cell: the side
+/// its leaves stand on (most of them), each face of it a cell.
+fn without_base(
+    a: &PartAnalysis,
+    wall: &Wall,
+    w: usize,
+    junctions: &[Junction],
+    size: &mut WallSize,
+) {
+    let leaf_sides: Vec<usize> = junctions
+        .iter()
+        .filter(|j| j.base == w)
+        .map(|j| j.base_side)
+        .collect();
+    let side = usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
+    let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {
+        vec![wall.region.clone()]
+    } else {
+        wall.sides[side]
+            .iter()
+            .filter_map(|&f| a.planar(f))
+            .map(|p| p.polygon_in(&wall.frame))
+            .collect()
+    };
+    let (mut h, mut l) = (0.0, 0.0);
+    for c in &cells {
+        let r = inscribed_radius(c);
+        if r > h {
+            h = r;
+            l = long_side(c);
+        }
+    }
+    let up = a.up();
+    let in_plane_up = up - wall.frame.z * up.dot(&wall.frame.z);
+    size.height = h;
+    size.length = l;
+    size.height_dir = in_plane_up.try_normalize(1e-6).unwrap_or(wall.frame.x);
+}
+
+/// Kinds: a wall carrying thin leaves is a web; a wall on a base is a rib
+/// (T-foot) or a flange (L-foot); else a wall.
+pub fn kinds(sizes: &[WallSize]) -> Vec<StiffnessKind> {
+    (0..sizes.len())
+        .map(|w| {
+            let thin_leaves = sizes.iter().any(|s| s.base == Some(w) && s.thin);
+            if thin_leaves {
+                StiffnessKind::Web
+            } else if sizes[w].base.is_some() {
+                if sizes[w].tee {
+                    StiffnessKind::Rib
+                } else {
+                    StiffnessKind::Flange
+                }
+            } else {
+                StiffnessKind::Wall
+            }
+        })
+        .collect()
+}
