@@ -42,9 +42,98 @@ fn truncated_files_never_panic() {
     let text = good();
     for frac in [0.1, 0.3, 0.5, 0.7, 0.9, 0.99] {
         let cut = (text.len() as f64 * frac) as usize;
-        // Any outcome but a panic is acceptable; an error must name the file.
-        if let Err(e) = read_bytes(&text.as_bytes()[..cut], "bad.step") {
-            assert!(e.to_string().contains("bad.step"), "{e}");
+        // A cut file is a syntax error naming the file; a caught panic
+        // (`internal`) would be a defect, not an answer.
+        let e = err(&text.as_bytes()[..cut]);
+        assert!(e.to_string().contains("bad.step"), "{e}");
+        assert_ne!(e.code(), "internal", "{frac}: {e}");
+        assert!(matches!(e, StepError::Syntax { .. }), "{frac}: {e:?}");
+    }
+}
+
+/// The assembly fixture with `extra` entities added before `ENDSEC`.
+fn assembly_with(extra: &str) -> String {
+    let text =
+        std::fs::read_to_string(common::root().join("fixtures/bracket_assembly.step")).unwrap();
+    let end = text.rfind("ENDSEC;").expect("data section");
+    format!("{}{extra}{}", &text[..end], &text[end..])
+}
+
+/// A placement of definition #31 (the bracket) inside itself.
+fn self_use(id: u64) -> String {
+    format!(
+        "#{a} = CONTEXT_DEPENDENT_SHAPE_REPRESENTATION(#{b},#{d});\n\
+         #{b} = ( REPRESENTATION_RELATIONSHIP('','',#36,#36) \
+         REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#{c}) SHAPE_REPRESENTATION_RELATIONSHIP() );\n\
+         #{c} = ITEM_DEFINED_TRANSFORMATION('','',#11,#15);\n\
+         #{d} = PRODUCT_DEFINITION_SHAPE('Placement','',#{e});\n\
+         #{e} = NEXT_ASSEMBLY_USAGE_OCCURRENCE('{id}','self','',#31,#31,$);\n",
+        a = id,
+        b = id + 1,
+        c = id + 2,
+        d = id + 3,
+        e = id + 4
+    )
+}
+
+#[test]
+fn a_definition_that_contains_itself_is_refused_at_once() {
+    // Used twice by itself: without a check on the path this is a walk of
+    // 2^32 instances; with it, the first repetition is an error.
+    let text = assembly_with(&(self_use(5000) + &self_use(5010)));
+    let t0 = std::time::Instant::now();
+    let e = err(text.as_bytes());
+    assert_eq!(e.code(), "cyclic_assembly", "{e}");
+    assert!(e.to_string().starts_with("bad.step: "), "{e}");
+    assert!(t0.elapsed().as_secs() < 5, "took {:?}", t0.elapsed());
+}
+
+#[test]
+fn deeply_nested_and_self_referencing_surface_curves_fail_cleanly() {
+    let text = good();
+    let line = "#26 = SURFACE_CURVE('',#27,(#31,#43),.PCURVE_S1.);";
+    assert!(text.contains(line), "fixture text changed upstream");
+    // 40 surface curves, each the 3D curve of the one before, over the line.
+    let mut chain = String::new();
+    for k in 0..40u64 {
+        let next = if k == 39 { 27 } else { 90_001 + k };
+        chain.push_str(&format!(
+            "#{} = SURFACE_CURVE('',#{next},(#31,#43),.PCURVE_S1.);\n",
+            90_000 + k
+        ));
+    }
+    let nested = text
+        .replacen(
+            line,
+            "#26 = SURFACE_CURVE('',#90000,(#31,#43),.PCURVE_S1.);",
+            1,
+        )
+        .replacen("ENDSEC;", &format!("{chain}ENDSEC;"), 1);
+    let looped = text.replacen(
+        line,
+        "#26 = SURFACE_CURVE('',#26,(#31,#43),.PCURVE_S1.);",
+        1,
+    );
+    for (what, text) in [("nested", nested), ("self-referencing", looped)] {
+        match read_bytes(text.as_bytes(), "bad.step") {
+            // Read: the edge is there, its description cut at the nesting bound.
+            Ok((part, _)) => {
+                let edge = part
+                    .edges
+                    .iter()
+                    .find(|e| e.step_id == 21)
+                    .expect("edge #21");
+                match &edge.curve {
+                    thinwall_geom::CurveKind::Other { keyword } => {
+                        assert!(keyword.contains("nested deeper"), "{what}: {keyword}")
+                    }
+                    other => panic!("{what}: edge #21 read as {other:?}"),
+                }
+            }
+            Err(e) => {
+                assert_ne!(e.code(), "internal", "{what}: {e}");
+                assert!(e.to_string().starts_with("bad.step: "), "{what}: {e}");
+            }
         }
     }
 }

@@ -6,8 +6,8 @@
 mod common;
 
 use serde::Deserialize;
-use thinwall_classify::{classify, Classification, Request, Touch, Volume, VolumeType};
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
+use thinwall_classify::{classify, Classification, Request, Touch, Volume, VolumeType};
 
 #[derive(Deserialize)]
 struct ExpectedVolume {

@@ -67,18 +67,10 @@ fn rib_grid_panel_structure() {
     }
     assert!(has_crossing(&s, id("F_y0"), id("F_x0")));
     // The holes are leaves of the rib they are in, the cut-outs of their flange.
-    for f in r
-        .features
-        .iter()
-        .filter(|f| f.kind == Kind::Hole)
-    {
+    for f in r.features.iter().filter(|f| f.kind == Kind::Hole) {
         assert!(has_base_leaf(&s, id("RX1"), &f.id.to_string()));
     }
-    for f in r
-        .features
-        .iter()
-        .filter(|f| f.kind == Kind::Cutout)
-    {
+    for f in r.features.iter().filter(|f| f.kind == Kind::Cutout) {
         assert!(has_base_leaf(&s, id("F_y0"), &f.id.to_string()));
     }
     // Every wall has at most one base and the web none.

@@ -16,7 +16,8 @@ fn check(name: &str) -> Vec<String> {
     let mut ours_of: HashMap<String, String> = HashMap::new();
     let mut matched = BTreeSet::new();
     for e in &fx.features {
-        let Some(f) = our_id(&part, &r, e).and_then(|id| r.features.iter().find(|f| f.id.to_string() == id))
+        let Some(f) =
+            our_id(&part, &r, e).and_then(|id| r.features.iter().find(|f| f.id.to_string() == id))
         else {
             problems.push(format!(
                 "{name}: {} {:?} not found with its faces",

@@ -39,7 +39,8 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: %s PART.step [VOLUME.step ...]\n", argv[0]);
         return 2;
     }
-    printf("thinwall %s (header %s)\n", tw_version(), THINWALL_VERSION);
+    printf("thinwall %s (header %s), ABI %u\n", tw_version(), THINWALL_VERSION, tw_abi_version());
+    failures += check(tw_abi_version() == TW_ABI_VERSION, "the library's ABI is the header's");
 
     /* Error paths: a missing file, NULL arguments, bad settings. */
     tw_part *missing = (tw_part *)1;
@@ -147,7 +148,7 @@ int main(int argc, char **argv) {
             printf("volume %zu: %s (%s)\n", i, tw_classification_type(cls, i), tw_classification_product_adjacency(cls, i));
         size_t bad[2] = {0, 99};
         tw_classification *none = (tw_classification *)1;
-        failures += check(tw_classify(part, (const tw_part *const *)vols, nv, bad, 1, opt, &none) == TW_ERR_INVALID_ARGUMENT && none == NULL,
+        failures += check(tw_classify(part, (const tw_part *const *)vols, nv, bad, 1, opt, &none) == TW_ERR_INVALID_SEQUENCE && none == NULL,
                           "a sequence naming a missing volume is rejected");
         tw_classification_free(cls);
         for (size_t i = 0; i < nv; i++) tw_part_free(vols[i]);

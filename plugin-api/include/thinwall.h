@@ -17,6 +17,11 @@
 #define THINWALL_VERSION "0.1.0"
 
 
+// The ABI version this header describes. A host checks at run time that
+// `tw_abi_version()` equals it; it changes whenever a signature, a struct
+// layout or the meaning of a status changes incompatibly.
+#define TW_ABI_VERSION 1
+
 // The kind of a connection.
 typedef enum tw_connection_kind {
   // `first` is the base, `second` the leaf on or in it.
@@ -47,6 +52,16 @@ typedef enum tw_status {
   TW_ERR_BUFFER_TOO_SMALL = 8,
   // The requested value does not apply to this item (a thickness of a hole).
   TW_ERR_NOT_APPLICABLE = 9,
+  // The recognition settings are not usable (a non-positive model
+  // parameter, a kind both included and excluded).
+  TW_ERR_INVALID_CONFIG = 10,
+  // The set-up is not usable (a zero up direction, a tilt limit outside 0–90°).
+  TW_ERR_INVALID_SETUP = 11,
+  // Recognition produced an inconsistent result (a connection structure
+  // that is not a forest): a defect of Thinwall; the message names it.
+  TW_ERR_RECOGNITION = 12,
+  // A removal sequence names volumes that are not there.
+  TW_ERR_INVALID_SEQUENCE = 13,
   // Thinwall failed internally; the message says how.
   TW_ERR_INTERNAL = 98,
   // Thinwall panicked; the panic was caught at the boundary.
@@ -57,8 +72,9 @@ typedef enum tw_status {
 // between threads. Strings it returns live as long as it does.
 typedef struct tw_classification tw_classification;
 
-// Recognition settings (opaque). Defaults: up +Z, 3-axis machine,
-// Popma's sizing parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
+// Recognition settings (opaque): the set-up, the recognition settings and
+// the connection options. Defaults: up +Z, 3-axis machine, Popma's sizing
+// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
 typedef struct tw_options tw_options;
 
 // A part read from STEP (opaque). Immutable; safe to share between threads.
@@ -71,6 +87,9 @@ typedef struct tw_result tw_result;
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+// The ABI version of the loaded library (compare with `TW_ABI_VERSION`).
+uint32_t tw_abi_version(void);
 
 // The library version, e.g. "0.1.0" (static storage).
 const char *tw_version(void);

@@ -142,3 +142,37 @@ pub unsafe extern "C" fn tw_options_set_connect_thick(
 pub unsafe extern "C" fn tw_options_free(opt: *mut tw_options) {
     free(opt)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_failed_or_panicking_change_leaves_the_options_as_they_were() {
+        let mut o = tw_options::default();
+        let p: *mut tw_options = &mut o;
+        unsafe {
+            assert_eq!(tw_options_set_force(p, 150.0), tw_status::TW_OK);
+            // Invalid: rolled back.
+            assert_eq!(
+                tw_options_set_force(p, -1.0),
+                tw_status::TW_ERR_INVALID_ARGUMENT
+            );
+            assert_eq!(
+                tw_options_set_up(p, 0.0, 0.0, 0.0),
+                tw_status::TW_ERR_INVALID_ARGUMENT
+            );
+            // A panic half-way through a change: caught, and nothing changed.
+            let st = with(p, |o| {
+                o.request.config.thinness.force_n = 10.0;
+                o.request.setup.up = [1.0, 0.0, 0.0];
+                panic!("half-way");
+            });
+            assert_eq!(st, tw_status::TW_ERR_PANIC);
+        }
+        assert_eq!(o.request.config.thinness.force_n, 150.0);
+        assert_eq!(o.request.setup.up, [0.0, 0.0, 1.0]);
+        assert!(unsafe { tw_options_set_up(&mut o, 0.0, 2.0, 0.0) } == tw_status::TW_OK);
+        assert_eq!(o.request.setup.up, [0.0, 1.0, 0.0]);
+    }
+}

@@ -65,12 +65,17 @@ fn valgrind_clean(host_bin: &Path, args: &[PathBuf]) {
 }
 
 fn build_host(out: &Path) {
+    build_example("host.c", out);
+}
+
+/// Compile `plugin-api/examples/<source>` against the header and library.
+fn build_example(source: &str, out: &Path) {
     let lib = lib_dir();
     let status = Command::new("gcc")
-        .args(["-Wall", "-Wextra", "-Werror", "-std=c11", "-g"])
+        .args(["-Wall", "-Wextra", "-Werror", "-std=c11", "-g", "-pthread"])
         .arg("-I")
         .arg(crate_dir().join("include"))
-        .arg(crate_dir().join("examples/host.c"))
+        .arg(crate_dir().join("examples").join(source))
         .arg("-L")
         .arg(&lib)
         .arg(format!("-Wl,--disable-new-dtags,-rpath,{}", lib.display()))
@@ -78,11 +83,45 @@ fn build_host(out: &Path) {
         .arg(out)
         .status()
         .expect("gcc");
-    assert!(status.success(), "host.c does not compile");
+    assert!(status.success(), "{source} does not compile");
 }
 
 fn fixture() -> PathBuf {
     crate_dir().join("../fixtures/recognition/c_frame.step")
+}
+
+#[test]
+fn threads_recognizing_one_part_at_once_agree() {
+    assert!(tool("gcc"), "gcc is required");
+    let out = std::env::temp_dir().join(format!("thinwall-threads-{}", std::process::id()));
+    build_example("threads.c", &out);
+    let part = crate_dir().join("../fixtures/recognition/rib_grid_panel.step");
+    let run = host(&out).arg(&part).arg("8").output().unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success() && stdout.contains("threads: ok (8 threads)"),
+        "{stdout}{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    // Under helgrind: no data race between the threads.
+    if tool("valgrind") {
+        let hg = Command::new("valgrind")
+            .env_remove("LD_LIBRARY_PATH")
+            .args(["--tool=helgrind", "--error-exitcode=9", "-q"])
+            .arg(&out)
+            .arg(&part)
+            .arg("3")
+            .output()
+            .unwrap();
+        assert!(
+            hg.status.success(),
+            "helgrind found races:\n{}",
+            String::from_utf8_lossy(&hg.stderr)
+        );
+    } else {
+        eprintln!("valgrind not installed: race check skipped (.ci/run installs it)");
+    }
+    let _ = std::fs::remove_file(out);
 }
 
 #[test]

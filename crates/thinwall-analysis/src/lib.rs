@@ -155,10 +155,7 @@ impl<'a> PartAnalysis<'a> {
 
     /// Lowest and highest extent of faces' boundaries along `dir`, mm.
     pub fn extent(&self, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
-        measure::extent(
-            faces.iter().flat_map(|&f| self.boundary_points(f)),
-            dir,
-        )
+        measure::extent(faces.iter().flat_map(|&f| self.boundary_points(f)), dir)
     }
 
     /// A planar face with its loops, or `None` for a curved face.
@@ -169,7 +166,7 @@ impl<'a> PartAnalysis<'a> {
                 .map(|f| PlanarFace::new(self.part, f))
                 .collect()
         })[f.index()]
-            .as_ref()
+        .as_ref()
     }
 
     /// Every planar face, in face order.

@@ -2,8 +2,8 @@
 //! machine class, and the part's placement on the table.
 
 use serde::{Deserialize, Serialize};
-use thiserror::Error;
 use thinwall_geom::Vector3;
+use thiserror::Error;
 
 /// A set-up that cannot be used.
 #[derive(Debug, Error, PartialEq)]
@@ -132,7 +132,12 @@ mod tests {
         assert_eq!(s.up, [0.0, 0.0, 1.0]);
         let e = Setup::new([0.0, 0.0, 0.0], Machine::ThreeAxis).unwrap_err();
         assert_eq!(e.code(), "zero_up");
-        let e = Setup::new([0.0, 0.0, 1.0], Machine::FiveAxis { tilt_limit_deg: 95.0 });
+        let e = Setup::new(
+            [0.0, 0.0, 1.0],
+            Machine::FiveAxis {
+                tilt_limit_deg: 95.0,
+            },
+        );
         assert_eq!(e.unwrap_err().code(), "tilt_limit");
     }
 }

@@ -240,7 +240,10 @@ mod tests {
             let id = FeatureId::new(*k, 12);
             assert_eq!(FeatureId::parse(&id.to_string()), Some(id));
         }
-        assert_eq!(FeatureId::parse("CH3").unwrap().kind, StiffnessKind::Chamfer);
+        assert_eq!(
+            FeatureId::parse("CH3").unwrap().kind,
+            StiffnessKind::Chamfer
+        );
         assert_eq!(FeatureId::parse("C3").unwrap().kind, StiffnessKind::Cutout);
         assert_eq!(FeatureId::parse("FL1").unwrap().kind, StiffnessKind::Fillet);
         assert!(FeatureId::parse("R0").is_none() && FeatureId::parse("X1").is_none());
@@ -254,7 +257,10 @@ mod tests {
         assert_eq!(serde_json::to_string(&id).unwrap(), "\"FL2\"");
         assert_eq!(MachiningId(7).to_string(), "M7");
         // Widths pad, as in the text tables.
-        assert_eq!(format!("{:<4}|", FeatureId::new(StiffnessKind::Rib, 2)), "R2  |");
+        assert_eq!(
+            format!("{:<4}|", FeatureId::new(StiffnessKind::Rib, 2)),
+            "R2  |"
+        );
         assert_eq!(format!("{:<6}|", StiffnessKind::Rib), "rib   |");
     }
 }

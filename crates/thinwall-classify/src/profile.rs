@@ -3,7 +3,9 @@
 //! of closed faces fits.
 
 use crate::coincide::{FaceGeom, Tol};
-use crate::{Classification, FaceRole, Judged, ProductAdjacency, Touch, Volume, VolumeFace, VolumeType};
+use crate::{
+    Classification, FaceRole, Judged, ProductAdjacency, Touch, Volume, VolumeFace, VolumeType,
+};
 use geo::{BoundingRect, Contains, Distance, Euclidean, MultiPolygon};
 use std::collections::HashSet;
 use thinwall_analysis::polygon::min_rect_sides;
@@ -59,7 +61,13 @@ fn start(ctx: &Context, vi: usize, faces: &[Judged]) -> Classification {
             .map(|j| VolumeFace {
                 step_id: j.geom.step_id,
                 role: j.role,
-                surface: ctx.vol.part.face(j.geom.face).surface.kind_name().to_string(),
+                surface: ctx
+                    .vol
+                    .part
+                    .face(j.geom.face)
+                    .surface
+                    .kind_name()
+                    .to_string(),
                 closed: j.closed,
                 touches: j.touches.clone(),
             })
@@ -85,7 +93,8 @@ pub fn shape(
 ) -> Classification {
     let mut c = start(ctx, vi, &faces);
     let height = |g: &FaceGeom| g.planar.map_or(0.0, |p| p.frame.origin.coords.dot(ctx.up));
-    let of_role = |r: FaceRole| -> Vec<usize> { (0..faces.len()).filter(|&i| faces[i].role == r).collect() };
+    let of_role =
+        |r: FaceRole| -> Vec<usize> { (0..faces.len()).filter(|&i| faces[i].role == r).collect() };
     let (tops, bottoms, sides) = (
         of_role(FaceRole::Top),
         of_role(FaceRole::Bottom),
@@ -100,7 +109,11 @@ pub fn shape(
     if tops.is_empty() || bottoms.is_empty() || sides.is_empty() {
         return unknown(c, "no top, bottom or side faces along the tool direction");
     }
-    let hs = |ix: &[usize]| ix.iter().map(|&i| height(faces[i].geom)).collect::<Vec<f64>>();
+    let hs = |ix: &[usize]| {
+        ix.iter()
+            .map(|&i| height(faces[i].geom))
+            .collect::<Vec<f64>>()
+    };
     let (top_hs, bot_hs) = (hs(&tops), hs(&bottoms));
     let top_h = top_hs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let bot_h = bot_hs.iter().copied().fold(f64::INFINITY, f64::min);

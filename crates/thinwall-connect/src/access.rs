@@ -2,8 +2,8 @@
 //! tool access direction (its outward normal) against the machine's tool
 //! axis; obstruction by other material is not checked here.
 
-use thinwall_analysis::Machine;
 use serde::{Deserialize, Serialize};
+use thinwall_analysis::Machine;
 use thinwall_geom::Vector3;
 
 /// Angle within which a side counts as facing straight up or as vertical.

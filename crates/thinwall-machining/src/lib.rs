@@ -155,9 +155,9 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
 /// whose tangent neighbours are all hole cylinders (its other half).
 fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
     if a.concave_cylinder(f).is_some()
-        && a.graph().neighbours(f).all(|(g, adj)| {
-            adj.convexity != Convexity::Smooth || a.concave_cylinder(g).is_some()
-        })
+        && a.graph()
+            .neighbours(f)
+            .all(|(g, adj)| adj.convexity != Convexity::Smooth || a.concave_cylinder(g).is_some())
     {
         return false;
     }
@@ -240,7 +240,10 @@ impl<'g> GroupShape<'g> {
                 }
             }
         }
-        let cylinders = group.iter().filter_map(|&f| a.concave_cylinder(f)).collect();
+        let cylinders = group
+            .iter()
+            .filter_map(|&f| a.concave_cylinder(f))
+            .collect();
         // The entry: a touched plane not in an opposite pair, facing the
         // same way as a floor if there is one.
         let candidates: Vec<usize> = touched
@@ -251,7 +254,11 @@ impl<'g> GroupShape<'g> {
         let entry = candidates
             .iter()
             .copied()
-            .find(|&sp| planes.iter().any(|(n, _)| same_direction(n, &plane_normal(sp))))
+            .find(|&sp| {
+                planes
+                    .iter()
+                    .any(|(n, _)| same_direction(n, &plane_normal(sp)))
+            })
             .or_else(|| candidates.first().copied())
             .or_else(|| touched.iter().next().copied());
         Self {
@@ -453,11 +460,9 @@ fn depression_feature(
     let shape = GroupShape::new(a, group, touched);
     let (kind, through, profile) = shape.typing(a);
     let dir = shape.direction();
-    let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
-        a.props(f)
-            .normal
-            .is_some_and(|n| n.dot(&-dir) > 1.0 - 1e-6)
-    });
+    let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group
+        .iter()
+        .partition(|&&f| a.props(f).normal.is_some_and(|n| n.dot(&-dir) > 1.0 - 1e-6));
     let (lo, hi) = a.extent(group, &dir);
     let (length, width) = profile_sizes(a, group, &dir);
     let radii_v = radii(a, group);

@@ -49,6 +49,9 @@ mod tests {
         assert!(e.to_string().starts_with("t.toml: up"), "{e}");
         let e = Settings::from_toml("bogus = 1\n", "bad.toml").unwrap_err();
         assert!(e.to_string().starts_with("bad.toml:"), "{e}");
-        assert_eq!(Settings::from_toml("", "t.toml").unwrap(), Settings::default());
+        assert_eq!(
+            Settings::from_toml("", "t.toml").unwrap(),
+            Settings::default()
+        );
     }
 }

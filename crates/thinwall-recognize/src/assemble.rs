@@ -179,7 +179,14 @@ pub fn depressions(
 
 /// Add fillets and chamfers, each on the thin leaf among the walls whose
 /// side it touches.
-pub fn details(a: &PartAnalysis, d: &mut Draft, walls: &[Wall], sizes: &[WallSize], claims: &Claims, config: &Config) {
+pub fn details(
+    a: &PartAnalysis,
+    d: &mut Draft,
+    walls: &[Wall],
+    sizes: &[WallSize],
+    claims: &Claims,
+    config: &Config,
+) {
     let mut walls_of_face: BTreeMap<FaceId, Vec<usize>> = BTreeMap::new();
     for (w, wall) in walls.iter().enumerate() {
         for &f in wall.sides.iter().flatten() {
@@ -209,7 +216,8 @@ pub fn details(a: &PartAnalysis, d: &mut Draft, walls: &[Wall], sizes: &[WallSiz
             f.radius = b.radius;
             f.convex = Some(b.convex);
             d.features.push(f);
-            d.refs.push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
+            d.refs
+                .push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
         }
     }
     if config.reports(StiffnessKind::Chamfer) {
@@ -217,7 +225,8 @@ pub fn details(a: &PartAnalysis, d: &mut Draft, walls: &[Wall], sizes: &[WallSiz
             let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
             f.width = Some(*width);
             d.features.push(f);
-            d.refs.push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
+            d.refs
+                .push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
         }
     }
 }

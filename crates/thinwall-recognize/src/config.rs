@@ -163,7 +163,6 @@ impl Config {
     pub fn reports(&self, kind: Kind) -> bool {
         (self.include.is_empty() || self.include.contains(&kind)) && !self.exclude.contains(&kind)
     }
-
 }
 
 #[cfg(test)]
@@ -187,7 +186,9 @@ mod tests {
         assert!(e.to_string().starts_with("bad.toml:"));
         // `up` belongs to the set-up, not to recognition settings.
         assert_eq!(
-            Config::from_toml("up = [0.0, 0.0, 1.0]\n", "t.toml").unwrap_err().code(),
+            Config::from_toml("up = [0.0, 0.0, 1.0]\n", "t.toml")
+                .unwrap_err()
+                .code(),
             "config_file"
         );
         let both = "include = [\"hole\"]\nexclude = [\"hole\"]\n";

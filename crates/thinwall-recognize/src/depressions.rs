@@ -117,9 +117,8 @@ pub fn rim_faces(
 /// concave cylindrical scallop.
 pub fn edge_openings(a: &PartAnalysis, w: usize, rim: &[FaceId]) -> Vec<Depression> {
     let graph = a.graph();
-    let concave = |_: FaceId, _: FaceId, adj: &thinwall_graph::Adjacency| {
-        adj.convexity == Convexity::Concave
-    };
+    let concave =
+        |_: FaceId, _: FaceId, adj: &thinwall_graph::Adjacency| adj.convexity == Convexity::Concave;
     let mut out = Vec::new();
     for comp in a.components(rim, concave) {
         let concave_arcs = comp
