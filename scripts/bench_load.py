@@ -13,7 +13,10 @@ import glob, json, os, statistics, subprocess, sys, time
 from OCP.STEPControl import STEPControl_Reader
 from OCP.TopExp import TopExp
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
-from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape
+try:  # OpenCascade 7.x
+    from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape as EdgeFaceMap
+except ImportError:  # 8.x
+    from OCP.OCP.collections import IndexedDataMap_TopoDS_Shape_List_TopoDS_Shape_TopTools_ShapeMapHasher as EdgeFaceMap
 from OCP.BRepOffset import BRepOffset_Analyse
 
 
@@ -23,7 +26,7 @@ def occ_once(path):
     r.ReadFile(path)
     r.TransferRoots()
     shape = r.OneShape()
-    m = TopTools_IndexedDataMapOfShapeListOfShape()
+    m = EdgeFaceMap()
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, m)
     BRepOffset_Analyse(shape, 0.01)
     return (time.perf_counter() - t0) * 1e3

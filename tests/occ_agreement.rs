@@ -116,7 +116,7 @@ fn ours_kind(surface: &str) -> &str {
     }
 }
 
-fn check_file(set: &str, oracle: &Oracle, data: &Path, tally: &mut Tally) {
+fn check_file(set: &str, oracles: &[Oracle], oracle: &Oracle, data: &Path, tally: &mut Tally) {
     let (part, _) = thinwall_step::read_file(data).unwrap_or_else(|e| panic!("{e}"));
     let diag = part.bounding_box().diagonal();
     let props: Vec<_> = part
@@ -170,8 +170,8 @@ fn check_file(set: &str, oracle: &Oracle, data: &Path, tally: &mut Tally) {
             None
         } else if gap > 1e-6 * diag && (props[i].area - of.area).abs() <= 4.0 * gap * perimeter {
             Some("area: vertices off their curves (file within its uncertainty)")
-        } else if stc_agrees(oracle, of, props[i].area) {
-            Some("area: OpenCascade gives the same face another area in the STC file")
+        } else if opencascade_twin_agrees(oracles, oracle, of, props[i].area) {
+            Some("area: OpenCascade gives the same face our area in another file of the set")
         } else {
             tally.area_failures.push(format!(
                 "{label}: area {:.9} vs OCC {:.9} (rel {rel:.2e}), centroid {} vs {:?}",
@@ -208,6 +208,19 @@ fn check_file(set: &str, oracle: &Oracle, data: &Path, tally: &mut Tally) {
             *tally
                 .explained
                 .entry("edge: seam added by OpenCascade, not in the file")
+                .or_default() += 1;
+            continue;
+        }
+        if d > 1e-3 * diag
+            && part.supplemental.face_count > 0
+            && off_the_solid(&props, &p, 1e-3 * diag)
+        {
+            // OpenCascade maps the edges of every face in the file, those of
+            // the supplemental surface models (PMI geometry) beside the
+            // solid included; we keep those out of the part.
+            *tally
+                .explained
+                .entry("edge: of a supplemental surface model, not of the solid")
                 .or_default() += 1;
             continue;
         }
@@ -260,24 +273,34 @@ fn check_file(set: &str, oracle: &Oracle, data: &Path, tally: &mut Tally) {
     }
 }
 
-/// NIST's FTC 07 and STC 07 share their geometry. OpenCascade gives some
-/// FTC 07 sphere faces an area ~6 % off the one it gives the same face in
-/// STC 07; we accept a difference when our area matches OCC's STC 07 value.
-fn stc_agrees(oracle: &Oracle, of: &OracleFace, ours: f64) -> bool {
-    let Some(twin) = oracle.file.strip_prefix("nist_ftc_07") else {
-        return false;
-    };
-    let _ = twin;
-    let path = common::root().join("tests/oracle/nist/nist_stc_07_asme1_ap242-e3.json");
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return false;
-    };
-    let stc: Oracle = serde_json::from_str(&text).expect("oracle");
-    stc.faces.iter().any(|f| {
-        f.surface == of.surface
-            && (0..3).all(|k| (f.centroid[k] - of.centroid[k]).abs() < 0.05)
-            && (f.area - ours).abs() <= 1e-3 * ours
+/// Whether OpenCascade gives a face of the same kind at the same centroid
+/// (within 0.05 mm) in another file of the set our area (within the kind's
+/// tolerance): OpenCascade then disagrees with itself about one geometry,
+/// and our value is the one it gives elsewhere. (NIST's FTC 07 and STC 07
+/// carry one solid; OpenCascade's areas of some of its sphere faces differ
+/// by ~6 % between them.)
+fn opencascade_twin_agrees(
+    oracles: &[Oracle],
+    oracle: &Oracle,
+    of: &OracleFace,
+    ours: f64,
+) -> bool {
+    oracles.iter().filter(|o| o.file != oracle.file).any(|o| {
+        o.faces.iter().any(|f| {
+            f.surface == of.surface
+                && (0..3).all(|k| (f.centroid[k] - of.centroid[k]).abs() < 0.05)
+                && (f.area - ours).abs() <= area_tolerance(&f.surface) * ours
+        })
     })
+}
+
+/// Whether a point lies off every face of the solid (outside each face's
+/// box by more than `tol`): an OpenCascade edge there belongs to geometry
+/// beside the solid (a supplemental surface model), which we keep apart.
+fn off_the_solid(props: &[thinwall_brep::FaceProps], p: &Point3, tol: f64) -> bool {
+    props
+        .iter()
+        .all(|pr| (0..3).any(|k| p[k] < pr.bbox.min[k] - tol || p[k] > pr.bbox.max[k] + tol))
 }
 
 fn run_set(set: &str) -> Tally {
@@ -292,10 +315,18 @@ fn run_set(set: &str) -> Tally {
         .map(|e| e.unwrap().path())
         .collect();
     files.sort();
-    for path in files {
-        let oracle: Oracle =
-            serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-        check_file(set, &oracle, &data_dir.join(&oracle.file), &mut tally);
+    let oracles: Vec<Oracle> = files
+        .iter()
+        .map(|path| serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap())
+        .collect();
+    for oracle in &oracles {
+        check_file(
+            set,
+            &oracles,
+            oracle,
+            &data_dir.join(&oracle.file),
+            &mut tally,
+        );
     }
     println!(
         "{set}: {} faces, worst planar area rel. error {:.2e} ({}), worst curved {:.2e} ({}); {} edges, {} convexity differences",
@@ -340,8 +371,8 @@ fn assert_set(set: &str) {
         t.area_failures.len()
     );
     assert!(
-        t.unmatched_edges.len() * 100 <= t.edges,
-        "{set}: {} OCC edges unmatched",
+        t.unmatched_edges.is_empty(),
+        "{set}: {} OCC edges unmatched and unexplained",
         t.unmatched_edges.len()
     );
     assert!(

@@ -43,13 +43,16 @@ int main(int argc, char **argv) {
     }
     int n = argc > 2 ? atoi(argv[2]) : 4;
     if (n < 1 || n > 64) n = 4;
+    /* "parallel" as a third argument: each call also uses worker threads. */
+    int parallel = argc > 3 && strcmp(argv[3], "parallel") == 0;
     if (tw_abi_version() != TW_ABI_VERSION) {
         fprintf(stderr, "threads: library ABI %u, header %u\n", tw_abi_version(), (unsigned)TW_ABI_VERSION);
         return 1;
     }
     tw_part *part = NULL;
     tw_options *opt = NULL;
-    if (tw_part_load_file(argv[1], &part) != TW_OK || tw_options_new(&opt) != TW_OK) {
+    if (tw_part_load_file(argv[1], &part) != TW_OK || tw_options_new(&opt) != TW_OK ||
+        tw_options_set_parallel(opt, parallel) != TW_OK) {
         fprintf(stderr, "threads: %s\n", tw_last_error_message());
         return 1;
     }

@@ -74,7 +74,8 @@ typedef struct tw_classification tw_classification;
 
 // Recognition settings (opaque): the set-up, the recognition settings and
 // the connection options. Defaults: up +Z, 3-axis machine, Popma's sizing
-// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
+// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool), and no
+// worker threads inside a call (a host runs its own threads).
 typedef struct tw_options tw_options;
 
 // A part read from STEP (opaque). Immutable; safe to share between threads.
@@ -157,6 +158,11 @@ enum tw_status tw_options_set_five_axis(struct tw_options *opt, double tilt_limi
 
 // Link thin walls to the thick walls they stand on (default false).
 enum tw_status tw_options_set_connect_thick(struct tw_options *opt, bool connect);
+
+// Let a call use Thinwall's worker threads (rayon, one per core) for the
+// costly parts of recognition (default false: a call runs on the calling
+// thread only). The results are the same either way.
+enum tw_status tw_options_set_parallel(struct tw_options *opt, bool parallel);
 
 // Free options. NULL is allowed.
 void tw_options_free(struct tw_options *opt);

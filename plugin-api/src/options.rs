@@ -7,10 +7,22 @@ use thinwall_pipeline::Request;
 
 /// Recognition settings (opaque): the set-up, the recognition settings and
 /// the connection options. Defaults: up +Z, 3-axis machine, Popma's sizing
-/// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool).
-#[derive(Clone, Default)]
+/// parameters (F 200 N, E 70 000 N/mm², δ 0.01 mm, Ø12 tool), and no
+/// worker threads inside a call (a host runs its own threads).
+#[derive(Clone)]
 pub struct tw_options {
     pub(crate) request: Request,
+}
+
+impl Default for tw_options {
+    fn default() -> Self {
+        Self {
+            request: Request {
+                parallel: false,
+                ..Request::default()
+            },
+        }
+    }
 }
 
 /// New options with the defaults; free with `tw_options_free`.
@@ -133,6 +145,20 @@ pub unsafe extern "C" fn tw_options_set_connect_thick(
 ) -> tw_status {
     with(opt, |o| {
         o.request.connect.connect_thick_walls = connect;
+        Ok(())
+    })
+}
+
+/// Let a call use Thinwall's worker threads (rayon, one per core) for the
+/// costly parts of recognition (default false: a call runs on the calling
+/// thread only). The results are the same either way.
+#[no_mangle]
+pub unsafe extern "C" fn tw_options_set_parallel(
+    opt: *mut tw_options,
+    parallel: bool,
+) -> tw_status {
+    with(opt, |o| {
+        o.request.parallel = parallel;
         Ok(())
     })
 }

@@ -66,6 +66,7 @@ pub struct PartAnalysis<'a> {
     boundary: OnceLock<Vec<Vec<Point3>>>,
     planar: OnceLock<Vec<Option<PlanarFace>>>,
     smooth_degree: OnceLock<Vec<usize>>,
+    parallel: bool,
 }
 
 impl<'a> PartAnalysis<'a> {
@@ -93,7 +94,21 @@ impl<'a> PartAnalysis<'a> {
             boundary: OnceLock::new(),
             planar: OnceLock::new(),
             smooth_degree: OnceLock::new(),
+            parallel: true,
         }
+    }
+
+    /// Whether costly pieces (face properties) are computed on rayon's
+    /// worker threads (the default) or on the calling thread only. The
+    /// results are the same either way.
+    pub fn with_parallelism(mut self, parallel: bool) -> Self {
+        self.parallel = parallel;
+        self
+    }
+
+    /// Whether this analysis may use worker threads.
+    pub fn parallel(&self) -> bool {
+        self.parallel
     }
 
     pub fn part(&self) -> &'a Part {
@@ -122,14 +137,19 @@ impl<'a> PartAnalysis<'a> {
         &self.tol
     }
 
-    /// Every face's properties, by `face.index()` (computed on first use:
-    /// free-form faces are the costly part).
+    /// Every face's properties, by `face.index()` (computed on first use,
+    /// faces in parallel: free-form faces are the costly part; each face's
+    /// result does not depend on the others or on the thread).
     pub fn face_props(&self) -> &[FaceProps] {
+        use rayon::prelude::*;
         self.props.get_or_init(|| {
-            self.part
-                .face_ids()
-                .map(|f| compute_face_props(self.part, f))
-                .collect()
+            let ids: Vec<FaceId> = self.part.face_ids().collect();
+            let one = |&f: &FaceId| compute_face_props(self.part, f);
+            if self.parallel {
+                ids.par_iter().map(one).collect()
+            } else {
+                ids.iter().map(one).collect()
+            }
         })
     }
 

@@ -237,16 +237,21 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
     let Some(b) = region.bounding_rect() else {
         return 0.0;
     };
-    let dist = |x: f64, y: f64| -> f64 {
+    // The distance to the boundary at (x, y) when it exceeds `floor`, else
+    // 0 (a point outside counts 0). Stopping once a ring comes within
+    // `floor` changes nothing: such a point cannot be the best.
+    let dist = |x: f64, y: f64, floor: f64| -> f64 {
         let p = Point::new(x, y);
         if !region.contains(&p) {
             return 0.0;
         }
         let mut d = f64::INFINITY;
         for poly in &region.0 {
-            d = d.min(Euclidean::distance(&p, poly.exterior()));
-            for r in poly.interiors() {
-                d = d.min(Euclidean::distance(&p, r));
+            for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
+                d = d.min(Euclidean::distance(&p, ring));
+                if d <= floor {
+                    return 0.0;
+                }
             }
         }
         d
@@ -260,7 +265,7 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
                 b.min().x + w * i as f64 / n as f64,
                 b.min().y + h * j as f64 / n as f64,
             );
-            let d = dist(x, y);
+            let d = dist(x, y, best.2);
             if d > best.2 {
                 best = (x, y, d);
             }
@@ -274,7 +279,7 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
             for j in 0..=n {
                 let x = cx - w / 2.0 + w * i as f64 / n as f64;
                 let y = cy - h / 2.0 + h * j as f64 / n as f64;
-                let d = dist(x, y);
+                let d = dist(x, y, best.2);
                 if d > best.2 {
                     best = (x, y, d);
                 }

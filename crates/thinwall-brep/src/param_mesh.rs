@@ -21,6 +21,12 @@ pub struct MeshIntegral {
 
 /// Samples per knot span of a boundary edge.
 const SAMPLES_PER_SPAN: usize = 8;
+/// Interior grid lines per knot span of the surface (Steiner points keep the
+/// triangles well shaped, so the quadrature converges without subdividing).
+const GRID_PER_SPAN: usize = 2;
+/// Fewest and most interior grid lines in each parameter direction.
+const GRID_MIN: usize = 6;
+const GRID_MAX: usize = 24;
 /// Deepest adaptive subdivision of a triangle.
 const MAX_DEPTH: u32 = 5;
 /// Relative error budget of a face's integral.
@@ -92,6 +98,91 @@ pub fn parameter_loops(
     loops
 }
 
+/// Grid lines over `[lo, hi]`: each knot span of `knots` inside it cut in
+/// [`GRID_PER_SPAN`], at least [`GRID_MIN`] and at most [`GRID_MAX`] lines.
+fn grid_lines(knots: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let mut cuts: Vec<f64> = vec![lo];
+    cuts.extend(knots.iter().copied().filter(|&k| k > lo && k < hi));
+    cuts.push(hi);
+    cuts.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (hi - lo).abs().max(1e-300));
+    let spans = cuts.len() - 1;
+    let per = (GRID_PER_SPAN.max(GRID_MIN.div_ceil(spans.max(1)))).min(GRID_MAX / spans.max(1));
+    if per == 0 {
+        // More spans than grid lines: every k-th knot.
+        let step = spans.div_ceil(GRID_MAX);
+        return cuts.iter().copied().step_by(step).collect();
+    }
+    let mut out = Vec::new();
+    for w in cuts.windows(2) {
+        for k in 0..per {
+            out.push(w[0] + (w[1] - w[0]) * k as f64 / per as f64);
+        }
+    }
+    out.push(hi);
+    out
+}
+
+/// Distance from `p` to the nearest boundary segment, with parameters
+/// divided by `scale` (one cell in each direction is one unit).
+fn boundary_distance(loops: &[Vec<[f64; 2]>], p: [f64; 2], scale: [f64; 2]) -> f64 {
+    let at = |q: [f64; 2]| [(q[0] - p[0]) / scale[0], (q[1] - p[1]) / scale[1]];
+    let p = [0.0, 0.0];
+    let mut d2 = f64::INFINITY;
+    for poly in loops {
+        for i in 0..poly.len() {
+            let (a, b) = (at(poly[i]), at(poly[(i + 1) % poly.len()]));
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 > 0.0 {
+                (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let (ex, ey) = (p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+            d2 = d2.min(ex * ex + ey * ey);
+        }
+    }
+    d2.sqrt()
+}
+
+/// Interior Steiner points: the knot-aligned grid points inside the loops,
+/// kept away from the boundary by half a grid cell.
+fn interior_points(loops: &[Vec<[f64; 2]>], s: &NurbsSurface) -> Vec<[f64; 2]> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in loops.iter().flatten() {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !(lo[0] < hi[0] && lo[1] < hi[1]) {
+        return Vec::new();
+    }
+    let us = grid_lines(&s.knots_u, lo[0], hi[0]);
+    let vs = grid_lines(&s.knots_v, lo[1], hi[1]);
+    let cell = |lines: &[f64]| {
+        lines
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (cu, cv) = (cell(&us), cell(&vs));
+    let mut out = Vec::new();
+    for &u in &us[1..us.len() - 1] {
+        for &v in &vs[1..vs.len() - 1] {
+            let p = [u, v];
+            if !inside(loops, p) {
+                continue;
+            }
+            // Away from the boundary by half a cell.
+            if boundary_distance(loops, p, [cu, cv]) > 0.5 {
+                out.push(p);
+            }
+        }
+    }
+    out
+}
+
 fn inside(loops: &[Vec<[f64; 2]>], p: [f64; 2]) -> bool {
     let mut c = false;
     for poly in loops {
@@ -140,14 +231,7 @@ fn adaptive(
     tol: f64,
     depth: u32,
 ) -> (f64, Vector3) {
-    let mid = |a: [f64; 2], b: [f64; 2]| [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-    let (m01, m12, m20) = (mid(t[0], t[1]), mid(t[1], t[2]), mid(t[2], t[0]));
-    let parts = [
-        [t[0], m01, m20],
-        [m01, t[1], m12],
-        [m20, m12, t[2]],
-        [m01, m12, m20],
-    ];
+    let parts = split(&t);
     let subs = parts.map(|p| triangle_rule(s, &p));
     let sum_a: f64 = subs.iter().map(|x| x.0).sum();
     let sum_m: Vector3 = subs.iter().map(|x| x.1).sum();
@@ -159,6 +243,57 @@ fn adaptive(
         .zip(subs)
         .map(|(p, w)| adaptive(s, *p, w, 0.25 * tol, depth + 1))
         .fold((0.0, Vector3::zeros()), |acc, x| (acc.0 + x.0, acc.1 + x.1))
+}
+
+/// A triangle in parameter space.
+type Triangle = [[f64; 2]; 3];
+
+/// The integrals over all triangles. One subdivision of every triangle is
+/// accepted when the total change is within the error budget; otherwise
+/// each triangle is refined adaptively against its share of the budget.
+fn integrate_triangles(
+    s: &NurbsSurface,
+    triangles: &[(Triangle, (f64, Vector3))],
+    estimate: f64,
+    domain: f64,
+) -> (f64, Vector3) {
+    let budget = REL_TOL * estimate.abs();
+    let mut fine = Vec::with_capacity(triangles.len());
+    let mut change = 0.0;
+    for (t, whole) in triangles {
+        let parts = split(t).map(|p| triangle_rule(s, &p));
+        let a: f64 = parts.iter().map(|x| x.0).sum();
+        let m: Vector3 = parts.iter().map(|x| x.1).sum();
+        change += (a - whole.0).abs();
+        fine.push((a, m));
+    }
+    if change <= budget {
+        return fine
+            .iter()
+            .fold((0.0, Vector3::zeros()), |acc, x| (acc.0 + x.0, acc.1 + x.1));
+    }
+    let mut area = 0.0;
+    let mut moment = Vector3::zeros();
+    for (t, whole) in triangles {
+        // Each triangle gets its share of the error budget.
+        let tol = budget * param_area(t) / domain;
+        let (a, m) = adaptive(s, *t, *whole, tol, 0);
+        area += a;
+        moment += m;
+    }
+    (area, moment)
+}
+
+/// A triangle cut into four at its edge midpoints.
+fn split(t: &[[f64; 2]; 3]) -> [[[f64; 2]; 3]; 4] {
+    let mid = |a: [f64; 2], b: [f64; 2]| [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let (m01, m12, m20) = (mid(t[0], t[1]), mid(t[1], t[2]), mid(t[2], t[0]));
+    [
+        [t[0], m01, m20],
+        [m01, t[1], m12],
+        [m20, m12, t[2]],
+        [m01, m12, m20],
+    ]
 }
 
 fn param_area(t: &[[f64; 2]; 3]) -> f64 {
@@ -193,6 +328,10 @@ pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshInteg
             }
         }
     }
+    for p in interior_points(&loops, s) {
+        cdt.insert(Point2::new(p[0], p[1]))
+            .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
+    }
     if failed_constraints > 0 {
         warnings.push(format!(
             "{failed_constraints} boundary segments cross each other in parameter space"
@@ -226,15 +365,7 @@ pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshInteg
         .map(|x| param_area(&x.0))
         .sum::<f64>()
         .max(1e-300);
-    let mut area = 0.0;
-    let mut moment = Vector3::zeros();
-    for (t, whole) in triangles {
-        // Each triangle gets its share of the error budget.
-        let tol = REL_TOL * estimate.abs() * param_area(&t) / domain;
-        let (a, m) = adaptive(s, t, whole, tol, 0);
-        area += a;
-        moment += m;
-    }
+    let (area, moment) = integrate_triangles(s, &triangles, estimate, domain);
     let centroid = if area > 0.0 {
         Point3::from(moment / area)
     } else {

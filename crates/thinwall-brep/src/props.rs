@@ -430,33 +430,49 @@ fn revolution_integrals(
         warnings: Vec::new(),
     };
     if !has_edges {
-        // A closed surface without boundary: the whole sphere or torus.
-        match *rev {
-            Revolution::Sphere { r } => out.area = 2.0 * TAU * r * r,
-            Revolution::Torus { big, r } => out.area = TAU * TAU * big * r,
-            _ => out
-                .warnings
-                .push("unbounded face without edges: area unknown".into()),
-        }
-        out.mx = 0.0;
-        out.my = 0.0;
-        out.mz = 0.0;
-        return out;
+        return without_boundary(rev, out);
     }
     let winding = (sigma * wind / TAU).round() as i64;
     if winding != 0 {
-        match rev.pole(winding) {
-            Some((v, at)) => {
-                let (g, _, k) = rev.anchored_terms(v, anchor);
-                out.area += TAU * winding as f64 * g;
-                out.mz += TAU * winding as f64 * k;
-                out.pole = Some(at);
-            }
-            None => out.warnings.push(format!(
-                "boundary winds {winding} times around the axis of a {}",
-                surface.kind_name()
-            )),
-        }
+        add_pole_term(&mut out, rev, winding, anchor, surface);
     }
     out
+}
+
+/// A closed surface without boundary: the whole sphere or torus.
+fn without_boundary(rev: &Revolution, mut out: RevolutionIntegrals) -> RevolutionIntegrals {
+    match *rev {
+        Revolution::Sphere { r } => out.area = 2.0 * TAU * r * r,
+        Revolution::Torus { big, r } => out.area = TAU * TAU * big * r,
+        _ => out
+            .warnings
+            .push("unbounded face without edges: area unknown".into()),
+    }
+    out.mx = 0.0;
+    out.my = 0.0;
+    out.mz = 0.0;
+    out
+}
+
+/// A boundary winding around the axis encloses the pole (or apex) too:
+/// add its term.
+fn add_pole_term(
+    out: &mut RevolutionIntegrals,
+    rev: &Revolution,
+    winding: i64,
+    anchor: Option<(f64, f64)>,
+    surface: &Surface,
+) {
+    match rev.pole(winding) {
+        Some((v, at)) => {
+            let (g, _, k) = rev.anchored_terms(v, anchor);
+            out.area += TAU * winding as f64 * g;
+            out.mz += TAU * winding as f64 * k;
+            out.pole = Some(at);
+        }
+        None => out.warnings.push(format!(
+            "boundary winds {winding} times around the axis of a {}",
+            surface.kind_name()
+        )),
+    }
 }

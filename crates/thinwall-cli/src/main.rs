@@ -269,6 +269,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 connect: thinwall_connect::Options {
                     connect_thick_walls: connect_thick,
                 },
+                parallel: true,
             };
             let outcome =
                 thinwall_pipeline::run(&model, None, &request).map_err(|e| e.to_string())?;

@@ -26,11 +26,25 @@ use thinwall_recognize::{Config, ConfigError, Recognition};
 use thiserror::Error;
 
 /// What to run: the set-up, recognition settings, connection options.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Request {
     pub setup: Setup,
     pub config: Config,
     pub connect: Options,
+    /// Use worker threads (rayon) inside the run; the results are the same
+    /// either way. A host that runs its own threads may turn it off.
+    pub parallel: bool,
+}
+
+impl Default for Request {
+    fn default() -> Self {
+        Self {
+            setup: Setup::default(),
+            config: Config::default(),
+            connect: Options::default(),
+            parallel: true,
+        }
+    }
 }
 
 /// Everything the pipeline found.
@@ -83,11 +97,20 @@ pub fn run(
     let a = match graph {
         Some(g) => PartAnalysis::with_graph(part, g, req.setup.clone()),
         None => PartAnalysis::new(part, req.setup.clone()),
+    }
+    .with_parallelism(req.parallel);
+    // The two recognizers only read the analysis: run them side by side
+    // (face properties first, which both use, themselves in parallel).
+    a.face_props();
+    let stiffness = || thinwall_recognize::recognize(&a, &req.config);
+    let conventional = || thinwall_machining::recognize(&a);
+    let (recognition, mut machining) = if req.parallel {
+        rayon::join(stiffness, conventional)
+    } else {
+        (stiffness(), conventional())
     };
-    let recognition = thinwall_recognize::recognize(&a, &req.config);
     let structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
     structure.validate()?;
-    let mut machining = thinwall_machining::recognize(&a);
     relate(&mut machining, &recognition);
     Ok(Outcome {
         setup: req.setup.clone(),
