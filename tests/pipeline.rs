@@ -1,0 +1,155 @@
+//! The library entry point: what planners get besides the JSON (each wall's
+//! region, side polygons and foot line), the links from machining features
+//! to the stiffness features on their faces, the same answer on a turned
+//! copy, and typed errors.
+
+mod common;
+
+use geo::Area;
+use std::collections::BTreeSet;
+use thinwall_analysis::{Machine, Setup};
+use thinwall_pipeline::{run, Outcome, PipelineError, Request};
+
+fn outcome(name: &str) -> (thinwall_brep::Part, Outcome) {
+    let dir = common::root().join("fixtures/recognition");
+    let fx: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join(format!("{name}.expected.json"))).unwrap(),
+    )
+    .unwrap();
+    let up: Vec<f64> = serde_json::from_value(fx["up"].clone()).unwrap();
+    let (part, _) = thinwall_step::read_file(dir.join(format!("{name}.step"))).unwrap();
+    let req = Request {
+        setup: Setup::new([up[0], up[1], up[2]], Machine::ThreeAxis).unwrap(),
+        ..Request::default()
+    };
+    let out = run(&part, None, &req).unwrap();
+    (part, out)
+}
+
+#[test]
+fn walls_keep_their_region_side_polygons_and_foot() {
+    let (_, out) = outcome("rib_grid_panel");
+    let walls: Vec<_> = out
+        .recognition
+        .features
+        .iter()
+        .filter(|f| f.kind.is_wall())
+        .collect();
+    assert!(walls.len() >= 8);
+    for f in walls {
+        let g = f.geometry.as_ref().expect("a wall keeps its geometry");
+        assert_eq!(Some(g.thickness), f.thickness, "{}", f.id);
+        assert!(g.region.unsigned_area() > 0.0, "{}", f.id);
+        // Every side face has its polygon, in the wall's frame.
+        for (k, side) in g.side_polygons.iter().enumerate() {
+            assert_eq!(side.len(), f.sides.as_ref().unwrap()[k].len(), "{}", f.id);
+            assert!(side.iter().all(|(_, p)| p.unsigned_area() > 0.0));
+        }
+        // The outline lies on the mid-plane.
+        let mid = f.mid_plane.as_ref().unwrap();
+        let n = thinwall_geom::Vector3::from(mid.normal);
+        let p = thinwall_geom::Point3::from(mid.point);
+        for q in g.outline() {
+            assert!((q - p).dot(&n).abs() < 1e-9, "{}", f.id);
+        }
+        // A wall on a base has a foot as long as the wall, on the mid-plane.
+        match (f.base, g.foot) {
+            (Some(_), Some([a, b])) => {
+                let len = (b - a).norm();
+                assert!((len - f.length.unwrap()).abs() < 1e-6, "{}: {len}", f.id);
+                assert!((a - p).dot(&n).abs() < 1e-9 && (b - p).dot(&n).abs() < 1e-9);
+            }
+            (None, _) => {}
+            (Some(_), None) => panic!("{}: a wall on a base without a foot", f.id),
+        }
+    }
+}
+
+#[test]
+fn machining_features_name_the_stiffness_features_on_their_faces() {
+    let mut linked = 0;
+    for name in [
+        "rib_grid_panel",
+        "c_frame",
+        "filleted_chamfered_rib",
+        "notched_rib",
+    ] {
+        let (_, out) = outcome(name);
+        for m in &out.machining {
+            let faces: BTreeSet<u64> = m.faces.iter().copied().collect();
+            let want: BTreeSet<String> = out
+                .recognition
+                .features
+                .iter()
+                .filter(|f| f.faces.iter().any(|x| faces.contains(x)))
+                .map(|f| f.id.to_string())
+                .collect();
+            let got: BTreeSet<String> = m.related.iter().map(|r| r.to_string()).collect();
+            assert_eq!(got, want, "{name} {}", m.id);
+            linked += got.len();
+        }
+        // In the JSON too.
+        let (part, _) = thinwall_step::read_file(
+            common::root().join(format!("fixtures/recognition/{name}.step")),
+        )
+        .unwrap();
+        let json = thinwall_report::recognition_report(name, &part, &out).to_json();
+        assert!(json.contains("\"related\": ["), "{name}");
+    }
+    assert!(linked > 10, "{linked} links");
+}
+
+#[test]
+fn a_turned_copy_gets_the_same_wall_geometry() {
+    let (_, a) = outcome("rib_grid_panel");
+    let (_, b) = outcome("rib_grid_panel_turned");
+    // Areas to 1e-3 mm² (polygon operations in turned frames round differently).
+    let summary = |o: &Outcome| {
+        let mut v: Vec<String> = o
+            .recognition
+            .features
+            .iter()
+            .filter_map(|f| {
+                let g = f.geometry.as_ref()?;
+                let foot = g.foot.map_or(0.0, |[p, q]| (q - p).norm());
+                Some(format!(
+                    "{} {:.3} {:.6} {:.6} {}",
+                    f.id,
+                    g.region.unsigned_area(),
+                    foot,
+                    g.thickness,
+                    g.side_polygons[0].len() + g.side_polygons[1].len()
+                ))
+            })
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(summary(&a), summary(&b));
+}
+
+#[test]
+fn bad_settings_are_typed_errors() {
+    let (part, _) =
+        thinwall_step::read_file(common::root().join("fixtures/recognition/thin_plate.step"))
+            .unwrap();
+    let mut req = Request::default();
+    req.config.thinness.force_n = -1.0;
+    let e = run(&part, None, &req).unwrap_err();
+    assert!(matches!(e, PipelineError::Config(_)), "{e:?}");
+    assert_eq!(e.code(), "config.not_positive");
+    let mut req = Request::default();
+    req.setup.up = [0.0, 0.0, 0.0];
+    let e = run(&part, None, &req).unwrap_err();
+    assert_eq!(e.code(), "setup.zero_up");
+    // Serial and parallel runs agree.
+    let serial = Request {
+        parallel: false,
+        ..Request::default()
+    };
+    let a = run(&part, None, &serial).unwrap();
+    let b = run(&part, None, &Request::default()).unwrap();
+    assert_eq!(a.recognition.features, b.recognition.features);
+    assert_eq!(a.machining, b.machining);
+    assert_eq!(a.face_props, b.face_props);
+}
