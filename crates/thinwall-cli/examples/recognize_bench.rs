@@ -58,7 +58,7 @@ fn main() {
         }
         let (a, b, c) = (median(read), median(graph), median(rec));
         println!(
-            "{faces:>8} {a:>10.3} {b:>10.3} {c:>12.3} {:>10.3} {walls:>8}",
+            "{faces:>8} {a:>10.4} {b:>10.4} {c:>12.4} {:>10.4} {walls:>8}",
             a + b + c
         );
     }
