@@ -259,7 +259,9 @@ fn closed_runs(
             if run.len() == n - 1 {
                 v.push(VolumeType::BlindSlot);
             }
-            if run.len() == 2 && normal(run[0]).dot(&normal(run[1])).abs() < 0.5 {
+            // Two sides at a corner: more than 60° apart.
+            const CORNER_MAX_COS: f64 = 0.5;
+            if run.len() == 2 && normal(run[0]).dot(&normal(run[1])).abs() < CORNER_MAX_COS {
                 v.push(VolumeType::CornerNotch);
             }
             v.push(VolumeType::Step);

@@ -62,6 +62,14 @@ pub const FEATURE_PARALLEL_DEG: f64 = 0.5;
 /// direction (machining features: block planes, floors).
 pub const UNIT_PARALLEL_EPS: f64 = 1e-9;
 
+/// `1 − cos` under which two unit directions count as parallel where a
+/// looser test than [`UNIT_PARALLEL_EPS`] is wanted (a hole's closing
+/// face across its axis, floors facing back along a feature's direction).
+pub const NEAR_PARALLEL_EPS: f64 = 1e-6;
+/// A cross product of unit vectors shorter than this gives no direction
+/// (the two were parallel).
+pub const DIRECTION_NORM_MIN: f64 = 1e-6;
+
 /// The linear tolerances recognizers and planners use, all derived from one
 /// part's bounding-box diagonal (mm) and built once per part by the
 /// analysis context. Each is a named multiple of the part's size with a

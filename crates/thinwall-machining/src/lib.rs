@@ -32,7 +32,7 @@ use std::collections::BTreeSet;
 use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
 use thinwall_analysis::{Cylinder, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::{FaceId, FaceProps};
-use thinwall_geom::tolerance::UNIT_PARALLEL_EPS;
+use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
 use thinwall_geom::{Surface, Vector3};
 use thinwall_graph::Convexity;
 
@@ -165,10 +165,13 @@ fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
     curved && a.smooth_degree(f) >= 2
 }
 
+/// Radii closer than this are one radius, mm.
+const SAME_RADIUS_MM: f64 = 1e-9;
+
 fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
     let mut r: Vec<f64> = fs.iter().filter_map(|&f| a.blend_radius(f)).collect();
     r.sort_by(f64::total_cmp);
-    r.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    r.dedup_by(|a, b| (*a - *b).abs() < SAME_RADIUS_MM);
     r
 }
 
@@ -384,7 +387,7 @@ fn hole_typing(
             Surface::Plane { .. } => {
                 a.props(f)
                     .normal
-                    .is_some_and(|n| n.dot(&axis).abs() > 1.0 - 1e-6)
+                    .is_some_and(|n| n.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
                     && at_end(f)
                     && face.loops.len() == 1
             }
@@ -460,9 +463,11 @@ fn depression_feature(
     let shape = GroupShape::new(a, group, touched);
     let (kind, through, profile) = shape.typing(a);
     let dir = shape.direction();
-    let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group
-        .iter()
-        .partition(|&&f| a.props(f).normal.is_some_and(|n| n.dot(&-dir) > 1.0 - 1e-6));
+    let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
+        a.props(f)
+            .normal
+            .is_some_and(|n| n.dot(&-dir) > 1.0 - NEAR_PARALLEL_EPS)
+    });
     let (lo, hi) = a.extent(group, &dir);
     let (length, width) = profile_sizes(a, group, &dir);
     let radii_v = radii(a, group);

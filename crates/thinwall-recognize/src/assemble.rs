@@ -11,6 +11,7 @@ use crate::walls::Wall;
 use std::collections::BTreeMap;
 use thinwall_analysis::{measure, FeatureId, PartAnalysis, StiffnessKind};
 use thinwall_brep::FaceId;
+use thinwall_geom::tolerance::DIRECTION_NORM_MIN;
 use thinwall_geom::{Point3, Surface, Vector3};
 
 /// Features before numbering, with references by position.
@@ -103,7 +104,7 @@ fn geometry(a: &PartAnalysis, wall: &Wall, s: &WallSize) -> WallGeometry {
             .collect()
     });
     let foot = s.foot_plane.and_then(|(origin, n)| {
-        let along = wall.frame.z.cross(&n).try_normalize(1e-6)?;
+        let along = wall.frame.z.cross(&n).try_normalize(DIRECTION_NORM_MIN)?;
         let on_base: Vec<Point3> = wall
             .outline()
             .iter()
@@ -166,7 +167,7 @@ pub fn depressions(
                 let wall = &walls[dep.wall];
                 let (_, top) = measure::extent(&wall.outline(), &dir);
                 f.height = Some((top - lo).max(0.0));
-                if let Some(along) = wall.frame.z.cross(&dir).try_normalize(1e-6) {
+                if let Some(along) = wall.frame.z.cross(&dir).try_normalize(DIRECTION_NORM_MIN) {
                     let (l0, l1) = a.extent(&dep.faces, &along);
                     f.width = Some(l1 - l0);
                 }

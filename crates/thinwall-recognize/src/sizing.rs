@@ -8,6 +8,7 @@ use crate::junctions::Junction;
 use crate::walls::Wall;
 use thinwall_analysis::polygon::{inscribed_radius, long_side};
 use thinwall_analysis::{measure, PartAnalysis, StiffnessKind};
+use thinwall_geom::tolerance::DIRECTION_NORM_MIN;
 use thinwall_geom::{Point3, Vector3};
 
 /// A wall's figures.
@@ -91,7 +92,7 @@ fn on_base(
             .map(|p| (p - origin).dot(&n).abs())
             .fold(0.0, f64::max);
         let along = wall.frame.z.cross(&n);
-        size.length = match along.try_normalize(1e-6) {
+        size.length = match along.try_normalize(DIRECTION_NORM_MIN) {
             Some(a) => measure::span(&pts, &a),
             None => long_side(&wall.region),
         };
@@ -137,7 +138,9 @@ fn without_base(
     let in_plane_up = up - wall.frame.z * up.dot(&wall.frame.z);
     size.height = h;
     size.length = l;
-    size.height_dir = in_plane_up.try_normalize(1e-6).unwrap_or(wall.frame.x);
+    size.height_dir = in_plane_up
+        .try_normalize(DIRECTION_NORM_MIN)
+        .unwrap_or(wall.frame.x);
 }
 
 /// Kinds: a wall carrying thin leaves is a web; a wall on a base is a rib

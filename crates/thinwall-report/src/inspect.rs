@@ -3,7 +3,8 @@
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use thinwall_brep::{compute_face_props, BodyKind, Part, Units};
+use thinwall_analysis::{PartAnalysis, Setup};
+use thinwall_brep::{BodyKind, Part, Units};
 use thinwall_geom::{BoundingBox, Point3, Vector3};
 use thinwall_graph::AdjacencyGraph;
 use thinwall_step::{ReadIssue, ReadReport};
@@ -108,9 +109,10 @@ pub fn inspect(
     let mut face_counts = BTreeMap::new();
     let mut geometry_warnings = Vec::new();
     let mut faces = Vec::with_capacity(part.faces.len());
+    let analysis = PartAnalysis::with_graph(part, graph, Setup::default());
     for id in part.face_ids() {
         let f = part.face(id);
-        let props = compute_face_props(part, id);
+        let props = analysis.props(id);
         for w in &props.warnings {
             geometry_warnings.push(ReadIssue {
                 entity: Some(f.step_id),
