@@ -215,3 +215,64 @@ fn current_type_is_kept_while_it_still_fits() {
     .unwrap_err();
     assert_eq!(e.code(), "sequence");
 }
+
+/// Classify `volumes` (paths under fixtures/classify) against `part`.
+fn request_error(
+    part: &str,
+    volumes: &[&str],
+    before: &[(usize, usize)],
+) -> thinwall_classify::ClassifyError {
+    let dir = common::root().join("fixtures/classify");
+    let (p, _) = thinwall_step::read_file(dir.join(part)).unwrap();
+    let vols: Vec<Volume> = volumes
+        .iter()
+        .map(|v| Volume {
+            name: v.to_string(),
+            part: match *v {
+                "bracket_assembly" => {
+                    thinwall_step::read_file(common::root().join("fixtures/bracket_assembly.step"))
+                }
+                _ => thinwall_step::read_file(dir.join(v)),
+            }
+            .unwrap()
+            .0,
+            current: None,
+        })
+        .collect();
+    let a = PartAnalysis::new(&p, Setup::default());
+    classify(&Request {
+        part: &a,
+        volumes: &vols,
+        before,
+        priority: vec![],
+    })
+    .unwrap_err()
+}
+
+#[test]
+fn requests_that_make_no_sense_are_refused_with_the_right_message() {
+    let two = ["stacked/v0.step", "stacked/v1.step"];
+    let e = request_error("stacked/part.step", &two, &[(0, 1), (1, 0)]);
+    assert_eq!(e.code(), "cycle", "{e}");
+    let e = request_error("stacked/part.step", &two, &[(0, 0)]);
+    assert_eq!(e.code(), "self_pair");
+    assert_eq!(e.to_string(), "volume 0 cannot be removed before itself");
+    let e = request_error("stacked/part.step", &two, &[(0, 2)]);
+    assert_eq!(e.code(), "sequence");
+    let e = request_error(
+        "stacked/part.step",
+        &["stacked/v0.step", "stacked/v0.step"],
+        &[],
+    );
+    assert_eq!(e.code(), "duplicate");
+    let e = request_error("stacked/part.step", &["stacked/part.step"], &[]);
+    assert_eq!(e.code(), "part_as_volume");
+    let e = request_error("stacked/part.step", &["bracket_assembly"], &[]);
+    assert_eq!(e.code(), "multi_body");
+    let e = request_error(
+        "pocket/part.step",
+        &["pocket/v0.step", "stacked/v0.step"],
+        &[],
+    );
+    assert_eq!(e.code(), "overlap", "{e}");
+}

@@ -208,7 +208,12 @@ pub(crate) fn pipeline_failure(e: thinwall_pipeline::PipelineError) -> Failure {
 pub(crate) fn classify_failure(e: thinwall_classify::ClassifyError) -> Failure {
     use thinwall_classify::ClassifyError as E;
     let status = match &e {
-        E::Sequence { .. } => tw_status::TW_ERR_INVALID_SEQUENCE,
+        E::Sequence { .. } | E::SelfPair { .. } | E::Cycle { .. } => {
+            tw_status::TW_ERR_INVALID_SEQUENCE
+        }
+        E::MultiBody { .. } | E::Duplicate { .. } | E::PartAsVolume { .. } | E::Overlap { .. } => {
+            tw_status::TW_ERR_INVALID_ARGUMENT
+        }
         _ => tw_status::TW_ERR_INTERNAL,
     };
     (status, e.to_string())

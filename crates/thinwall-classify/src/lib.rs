@@ -15,6 +15,7 @@
 //! println!("{}", r[0].kind);
 //! ```
 
+mod checks;
 mod coincide;
 mod profile;
 pub mod types;
@@ -59,6 +60,18 @@ pub enum ClassifyError {
         after: usize,
         count: usize,
     },
+    #[error("volume {volume} cannot be removed before itself")]
+    SelfPair { volume: usize },
+    #[error("the removal sequence is cyclic: volume {volume} would come before itself")]
+    Cycle { volume: usize },
+    #[error("volume {volume} has {bodies} bodies; a volume is one solid")]
+    MultiBody { volume: usize, bodies: usize },
+    #[error("volumes {first} and {second} are the same solid")]
+    Duplicate { first: usize, second: usize },
+    #[error("volume {volume} is the part itself, not a volume to remove")]
+    PartAsVolume { volume: usize },
+    #[error("volumes {first} and {second} overlap: a volume is removed once")]
+    Overlap { first: usize, second: usize },
 }
 
 impl ClassifyError {
@@ -66,6 +79,12 @@ impl ClassifyError {
     pub fn code(&self) -> &'static str {
         match self {
             ClassifyError::Sequence { .. } => "sequence",
+            ClassifyError::SelfPair { .. } => "self_pair",
+            ClassifyError::Cycle { .. } => "cycle",
+            ClassifyError::MultiBody { .. } => "multi_body",
+            ClassifyError::Duplicate { .. } => "duplicate",
+            ClassifyError::PartAsVolume { .. } => "part_as_volume",
+            ClassifyError::Overlap { .. } => "overlap",
         }
     }
 }
@@ -80,16 +99,7 @@ pub(crate) struct Judged<'g> {
 
 /// Classify every volume of the request.
 pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
-    let count = req.volumes.len();
-    for &(a, b) in req.before {
-        if a >= count || b >= count || a == b {
-            return Err(ClassifyError::Sequence {
-                before: a,
-                after: b,
-                count,
-            });
-        }
-    }
+    checks::sequence(req.before, req.volumes.len())?;
     let up = req.part.up();
     let priority = if req.priority.is_empty() {
         DEFAULT_PRIORITY.to_vec()
@@ -104,7 +114,9 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
         .iter()
         .map(|v| PartAnalysis::new(&v.part, Setup::clone(req.part.setup())))
         .collect();
+    checks::volumes(req.part, req.volumes, &analyses)?;
     let vol_faces: Vec<Vec<FaceGeom>> = analyses.iter().map(FaceGeom::all).collect();
+    checks::overlaps(&vol_faces, &up, &tol)?;
     let mut out = Vec::new();
     for (vi, vol) in req.volumes.iter().enumerate() {
         let predecessors: HashSet<usize> = req

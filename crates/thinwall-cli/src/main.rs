@@ -7,6 +7,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use thinwall_graph::AdjacencyGraph;
 
+mod failure;
+use failure::Failure;
+
 #[derive(Parser)]
 #[command(
     name = "thinwall",
@@ -123,11 +126,11 @@ fn classify_command(
     before: Vec<(usize, usize)>,
     up: Option<[f64; 3]>,
     format: Format,
-) -> Result<(), String> {
-    let (model, _) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+) -> Result<(), Failure> {
+    let (model, _) = thinwall_step::read_file(&part)?;
     let mut volumes = Vec::new();
     for v in &volume {
-        let (p, _) = thinwall_step::read_file(v).map_err(|e| e.to_string())?;
+        let (p, _) = thinwall_step::read_file(v)?;
         volumes.push(thinwall_classify::Volume {
             name: v.display().to_string(),
             part: p,
@@ -138,15 +141,14 @@ fn classify_command(
         up.unwrap_or([0.0, 0.0, 1.0]),
         thinwall_analysis::Machine::ThreeAxis,
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(Failure::usage)?;
     let analysis = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
     let result = thinwall_classify::classify(&thinwall_classify::Request {
         part: &analysis,
         volumes: &volumes,
         before: &before,
         priority: vec![],
-    })
-    .map_err(|e| e.to_string())?;
+    })?;
     let report = thinwall_report::ClassificationReport::new(
         &part.display().to_string(),
         setup.up,
@@ -178,14 +180,14 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("thinwall: error: {message}");
-            ExitCode::FAILURE
+        Err(failure) => {
+            eprintln!("thinwall: error: {}", failure.message());
+            ExitCode::from(failure.exit_code())
         }
     }
 }
 
-fn run(cli: Cli) -> Result<(), String> {
+fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
         Command::Classify {
             part,
@@ -195,17 +197,14 @@ fn run(cli: Cli) -> Result<(), String> {
             format,
         } => classify_command(part, volume, before, up, format),
         Command::Inspect { part, format } => {
-            let (model, read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
+            let (model, read) = thinwall_step::read_file(&part)?;
             let graph = AdjacencyGraph::build(&model, &model.tolerances());
             let report =
                 thinwall_report::inspect(&part.display().to_string(), &model, &read, &graph);
-            let text = match format {
+            write_out(&match format {
                 Format::Text => report.to_text(),
-                Format::Json => {
-                    serde_json::to_string_pretty(&report).map_err(|e| e.to_string())? + "\n"
-                }
-            };
-            write_out(&text)
+                Format::Json => report.to_json(),
+            })
         }
         Command::Recognize {
             part,
@@ -221,71 +220,106 @@ fn run(cli: Cli) -> Result<(), String> {
             connect_thick,
             format,
         } => {
-            let settings = match &config {
-                Some(path) => {
-                    let text = std::fs::read_to_string(path)
-                        .map_err(|e| format!("{}: {e}", path.display()))?;
-                    thinwall_pipeline::Settings::from_toml(&text, &path.display().to_string())
-                        .map_err(|e| e.to_string())?
-                }
-                None => thinwall_pipeline::Settings::default(),
+            let flags = RecognizeFlags {
+                up,
+                config,
+                include,
+                exclude,
+                force,
+                allowed_deflection,
+                tool_diameter,
+                machine,
+                tilt_limit,
+                connect_thick,
             };
-            let mut cfg = settings.config;
-            for (list, names) in [(&mut cfg.include, &include), (&mut cfg.exclude, &exclude)] {
-                for n in names.iter().filter(|n| !n.is_empty()) {
-                    list.push(
-                        thinwall_analysis::StiffnessKind::parse(n)
-                            .ok_or_else(|| format!("unknown feature kind '{n}'"))?,
-                    );
-                }
-            }
-            if let Some(f) = force {
-                cfg.thinness.force_n = f;
-            }
-            if let Some(d) = allowed_deflection {
-                cfg.thinness.allowed_deflection_mm = d;
-            }
-            if let Some(d) = tool_diameter {
-                cfg.thresholds.preferred_tool_diameter_mm = d;
-            }
-            cfg.validate().map_err(|e| e.to_string())?;
-            if !(tilt_limit.is_finite() && (0.0..=90.0).contains(&tilt_limit)) {
-                return Err(format!(
-                    "--tilt-limit must be within 0..90 degrees, got {tilt_limit}"
-                ));
-            }
-            let machine = match machine {
-                MachineArg::ThreeAxis => thinwall_analysis::Machine::ThreeAxis,
-                MachineArg::FiveAxis => thinwall_analysis::Machine::FiveAxis {
-                    tilt_limit_deg: tilt_limit,
-                },
-            };
-            let up = up.or(settings.up).unwrap_or([0.0, 0.0, 1.0]);
-            let setup = thinwall_analysis::Setup::new(up, machine).map_err(|e| e.to_string())?;
-            let (model, _read) = thinwall_step::read_file(&part).map_err(|e| e.to_string())?;
-            let request = thinwall_pipeline::Request {
-                setup,
-                config: cfg,
-                connect: thinwall_connect::Options {
-                    connect_thick_walls: connect_thick,
-                },
-                parallel: true,
-            };
-            let outcome =
-                thinwall_pipeline::run(&model, None, &request).map_err(|e| e.to_string())?;
+            let request = flags.request()?;
+            let (model, _read) = thinwall_step::read_file(&part)?;
+            let outcome = thinwall_pipeline::run(&model, None, &request)?;
             let report =
                 thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome);
-            let text = match format {
+            write_out(&match format {
                 Format::Text => report.to_text(),
                 Format::Json => report.to_json(),
-            };
-            write_out(&text)
+            })
         }
     }
 }
 
-fn write_out(text: &str) -> Result<(), String> {
+/// The settings flags of `recognize`.
+struct RecognizeFlags {
+    up: Option<[f64; 3]>,
+    config: Option<PathBuf>,
+    include: Vec<String>,
+    exclude: Vec<String>,
+    force: Option<f64>,
+    allowed_deflection: Option<f64>,
+    tool_diameter: Option<f64>,
+    machine: MachineArg,
+    tilt_limit: f64,
+    connect_thick: bool,
+}
+
+impl RecognizeFlags {
+    /// The request: the settings file (if any), then the flags over it.
+    fn request(self) -> Result<thinwall_pipeline::Request, Failure> {
+        let settings = match &self.config {
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+                thinwall_pipeline::Settings::from_toml(&text, &path.display().to_string())
+                    .map_err(Failure::usage)?
+            }
+            None => thinwall_pipeline::Settings::default(),
+        };
+        let mut cfg = settings.config;
+        for (list, names) in [
+            (&mut cfg.include, &self.include),
+            (&mut cfg.exclude, &self.exclude),
+        ] {
+            for n in names.iter().filter(|n| !n.is_empty()) {
+                list.push(
+                    thinwall_analysis::StiffnessKind::parse(n)
+                        .ok_or_else(|| Failure::Usage(format!("unknown feature kind '{n}'")))?,
+                );
+            }
+        }
+        if let Some(f) = self.force {
+            cfg.thinness.force_n = f;
+        }
+        if let Some(d) = self.allowed_deflection {
+            cfg.thinness.allowed_deflection_mm = d;
+        }
+        if let Some(d) = self.tool_diameter {
+            cfg.thresholds.preferred_tool_diameter_mm = d;
+        }
+        cfg.validate().map_err(Failure::usage)?;
+        if !(self.tilt_limit.is_finite() && (0.0..=90.0).contains(&self.tilt_limit)) {
+            return Err(Failure::Usage(format!(
+                "--tilt-limit must be within 0..90 degrees, got {}",
+                self.tilt_limit
+            )));
+        }
+        let machine = match self.machine {
+            MachineArg::ThreeAxis => thinwall_analysis::Machine::ThreeAxis,
+            MachineArg::FiveAxis => thinwall_analysis::Machine::FiveAxis {
+                tilt_limit_deg: self.tilt_limit,
+            },
+        };
+        let up = self.up.or(settings.up).unwrap_or([0.0, 0.0, 1.0]);
+        let setup = thinwall_analysis::Setup::new(up, machine).map_err(Failure::usage)?;
+        Ok(thinwall_pipeline::Request {
+            setup,
+            config: cfg,
+            connect: thinwall_connect::Options {
+                connect_thick_walls: self.connect_thick,
+            },
+            parallel: true,
+        })
+    }
+}
+
+fn write_out(text: &str) -> Result<(), Failure> {
     std::io::stdout()
         .write_all(text.as_bytes())
-        .map_err(|e| format!("cannot write output: {e}"))
+        .map_err(|e| Failure::Input(format!("cannot write output: {e}")))
 }

@@ -186,7 +186,11 @@ fn recognize_text_options_and_errors() {
         .arg(fixture("recognition/c_frame.step"))
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "a bad flag value is a usage error"
+    );
     assert!(String::from_utf8_lossy(&out.stderr).contains("bogus"));
     let out = bin()
         .args(["recognize", "--up", "0,0"])
@@ -204,7 +208,11 @@ fn recognize_text_options_and_errors() {
         .arg(fixture("recognition/c_frame.step"))
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "unusable settings are a usage error"
+    );
     assert!(String::from_utf8_lossy(&out.stderr).contains("force_n"));
     // A stiffer machine (less force) makes walls less thin.
     let cfg = dir.join("soft.toml");
@@ -269,7 +277,7 @@ fn classify_json_and_errors() {
         .args(["--before", "0:5"])
         .output()
         .unwrap();
-    assert_eq!(bad.status.code(), Some(1));
+    assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("0..1"));
     let bad = bin()
         .arg("classify")
@@ -281,4 +289,182 @@ fn classify_json_and_errors() {
         .output()
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));
+}
+
+/// Check `value` against the parts of JSON Schema our schemas use:
+/// `required`, `properties`, `items`, `type`, `enum`, `pattern` (as a
+/// prefix or whole-match of simple patterns is not needed: only presence
+/// and kinds). Returns the problems, with their paths.
+fn schema_problems(
+    schema: &serde_json::Value,
+    value: &serde_json::Value,
+    path: &str,
+) -> Vec<String> {
+    use serde_json::Value;
+    let mut out = Vec::new();
+    if let Some(t) = schema.get("type") {
+        let kinds: Vec<&str> = match t {
+            Value::String(k) => vec![k.as_str()],
+            Value::Array(ks) => ks.iter().filter_map(|k| k.as_str()).collect(),
+            _ => vec![],
+        };
+        let ok = kinds.iter().any(|k| match *k {
+            "object" => value.is_object(),
+            "array" => value.is_array(),
+            "string" => value.is_string(),
+            "number" => value.is_number(),
+            "integer" => value.is_u64() || value.is_i64(),
+            "boolean" => value.is_boolean(),
+            "null" => value.is_null(),
+            _ => true,
+        });
+        if !ok {
+            out.push(format!("{path}: {value} is not {kinds:?}"));
+        }
+    }
+    if let Some(Value::Array(allowed)) = schema.get("enum") {
+        if !allowed.contains(value) {
+            out.push(format!("{path}: {value} not in {allowed:?}"));
+        }
+    }
+    if let (Some(Value::Array(req)), Some(obj)) = (schema.get("required"), value.as_object()) {
+        for k in req.iter().filter_map(|k| k.as_str()) {
+            if !obj.contains_key(k) {
+                out.push(format!("{path}: missing {k}"));
+            }
+        }
+    }
+    if let (Some(Value::Object(props)), Some(obj)) = (schema.get("properties"), value.as_object()) {
+        for (k, sub) in props {
+            if let Some(v) = obj.get(k) {
+                out.extend(schema_problems(sub, v, &format!("{path}/{k}")));
+            }
+        }
+    }
+    if let (Some(items), Some(arr)) = (schema.get("items"), value.as_array()) {
+        for (i, v) in arr.iter().enumerate() {
+            out.extend(schema_problems(items, v, &format!("{path}/{i}")));
+        }
+    }
+    out
+}
+
+fn schema(name: &str) -> serde_json::Value {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("../../docs/schema/{name}.schema.json"));
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn every_json_output_follows_its_schema_and_names_its_version() {
+    let version = env!("CARGO_PKG_VERSION");
+    let mut outputs = vec![
+        (
+            "inspect",
+            json_of(
+                bin()
+                    .args(["inspect", "--format", "json"])
+                    .arg(fixture("recognition/c_frame.step")),
+            ),
+        ),
+        (
+            "inspect",
+            json_of(
+                bin()
+                    .args(["inspect", "--format", "json"])
+                    .arg(fixture("bracket_assembly.step")),
+            ),
+        ),
+        (
+            "recognition",
+            json_of(
+                bin()
+                    .args(["recognize"])
+                    .arg(fixture("recognition/rib_grid_panel.step")),
+            ),
+        ),
+        (
+            "recognition",
+            json_of(
+                bin()
+                    .args(["recognize", "--exclude", "web"])
+                    .arg(fixture("recognition/c_frame.step")),
+            ),
+        ),
+    ];
+    let case = fixture("classify/stacked");
+    outputs.push((
+        "classification",
+        json_of(
+            bin()
+                .arg("classify")
+                .arg("--part")
+                .arg(case.join("part.step"))
+                .arg("--volume")
+                .arg(case.join("v0.step"))
+                .arg("--volume")
+                .arg(case.join("v1.step"))
+                .args(["--before", "0:1"]),
+        ),
+    ));
+    for (name, v) in &outputs {
+        let problems = schema_problems(&schema(name), v, name);
+        assert!(problems.is_empty(), "{problems:#?}");
+        assert_eq!(v["thinwall_version"], version, "{name}");
+        assert!(v["schema"]
+            .as_str()
+            .unwrap()
+            .starts_with(&format!("thinwall/{name}/")));
+    }
+    // The settings in force are in the recognition report.
+    let r = &outputs[3].1;
+    assert_eq!(
+        r["settings"]["recognition"]["exclude"],
+        serde_json::json!(["web"])
+    );
+    assert_eq!(r["settings"]["recognition"]["thinness"]["force_n"], 200.0);
+    // A wrong output is caught: the checker is not a rubber stamp.
+    let mut broken = outputs[2].1.clone();
+    broken["stiffness_features"][0]["kind"] = serde_json::json!("girder");
+    broken.as_object_mut().unwrap().remove("setup");
+    assert_eq!(
+        schema_problems(&schema("recognition"), &broken, "r").len(),
+        2
+    );
+}
+
+#[test]
+fn exit_codes_follow_the_kind_of_error() {
+    // 1: input data (a missing file); 2: usage (bad flag value, bad
+    // settings, contradictory filters, an impossible sequence).
+    let part = fixture("recognition/c_frame.step");
+    let code = |args: &[&str], file: &std::path::Path| {
+        bin().args(args).arg(file).output().unwrap().status.code()
+    };
+    assert_eq!(
+        code(&["recognize"], std::path::Path::new("/no/such.step")),
+        Some(1)
+    );
+    assert_eq!(code(&["recognize", "--force", "1e400"], &part), Some(2));
+    assert_eq!(
+        code(
+            &["recognize", "--include", "hole", "--exclude", "hole"],
+            &part
+        ),
+        Some(2)
+    );
+    assert_eq!(
+        code(
+            &["recognize", "--tilt-limit", "95", "--machine", "5-axis"],
+            &part
+        ),
+        Some(2)
+    );
+    let out = bin()
+        .args(["recognize", "--force", "1e400"])
+        .arg(&part)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("force_n") && err.contains("finite"), "{err}");
 }

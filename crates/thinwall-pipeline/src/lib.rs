@@ -26,13 +26,14 @@ use thinwall_recognize::{Config, ConfigError, Recognition};
 use thiserror::Error;
 
 /// What to run: the set-up, recognition settings, connection options.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Request {
     pub setup: Setup,
     pub config: Config,
     pub connect: Options,
     /// Use worker threads (rayon) inside the run; the results are the same
     /// either way. A host that runs its own threads may turn it off.
+    #[serde(skip)]
     pub parallel: bool,
 }
 
@@ -47,9 +48,13 @@ impl Default for Request {
     }
 }
 
-/// Everything the pipeline found.
+/// Everything the pipeline found. Recognition and connections cover every
+/// kind; `request.config.include`/`exclude` only say which rows a report
+/// shows.
 #[derive(Clone, Debug)]
 pub struct Outcome {
+    /// The settings in force.
+    pub request: Request,
     pub setup: Setup,
     pub recognition: Recognition,
     pub structure: Structure,
@@ -113,6 +118,7 @@ pub fn run(
     structure.validate()?;
     relate(&mut machining, &recognition);
     Ok(Outcome {
+        request: req.clone(),
         setup: req.setup.clone(),
         recognition,
         structure,

@@ -23,14 +23,13 @@ pub struct Draft {
     pub wall_feature: Vec<Option<usize>>,
 }
 
-/// The wall features (those `config` reports).
+/// The wall features.
 pub fn walls(
     a: &PartAnalysis,
     walls: &[Wall],
     sizes: &[WallSize],
     kinds: &[StiffnessKind],
     claims: &Claims,
-    config: &Config,
 ) -> Draft {
     let mut d = Draft {
         features: Vec::new(),
@@ -38,11 +37,9 @@ pub fn walls(
         wall_feature: vec![None; walls.len()],
     };
     for (w, wall) in walls.iter().enumerate() {
-        if config.reports(kinds[w]) {
-            d.wall_feature[w] = Some(d.features.len());
-            d.features
-                .push(wall_feature(a, wall, &sizes[w], kinds[w], &claims.rims[w]));
-        }
+        d.wall_feature[w] = Some(d.features.len());
+        d.features
+            .push(wall_feature(a, wall, &sizes[w], kinds[w], &claims.rims[w]));
     }
     for (w, &fi) in d.wall_feature.clone().iter().enumerate() {
         if fi.is_some() {
@@ -125,7 +122,7 @@ fn geometry(a: &PartAnalysis, wall: &Wall, s: &WallSize) -> WallGeometry {
     }
 }
 
-/// Add the depressions (holes, cut-outs, notches) `config` reports.
+/// Add the depressions (holes, cut-outs, notches).
 pub fn depressions(
     a: &PartAnalysis,
     d: &mut Draft,
@@ -140,9 +137,6 @@ pub fn depressions(
             DepressionKind::Cutout => StiffnessKind::Cutout,
             DepressionKind::Notch => StiffnessKind::Notch,
         };
-        if !config.reports(kind) {
-            continue;
-        }
         let mut f = StiffnessFeature::new(kind, a.step_ids(&dep.faces));
         let dir = sizes[dep.wall].height_dir;
         let (lo, hi) = a.extent(&dep.faces, &dir);
@@ -186,7 +180,6 @@ pub fn details(
     walls: &[Wall],
     sizes: &[WallSize],
     claims: &Claims,
-    config: &Config,
 ) {
     let mut walls_of_face: BTreeMap<FaceId, Vec<usize>> = BTreeMap::new();
     for (w, wall) in walls.iter().enumerate() {
@@ -211,24 +204,20 @@ pub fn details(
         touched.sort_by_key(|&w| (!sizes[w].thin, sizes[w].base.is_none(), w));
         touched.first().copied()
     };
-    if config.reports(StiffnessKind::Fillet) {
-        for b in &claims.blends {
-            let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
-            f.radius = b.radius;
-            f.convex = Some(b.convex);
-            d.features.push(f);
-            d.refs
-                .push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
-        }
+    for b in &claims.blends {
+        let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
+        f.radius = b.radius;
+        f.convex = Some(b.convex);
+        d.features.push(f);
+        d.refs
+            .push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
     }
-    if config.reports(StiffnessKind::Chamfer) {
-        for (c, width) in &claims.chamfers {
-            let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
-            f.width = Some(*width);
-            d.features.push(f);
-            d.refs
-                .push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
-        }
+    for (c, width) in &claims.chamfers {
+        let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
+        f.width = Some(*width);
+        d.features.push(f);
+        d.refs
+            .push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
     }
 }
 

@@ -99,8 +99,14 @@ impl Default for Config {
 pub enum ConfigError {
     #[error("{file}: {message}")]
     Toml { file: String, message: String },
-    #[error("invalid setting: {name} must be positive, got {value}")]
+    #[error("invalid setting: {name} must be a positive finite number, got {value}")]
     NotPositive { name: &'static str, value: f64 },
+    #[error("invalid setting: {name} must be below {limit}, got {value}")]
+    TooLarge {
+        name: &'static str,
+        value: f64,
+        limit: f64,
+    },
     #[error("invalid setting: {kind} is both included and excluded")]
     IncludedAndExcluded { kind: Kind },
 }
@@ -111,6 +117,7 @@ impl ConfigError {
         match self {
             ConfigError::Toml { .. } => "config_file",
             ConfigError::NotPositive { .. } => "not_positive",
+            ConfigError::TooLarge { .. } => "too_large",
             ConfigError::IncludedAndExcluded { .. } => "included_and_excluded",
         }
     }
@@ -138,20 +145,28 @@ impl Config {
 
     /// Reject values the models cannot work with.
     pub fn validate(&self) -> Result<(), ConfigError> {
-        let t = &self.thinness;
+        let (t, h) = (&self.thinness, &self.thresholds);
         for (name, value) in [
             ("force_n", t.force_n),
             ("youngs_modulus_n_mm2", t.youngs_modulus_n_mm2),
             ("allowed_deflection_mm", t.allowed_deflection_mm),
             ("effective_length_factor", t.effective_length_factor),
-            (
-                "preferred_tool_diameter_mm",
-                self.thresholds.preferred_tool_diameter_mm,
-            ),
+            ("parallel_angle_deg", h.parallel_angle_deg),
+            ("min_width_to_thickness", h.min_width_to_thickness),
+            ("preferred_tool_diameter_mm", h.preferred_tool_diameter_mm),
+            ("large_hole_factor", h.large_hole_factor),
+            ("chamfer_max_width_mm", h.chamfer_max_width_mm),
         ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(ConfigError::NotPositive { name, value });
             }
+        }
+        if h.parallel_angle_deg >= 45.0 {
+            return Err(ConfigError::TooLarge {
+                name: "parallel_angle_deg",
+                value: h.parallel_angle_deg,
+                limit: 45.0,
+            });
         }
         if let Some(&kind) = self.include.iter().find(|k| self.exclude.contains(k)) {
             return Err(ConfigError::IncludedAndExcluded { kind });
@@ -191,6 +206,16 @@ mod tests {
                 .code(),
             "config_file"
         );
+        for bad in [
+            "[thresholds]\nparallel_angle_deg = -1.0\n",
+            "[thresholds]\nchamfer_max_width_mm = -5.0\n",
+            "[thinness]\nforce_n = inf\n",
+        ] {
+            let e = Config::from_toml(bad, "t.toml").unwrap_err();
+            assert_eq!(e.code(), "not_positive", "{bad}");
+        }
+        let e = Config::from_toml("[thresholds]\nparallel_angle_deg = 60.0\n", "t.toml");
+        assert_eq!(e.unwrap_err().code(), "too_large");
         let both = "include = [\"hole\"]\nexclude = [\"hole\"]\n";
         let e = Config::from_toml(both, "t.toml").unwrap_err();
         assert_eq!(e.code(), "included_and_excluded");

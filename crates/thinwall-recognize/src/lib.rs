@@ -71,9 +71,9 @@ pub fn recognize(a: &PartAnalysis, config: &Config) -> Recognition {
     let kinds = sizing::kinds(&sizes);
     let thin: Vec<bool> = sizes.iter().map(|s| s.thin).collect();
     let claims = claims::claim(a, &walls, &thin, config);
-    let mut draft = assemble::walls(a, &walls, &sizes, &kinds, &claims, config);
+    let mut draft = assemble::walls(a, &walls, &sizes, &kinds, &claims);
     assemble::depressions(a, &mut draft, &walls, &sizes, &claims.depressions, config);
-    assemble::details(a, &mut draft, &walls, &sizes, &claims, config);
+    assemble::details(a, &mut draft, &walls, &sizes, &claims);
     let wall_feature = draft.wall_feature.clone();
     let (features, new_pos) = assemble::number(draft);
     let wall_pos = |w: usize| wall_feature[w].map(|fi| new_pos[fi]);

@@ -11,6 +11,8 @@ pub const CLASSIFICATION_SCHEMA: &str = "thinwall/classification/1";
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ClassificationReport {
     pub schema: String,
+    /// The Thinwall version that wrote it.
+    pub thinwall_version: String,
     pub part: String,
     pub up: [f64; 3],
     /// `[a, b]`: volume `a` is removed before volume `b`.
@@ -28,6 +30,7 @@ impl ClassificationReport {
     ) -> Self {
         Self {
             schema: CLASSIFICATION_SCHEMA.to_string(),
+            thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
             part: part.to_string(),
             up,
             before: before.iter().map(|&(a, b)| [a, b]).collect(),

@@ -81,6 +81,8 @@ pub struct ReadSummary {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct InspectReport {
     pub schema: String,
+    /// The Thinwall version that wrote it.
+    pub thinwall_version: String,
     pub file: String,
     pub units: Units,
     pub bodies: Vec<BodyEntry>,
@@ -168,6 +170,7 @@ pub fn inspect(
         .collect();
     InspectReport {
         schema: INSPECT_SCHEMA.to_string(),
+        thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
         file: file.to_string(),
         units: part.units.clone(),
         bodies,
@@ -190,6 +193,13 @@ pub fn inspect(
 }
 
 impl InspectReport {
+    /// The report as `thinwall inspect --format json` prints it
+    /// (`docs/schema/inspect.schema.json`).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+            + "\n"
+    }
+
     /// A summary for people: bodies, size, counts, and what the reader did.
     pub fn to_text(&self) -> String {
         let mut s = String::new();

@@ -7,7 +7,7 @@ use thinwall_brep::{Part, Units};
 use thinwall_connect::{Connection, Setup, SideAccess};
 use thinwall_geom::BoundingBox;
 use thinwall_pipeline::Outcome;
-use thinwall_recognize::{StiffnessFeature, StiffnessKind};
+use thinwall_recognize::{FeatureId, StiffnessFeature, StiffnessKind};
 
 /// Version tag of the JSON layout.
 pub const RECOGNITION_SCHEMA: &str = "thinwall/recognition/1";
@@ -43,12 +43,23 @@ pub struct FeatureEntry {
     pub access: Option<[SideAccess; 2]>,
 }
 
+/// The settings a report was made with.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct SettingsUsed {
+    pub recognition: thinwall_recognize::Config,
+    pub connections: thinwall_connect::Options,
+}
+
 /// The whole recognition report.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RecognitionReport {
     pub schema: String,
+    /// The Thinwall version that wrote it.
+    pub thinwall_version: String,
     pub part: PartSummary,
     pub setup: Setup,
+    /// The settings in force (include/exclude only hide rows).
+    pub settings: SettingsUsed,
     pub faces: Vec<FaceSummary>,
     pub stiffness_features: Vec<FeatureEntry>,
     pub connections: Vec<Connection>,
@@ -59,8 +70,13 @@ pub struct RecognitionReport {
     pub machining_features: Vec<thinwall_machining::MachiningFeature>,
 }
 
-/// Build the report of a pipeline run on `part` (read from `file`).
+/// Build the report of a pipeline run on `part` (read from `file`). The
+/// run's include/exclude settings hide rows here: features of hidden kinds,
+/// connections touching them, and links to them; ids and connections among
+/// the features shown are those of the whole recognition.
 pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> RecognitionReport {
+    let config = &out.request.config;
+    let shown = |id: &FeatureId| config.reports(id.kind);
     let faces = part
         .face_ids()
         .map(|f| {
@@ -73,8 +89,23 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             }
         })
         .collect();
+    let connections = out
+        .structure
+        .connections
+        .iter()
+        .filter(|c| match c {
+            Connection::BaseLeaf { base, leaf } => shown(base) && shown(leaf),
+            Connection::Crossing { features } => features.iter().all(shown),
+        })
+        .cloned()
+        .collect();
+    let mut machining_features = out.machining.clone();
+    for m in &mut machining_features {
+        m.related.retain(shown);
+    }
     RecognitionReport {
         schema: RECOGNITION_SCHEMA.to_string(),
+        thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
         part: PartSummary {
             file: file.to_string(),
             units: part.units.clone(),
@@ -83,19 +114,24 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             bounding_box: part.bounding_box(),
         },
         setup: out.setup.clone(),
+        settings: SettingsUsed {
+            recognition: config.clone(),
+            connections: out.request.connect.clone(),
+        },
         faces,
         stiffness_features: out
             .recognition
             .features
             .iter()
+            .filter(|f| shown(&f.id))
             .map(|f| FeatureEntry {
                 feature: f.clone(),
                 access: out.structure.access.get(&f.id).cloned(),
             })
             .collect(),
-        connections: out.structure.connections.clone(),
+        connections,
         notes: out.structure.notes.clone(),
-        machining_features: out.machining.clone(),
+        machining_features,
     }
 }
 

@@ -1,0 +1,61 @@
+//! What went wrong, by kind, with one exit code per kind: 2 when the
+//! command line or the settings cannot be used (usage), 1 when the input
+//! data cannot be (a missing, unreadable or unsupported file), 3 when
+//! Thinwall itself failed (internal: please report it).
+
+/// A failed command.
+#[derive(Debug)]
+pub enum Failure {
+    /// Exit 2: a flag, a value or a settings file that cannot be used.
+    Usage(String),
+    /// Exit 1: input data that cannot be read or used.
+    Input(String),
+    /// Exit 3: a defect of Thinwall.
+    Internal(String),
+}
+
+impl Failure {
+    pub fn usage(e: impl std::fmt::Display) -> Self {
+        Failure::Usage(e.to_string())
+    }
+
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Failure::Usage(_) => 2,
+            Failure::Input(_) => 1,
+            Failure::Internal(_) => 3,
+        }
+    }
+
+    pub fn message(&self) -> &str {
+        match self {
+            Failure::Usage(m) | Failure::Input(m) | Failure::Internal(m) => m,
+        }
+    }
+}
+
+impl From<thinwall_step::StepError> for Failure {
+    fn from(e: thinwall_step::StepError) -> Self {
+        if e.code() == "internal" {
+            Failure::Internal(e.to_string())
+        } else {
+            Failure::Input(e.to_string())
+        }
+    }
+}
+
+impl From<thinwall_pipeline::PipelineError> for Failure {
+    fn from(e: thinwall_pipeline::PipelineError) -> Self {
+        use thinwall_pipeline::PipelineError as E;
+        match e {
+            E::Config(_) | E::Setup(_) => Failure::Usage(e.to_string()),
+            _ => Failure::Internal(e.to_string()),
+        }
+    }
+}
+
+impl From<thinwall_classify::ClassifyError> for Failure {
+    fn from(e: thinwall_classify::ClassifyError) -> Self {
+        Failure::Usage(e.to_string())
+    }
+}
