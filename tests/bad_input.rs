@@ -151,7 +151,67 @@ fn dangling_reference_is_reported_with_the_entity() {
     let e = err(text.as_bytes());
     assert_eq!(e.code(), "no_brep");
     let msg = e.to_string();
-    assert!(msg.contains("bad.step") && msg.contains('#'), "{msg}");
+    assert!(
+        msg.contains("bad.step")
+            && msg.contains("#17 refers to #99999, which the file does not define"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn a_missing_face_is_named() {
+    // The shell's first face is not in the file at all.
+    let text: String = good()
+        .lines()
+        .filter(|l| !l.starts_with("#17 = ADVANCED_FACE"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let e = err(text.as_bytes());
+    assert_eq!(e.code(), "no_brep");
+    assert!(
+        e.to_string()
+            .contains("#16 refers to #17, which the file does not define"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_open_shell_read_as_a_solid_is_refused_unless_allowed() {
+    // A CLOSED_SHELL missing one of its faces: its neighbours' edges are
+    // used once.
+    let text = good().replacen(
+        "#16 = CLOSED_SHELL('',(#17,#137,",
+        "#16 = CLOSED_SHELL('',(#137,",
+        1,
+    );
+    assert_ne!(text, good(), "fixture text changed upstream");
+    let (part, _) = read_bytes(text.as_bytes(), "open.step").expect("read as a solid");
+    let e =
+        thinwall_pipeline::run(&part, None, &thinwall_pipeline::Request::default()).unwrap_err();
+    assert_eq!(e.code(), "input.open_shell", "{e}");
+    assert!(
+        e.to_string().contains("edges are used by one face only"),
+        "{e}"
+    );
+    let allow = thinwall_pipeline::Request {
+        allow_open: true,
+        ..Default::default()
+    };
+    let out = thinwall_pipeline::run(&part, None, &allow).unwrap();
+    let open: Vec<_> = out
+        .warnings
+        .iter()
+        .filter(|w| w.message.contains("used by one face only"))
+        .collect();
+    assert!(open.len() >= 4, "{:?}", out.warnings);
+    assert!(open.iter().all(|w| w.entity.is_some()));
+    // The intact part has no such warning and no free edge.
+    let (whole, _) = read_bytes(good().as_bytes(), "good.step").unwrap();
+    let out = thinwall_pipeline::run(&whole, None, &Default::default()).unwrap();
+    assert!(out
+        .warnings
+        .iter()
+        .all(|w| !w.message.contains("one face only")));
 }
 
 #[test]

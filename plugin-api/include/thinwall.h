@@ -164,6 +164,10 @@ enum tw_status tw_options_set_connect_thick(struct tw_options *opt, bool connect
 // thread only). The results are the same either way.
 enum tw_status tw_options_set_parallel(struct tw_options *opt, bool parallel);
 
+// Recognize parts whose shell is open (edges used by one face only)
+// instead of refusing them with `TW_ERR_INVALID_PART` (default false).
+enum tw_status tw_options_set_allow_open(struct tw_options *opt, bool allow);
+
 // Free options. NULL is allowed.
 void tw_options_free(struct tw_options *opt);
 

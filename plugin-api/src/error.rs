@@ -198,6 +198,7 @@ pub(crate) fn pipeline_failure(e: thinwall_pipeline::PipelineError) -> Failure {
     let status = match &e {
         E::Config(_) => tw_status::TW_ERR_INVALID_CONFIG,
         E::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
+        E::OpenShell { .. } => tw_status::TW_ERR_INVALID_PART,
         E::Structure(_) => tw_status::TW_ERR_RECOGNITION,
         _ => tw_status::TW_ERR_INTERNAL,
     };

@@ -163,6 +163,16 @@ pub unsafe extern "C" fn tw_options_set_parallel(
     })
 }
 
+/// Recognize parts whose shell is open (edges used by one face only)
+/// instead of refusing them with `TW_ERR_INVALID_PART` (default false).
+#[no_mangle]
+pub unsafe extern "C" fn tw_options_set_allow_open(opt: *mut tw_options, allow: bool) -> tw_status {
+    with(opt, |o| {
+        o.request.allow_open = allow;
+        Ok(())
+    })
+}
+
 /// Free options. NULL is allowed.
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_free(opt: *mut tw_options) {

@@ -10,6 +10,8 @@ pub struct tw_part {
     pub(crate) name: String,
     pub(crate) part: Part,
     pub(crate) graph: AdjacencyGraph,
+    /// What the reader dropped or repaired (reported with a recognition).
+    pub(crate) read: thinwall_step::ReadReport,
 }
 
 /// A part from a read, with its adjacency graph.
@@ -17,9 +19,14 @@ fn finish(
     read: Result<(Part, thinwall_step::ReadReport), thinwall_step::StepError>,
     name: String,
 ) -> Result<tw_part, Failure> {
-    let (part, _) = read.map_err(read_failure)?;
+    let (part, read) = read.map_err(read_failure)?;
     let graph = AdjacencyGraph::build(&part, &part.tolerances());
-    Ok(tw_part { name, part, graph })
+    Ok(tw_part {
+        name,
+        part,
+        graph,
+        read,
+    })
 }
 
 /// Read the STEP file at `path` (UTF-8). On success `*out` owns a part to

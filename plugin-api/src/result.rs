@@ -48,7 +48,8 @@ pub unsafe extern "C" fn tw_recognize(
         let p = &*part;
         let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &o.request)
             .map_err(pipeline_failure)?;
-        let report = thinwall_report::recognition_report(&p.name, &p.part, &outcome);
+        let report =
+            thinwall_report::recognition_report(&p.name, &p.part, &outcome).with_read(&p.read);
         let feats = &report.stiffness_features;
         let ids = feats
             .iter()

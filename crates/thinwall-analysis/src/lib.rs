@@ -36,6 +36,29 @@ use thinwall_brep::{compute_face_props, FaceId, FaceProps, Part};
 use thinwall_geom::{BoundingBox, PartTolerances, Point3, Surface, Vector3};
 use thinwall_graph::{Adjacency, AdjacencyGraph, Convexity};
 
+/// Where a warning comes from.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum WarningSource {
+    /// The reader dropped or repaired something.
+    Read,
+    /// A figure could not be computed exactly (an area, a boundary off its surface).
+    Geometry,
+    /// The solid is not closed or not a manifold, or an edge could not be judged.
+    Topology,
+}
+
+/// Something a user should know about the part, with the entity it concerns.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Warning {
+    pub source: WarningSource,
+    /// The STEP entity id, where there is one.
+    pub entity: Option<u64>,
+    pub message: String,
+}
+
 /// A cylinder face: a point on its axis, the axis, the radius.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cylinder {
@@ -318,6 +341,48 @@ impl<'a> PartAnalysis<'a> {
         arc_ok: impl Fn(FaceId, FaceId, &Adjacency) -> bool,
     ) -> Vec<Vec<FaceId>> {
         components::components(&self.graph, members, arc_ok)
+    }
+
+    /// What the analysis found questionable: faces whose properties are
+    /// approximate, edges used by one face only (an open shell), by three
+    /// or more, or along which no normal could be evaluated.
+    pub fn warnings(&self) -> Vec<Warning> {
+        let mut out: Vec<Warning> = self
+            .part
+            .face_ids()
+            .flat_map(|f| {
+                let id = self.part.face(f).step_id;
+                self.props(f).warnings.iter().map(move |m| Warning {
+                    source: WarningSource::Geometry,
+                    entity: Some(id),
+                    message: format!("face #{id}: {m}"),
+                })
+            })
+            .collect();
+        for e in &self.graph.edges {
+            let what = match e.convexity {
+                Convexity::Free => "is used by one face only: the shell is open there",
+                Convexity::NonManifold => "is used by three or more faces: not a manifold solid",
+                Convexity::Unknown => "has no surface normal that could be evaluated along it",
+                _ => continue,
+            };
+            out.push(Warning {
+                source: WarningSource::Topology,
+                entity: Some(e.step_id),
+                message: format!("edge #{} {what}", e.step_id),
+            });
+        }
+        out
+    }
+
+    /// Edges used by one face only (the solid's shell is open there).
+    pub fn free_edges(&self) -> Vec<u64> {
+        self.graph
+            .edges
+            .iter()
+            .filter(|e| e.convexity == Convexity::Free)
+            .map(|e| e.step_id)
+            .collect()
     }
 
     /// `step_id`s of faces, sorted.

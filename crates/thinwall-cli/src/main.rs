@@ -72,6 +72,13 @@ enum Command {
         /// Link thin walls to the thick walls they stand on.
         #[arg(long)]
         connect_thick: bool,
+        /// Recognize a part whose shell is open (edges used by one face only)
+        /// instead of refusing it.
+        #[arg(long)]
+        allow_open: bool,
+        /// Print the time of every stage and every warning to stderr.
+        #[arg(long)]
+        verbose: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
@@ -218,9 +225,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             machine,
             tilt_limit,
             connect_thick,
+            allow_open,
+            verbose,
             format,
         } => {
             let flags = RecognizeFlags {
+                allow_open,
                 up,
                 config,
                 include,
@@ -233,10 +243,22 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 connect_thick,
             };
             let request = flags.request()?;
-            let (model, _read) = thinwall_step::read_file(&part)?;
+            let t0 = std::time::Instant::now();
+            let (model, read) = thinwall_step::read_file(&part)?;
+            let read_seconds = t0.elapsed().as_secs_f64();
             let outcome = thinwall_pipeline::run(&model, None, &request)?;
             let report =
-                thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome);
+                thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome)
+                    .with_read(&read);
+            if verbose {
+                eprintln!("{:>9.4} s  read", read_seconds);
+                for (stage, seconds) in &outcome.timings {
+                    eprintln!("{seconds:>9.4} s  {stage}");
+                }
+                for w in &report.warnings {
+                    eprintln!("warning: {}", w.message);
+                }
+            }
             write_out(&match format {
                 Format::Text => report.to_text(),
                 Format::Json => report.to_json(),
@@ -247,6 +269,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
 
 /// The settings flags of `recognize`.
 struct RecognizeFlags {
+    allow_open: bool,
     up: Option<[f64; 3]>,
     config: Option<PathBuf>,
     include: Vec<String>,
@@ -314,6 +337,7 @@ impl RecognizeFlags {
                 connect_thick_walls: self.connect_thick,
             },
             parallel: true,
+            allow_open: self.allow_open,
         })
     }
 }

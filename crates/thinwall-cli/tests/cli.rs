@@ -468,3 +468,35 @@ fn exit_codes_follow_the_kind_of_error() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("force_n") && err.contains("finite"), "{err}");
 }
+
+#[test]
+fn verbose_shows_stage_times_and_every_warning() {
+    let out = bin()
+        .args(["recognize", "--verbose", "--format", "text"])
+        .arg(shared("nist/nist_ftc_07_asme1_ap242-e2.stp"))
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    for stage in [
+        "read",
+        "adjacency graph",
+        "face properties",
+        "stiffness features",
+        "machining features",
+    ] {
+        assert!(err.contains(&format!(" s  {stage}")), "{stage}: {err}");
+    }
+    // Every warning in full, in the report too.
+    let text = String::from_utf8_lossy(&out.stdout);
+    let listed = err.lines().filter(|l| l.starts_with("warning: ")).count();
+    assert!(listed > 100, "{listed}");
+    assert!(text.contains(&format!("warnings: {listed}")), "{text}");
+    // Without --verbose, nothing on stderr.
+    let quiet = bin()
+        .args(["recognize", "--format", "text"])
+        .arg(shared("nist/nist_ftc_07_asme1_ap242-e2.stp"))
+        .output()
+        .unwrap();
+    assert!(quiet.stderr.is_empty());
+}

@@ -25,8 +25,14 @@ pub enum Convexity {
     Smooth,
     /// Convex somewhere and concave elsewhere along the edge.
     Mixed,
-    /// Used twice by one face (a seam) or by one face only: no neighbour.
+    /// Used twice by one face (a seam): no neighbour.
     Seam,
+    /// Used by one face only: the shell is open there.
+    Free,
+    /// Used by three or more faces: the solid is not a manifold there.
+    NonManifold,
+    /// Between two faces, but no surface normal could be evaluated along it.
+    Unknown,
 }
 
 impl Convexity {
@@ -37,6 +43,9 @@ impl Convexity {
             Convexity::Smooth => "smooth",
             Convexity::Mixed => "mixed",
             Convexity::Seam => "seam",
+            Convexity::Free => "free",
+            Convexity::NonManifold => "non_manifold",
+            Convexity::Unknown => "unknown",
         }
     }
 }
@@ -181,10 +190,20 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         angle_min_deg: 180.0,
         angle_max_deg: 180.0,
     };
-    if uses.len() < 2 || uses[0].0 == uses[1].0 {
-        return attr;
+    match uses.len() {
+        0 | 1 => {
+            attr.convexity = Convexity::Free;
+            return attr;
+        }
+        2 if uses[0].0 == uses[1].0 => return attr,
+        2 => {}
+        _ => {
+            attr.convexity = Convexity::NonManifold;
+            return attr;
+        }
     }
     let Some(curve) = &e.nurbs else {
+        attr.convexity = Convexity::Unknown;
         return attr;
     };
     let ((f1, fwd1), (f2, _)) = (uses[0], uses[1]);
@@ -231,7 +250,7 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         (true, false, _) => Convexity::Convex,
         (false, true, _) => Convexity::Concave,
         (false, false, true) => Convexity::Smooth,
-        (false, false, false) => Convexity::Seam,
+        (false, false, false) => Convexity::Unknown,
     };
     if amin.is_finite() {
         attr.angle_min_deg = amin.to_degrees();

@@ -17,7 +17,8 @@ mod settings;
 pub use settings::Settings;
 
 use std::collections::BTreeMap;
-use thinwall_analysis::{FeatureId, PartAnalysis, Setup, SetupError};
+use std::time::Instant;
+use thinwall_analysis::{FeatureId, PartAnalysis, Setup, SetupError, Warning};
 use thinwall_brep::{FaceProps, Part};
 use thinwall_connect::{Options, Structure, StructureError};
 use thinwall_graph::AdjacencyGraph;
@@ -35,6 +36,8 @@ pub struct Request {
     /// either way. A host that runs its own threads may turn it off.
     #[serde(skip)]
     pub parallel: bool,
+    /// Recognize a part whose shell is open (free edges) instead of refusing it.
+    pub allow_open: bool,
 }
 
 impl Default for Request {
@@ -44,6 +47,7 @@ impl Default for Request {
             config: Config::default(),
             connect: Options::default(),
             parallel: true,
+            allow_open: false,
         }
     }
 }
@@ -63,6 +67,11 @@ pub struct Outcome {
     pub machining: Vec<MachiningFeature>,
     /// Every face's properties, by `face.index()`.
     pub face_props: Vec<FaceProps>,
+    /// What the analysis found questionable (approximate figures, open or
+    /// non-manifold edges), in full.
+    pub warnings: Vec<Warning>,
+    /// Seconds per stage, in order (for `--verbose`; the library never prints).
+    pub timings: Vec<(&'static str, f64)>,
 }
 
 /// Why the pipeline could not run, or failed.
@@ -73,6 +82,10 @@ pub enum PipelineError {
     Config(#[from] ConfigError),
     #[error(transparent)]
     Setup(#[from] SetupError),
+    /// The part's shell is open (edges used by one face only) and the
+    /// request does not allow it.
+    #[error("the solid is not closed: {count} edges are used by one face only (first #{first}); recognition of an open shell needs allow_open")]
+    OpenShell { count: usize, first: u64 },
     /// The connection layer produced a structure that is not a forest: a
     /// defect of Thinwall, reported rather than returned.
     #[error("internal error: invalid connection structure: {0}")]
@@ -85,6 +98,7 @@ impl PipelineError {
         match self {
             PipelineError::Config(e) => format!("config.{}", e.code()),
             PipelineError::Setup(e) => format!("setup.{}", e.code()),
+            PipelineError::OpenShell { .. } => "input.open_shell".to_string(),
             PipelineError::Structure(e) => format!("structure.{}", e.code()),
         }
     }
@@ -99,24 +113,38 @@ pub fn run(
 ) -> Result<Outcome, PipelineError> {
     req.config.validate()?;
     req.setup.validate()?;
+    let mut clock = Clock::start();
     let a = match graph {
         Some(g) => PartAnalysis::with_graph(part, g, req.setup.clone()),
         None => PartAnalysis::new(part, req.setup.clone()),
     }
     .with_parallelism(req.parallel);
-    // The two recognizers only read the analysis: run them side by side
-    // (face properties first, which both use, themselves in parallel).
+    clock.lap("adjacency graph");
+    let free = a.free_edges();
+    if !free.is_empty() && !req.allow_open {
+        return Err(PipelineError::OpenShell {
+            count: free.len(),
+            first: free[0],
+        });
+    }
     a.face_props();
-    let stiffness = || thinwall_recognize::recognize(&a, &req.config);
-    let conventional = || thinwall_machining::recognize(&a);
-    let (recognition, mut machining) = if req.parallel {
+    clock.lap("face properties");
+    // The two recognizers only read the analysis: run them side by side.
+    let stiffness = || timed(|| thinwall_recognize::recognize(&a, &req.config));
+    let conventional = || timed(|| thinwall_machining::recognize(&a));
+    let ((recognition, t_stiff), (mut machining, t_mach)) = if req.parallel {
         rayon::join(stiffness, conventional)
     } else {
         (stiffness(), conventional())
     };
+    clock.record("stiffness features", t_stiff);
+    clock.record("machining features", t_mach);
+    clock.lap("recognizers (wall time)");
     let structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
     structure.validate()?;
     relate(&mut machining, &recognition);
+    clock.lap("connections and links");
+    let warnings = a.warnings();
     Ok(Outcome {
         request: req.clone(),
         setup: req.setup.clone(),
@@ -124,7 +152,42 @@ pub fn run(
         structure,
         machining,
         face_props: a.into_face_props(),
+        warnings,
+        timings: clock.laps,
     })
+}
+
+/// A result and the seconds it took.
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let t0 = Instant::now();
+    let v = f();
+    (v, t0.elapsed().as_secs_f64())
+}
+
+/// Stage times of a run.
+struct Clock {
+    last: Instant,
+    laps: Vec<(&'static str, f64)>,
+}
+
+impl Clock {
+    fn start() -> Self {
+        Self {
+            last: Instant::now(),
+            laps: Vec::new(),
+        }
+    }
+
+    /// The time since the last lap, as `stage`.
+    fn lap(&mut self, stage: &'static str) {
+        let now = Instant::now();
+        self.laps.push((stage, (now - self.last).as_secs_f64()));
+        self.last = now;
+    }
+
+    fn record(&mut self, stage: &'static str, seconds: f64) {
+        self.laps.push((stage, seconds));
+    }
 }
 
 /// Fill each machining feature's `related`: the stiffness features sharing

@@ -99,6 +99,9 @@ pub struct InspectReport {
     /// Face pairs sharing an edge (graph arcs).
     pub adjacencies: usize,
     pub read: ReadSummary,
+    /// Every warning, in full: the reader's drops and repairs, approximate
+    /// figures, open, non-manifold or unjudged edges.
+    pub warnings: Vec<thinwall_analysis::Warning>,
 }
 
 /// Build the report of a part read from `file`.
@@ -182,6 +185,10 @@ pub fn inspect(
         faces,
         edges,
         adjacencies: graph.graph.edge_count(),
+        warnings: crate::recognize::read_warnings(read)
+            .into_iter()
+            .chain(analysis.warnings())
+            .collect(),
         read: ReadSummary {
             entities_read: read.entities_read,
             entities_kept: read.entities_kept,
@@ -274,15 +281,11 @@ impl InspectReport {
             r.repaired.len(),
             r.geometry_warnings.len()
         );
-        for i in r
-            .dropped
-            .iter()
-            .chain(&r.repaired)
-            .chain(&r.geometry_warnings)
-            .take(10)
-        {
-            let at = i.entity.map(|e| format!("#{e}: ")).unwrap_or_default();
-            let _ = writeln!(s, "    {at}{}", i.message);
+        if !self.warnings.is_empty() {
+            let _ = writeln!(s, "warnings: {}", self.warnings.len());
+            for w in &self.warnings {
+                let _ = writeln!(s, "  {}", w.message);
+            }
         }
         s
     }

@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
+use thinwall_analysis::{Warning, WarningSource};
 use thinwall_brep::{Part, Units};
 use thinwall_connect::{Connection, Setup, SideAccess};
 use thinwall_geom::BoundingBox;
@@ -68,6 +69,26 @@ pub struct RecognitionReport {
     /// Conventional machining features (holes, pockets, slots, steps,
     /// passages, chamfers, fillets), `docs/MACHINING.md`.
     pub machining_features: Vec<thinwall_machining::MachiningFeature>,
+    /// What the reader dropped or repaired and what the analysis found
+    /// questionable, in full.
+    pub warnings: Vec<Warning>,
+}
+
+/// The reader's drops and repairs as warnings.
+pub fn read_warnings(read: &thinwall_step::ReadReport) -> Vec<Warning> {
+    read.dropped
+        .iter()
+        .map(|d| (d, "dropped"))
+        .chain(read.repaired.iter().map(|r| (r, "repaired")))
+        .map(|(issue, what)| Warning {
+            source: WarningSource::Read,
+            entity: issue.entity,
+            message: match issue.entity {
+                Some(id) => format!("#{id} {what}: {}", issue.message),
+                None => format!("{what}: {}", issue.message),
+            },
+        })
+        .collect()
 }
 
 /// Build the report of a pipeline run on `part` (read from `file`). The
@@ -132,6 +153,17 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
         connections,
         notes: out.structure.notes.clone(),
         machining_features,
+        warnings: out.warnings.clone(),
+    }
+}
+
+impl RecognitionReport {
+    /// The report with the reader's warnings first.
+    pub fn with_read(mut self, read: &thinwall_step::ReadReport) -> Self {
+        let mut w = read_warnings(read);
+        w.append(&mut self.warnings);
+        self.warnings = w;
+        self
     }
 }
 
@@ -219,6 +251,12 @@ impl RecognitionReport {
             );
         }
         s.push_str(&self.structure_text());
+        if !self.warnings.is_empty() {
+            let _ = writeln!(s, "warnings: {}", self.warnings.len());
+            for w in &self.warnings {
+                let _ = writeln!(s, "  {}", w.message);
+            }
+        }
         if !self.machining_features.is_empty() {
             let _ = writeln!(s, "machining features: {}", self.machining_features.len());
             for m in &self.machining_features {

@@ -69,10 +69,30 @@ pub fn read(bytes: &[u8], file: &str) -> Result<(Part, ReadReport), StepError> {
             message: format!("step-io: {w}"),
         });
     }
+    for (referrer, missing) in id_scan_dangling(bytes, &out) {
+        out.dropped.push(ReadIssue {
+            entity: Some(referrer),
+            message: format!("refers to #{missing}, which the file does not define"),
+        });
+    }
     if part.bodies.is_empty() {
         return Err(no_brep(&model, file, &out));
     }
     Ok((part, out))
+}
+
+/// Dangling references, looked for only when step-io dropped something
+/// because of one (the scan is a second pass over the text).
+fn id_scan_dangling(bytes: &[u8], report: &ReadReport) -> Vec<(u64, u64)> {
+    if report
+        .dropped
+        .iter()
+        .any(|d| d.message.contains("dangling"))
+    {
+        crate::id_scan::dangling_references(bytes)
+    } else {
+        Vec::new()
+    }
 }
 
 fn no_brep(model: &StepModel, file: &str, report: &ReadReport) -> StepError {
@@ -83,11 +103,29 @@ fn no_brep(model: &StepModel, file: &str, report: &ReadReport) -> StepError {
     let root_cause = report
         .dropped
         .iter()
-        .find(|d| !d.message.starts_with("cascade"))
+        .find(|d| d.message.starts_with("refers to #"))
+        .or_else(|| {
+            report
+                .dropped
+                .iter()
+                .find(|d| !d.message.starts_with("cascade"))
+        })
         .or_else(|| report.dropped.first());
     let detail = if tessellated > 0 {
         format!(
             " (it holds tessellated geometry only: {tessellated} tessellated items; a mesh is not a B-rep)"
+        )
+    } else if let Some(d) = root_cause.filter(|d| d.message.starts_with("refers to #")) {
+        let dangling = report
+            .dropped
+            .iter()
+            .filter(|x| x.message.starts_with("refers to #"))
+            .count();
+        format!(
+            " (#{} {}; {} entities dropped as a consequence)",
+            d.entity.unwrap_or(0),
+            d.message,
+            report.dropped.len() - dangling
         )
     } else if let Some(d) = root_cause {
         format!(
