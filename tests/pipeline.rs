@@ -153,3 +153,61 @@ fn bad_settings_are_typed_errors() {
     assert_eq!(a.machining, b.machining);
     assert_eq!(a.face_props, b.face_props);
 }
+
+#[test]
+fn assembly_instances_are_told_apart_and_never_spanned() {
+    let path = common::root().join("fixtures/bracket_assembly.step");
+    let (part, _) = thinwall_step::read_file(&path).unwrap();
+    assert_eq!(part.bodies.len(), 2, "two placed instances");
+    let out = run(&part, None, &Request::default()).unwrap();
+    let report = thinwall_report::recognition_report("bracket_assembly.step", &part, &out);
+    assert_eq!(report.bodies.len(), 2);
+    assert!(report.bodies.iter().all(|b| b.placement.is_some()));
+    // Every feature's faces are faces of its own body.
+    let of_body = |b: u32| -> BTreeSet<u64> {
+        part.faces
+            .iter()
+            .filter(|f| f.body.0 == b)
+            .map(|f| f.step_id)
+            .collect()
+    };
+    for f in &out.recognition.features {
+        let own = of_body(f.body);
+        assert!(
+            f.faces.iter().all(|x| own.contains(x)),
+            "{} spans bodies",
+            f.id
+        );
+    }
+    for m in &out.machining {
+        let own = of_body(m.body);
+        assert!(
+            m.faces.iter().all(|x| own.contains(x)),
+            "{} spans bodies",
+            m.id
+        );
+    }
+    // The instances share STEP ids: features on the same ids differ by body.
+    let mut seen: std::collections::BTreeMap<Vec<u64>, BTreeSet<u32>> = Default::default();
+    for f in &out.recognition.features {
+        seen.entry(f.faces.clone()).or_default().insert(f.body);
+    }
+    assert!(seen.values().any(|bodies| bodies.len() == 2));
+    // No wall is longer than one bracket (120 mm): none spans both.
+    for f in out.recognition.features.iter().filter(|f| f.kind.is_wall()) {
+        assert!(
+            f.length.unwrap() <= 120.0 + 1e-6,
+            "{} L {:?}",
+            f.id,
+            f.length
+        );
+    }
+    // And the JSON carries bodies and every face's body.
+    let json: serde_json::Value = serde_json::from_str(&report.to_json()).unwrap();
+    assert_eq!(json["bodies"].as_array().unwrap().len(), 2);
+    assert!(json["faces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|f| f["body"].is_u64()));
+}

@@ -42,6 +42,8 @@ pub struct MachiningFeature {
     /// `M1`, `M2`, … by smallest face id.
     pub id: MachiningId,
     pub kind: MachiningKind,
+    /// The body its faces are on (index into the report's `bodies`).
+    pub body: u32,
     /// Opens through the part (no bottom).
     pub through: bool,
     pub profile: Profile,
@@ -181,6 +183,7 @@ fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
     MachiningFeature {
         id: MachiningId::default(),
         kind: MachiningKind::Fillet,
+        body: a.part().face(group[0]).body.0,
         through: false,
         profile: if convex {
             Profile::Round
@@ -474,6 +477,7 @@ fn depression_feature(
     MachiningFeature {
         id: MachiningId::default(),
         kind,
+        body: a.part().face(group[0]).body.0,
         through,
         profile,
         direction: [dir.x, dir.y, dir.z],

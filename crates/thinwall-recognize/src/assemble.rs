@@ -70,6 +70,7 @@ fn wall_feature(
     faces.dedup();
     let (p, n) = wall.mid_plane();
     let mut f = StiffnessFeature::new(kind, faces);
+    f.body = a.part().face(wall.sides[0][0]).body.0;
     f.side_faces = Some(side_faces);
     f.sides = Some(sides);
     f.thin = Some(s.thin);
@@ -138,6 +139,7 @@ pub fn depressions(
             DepressionKind::Notch => StiffnessKind::Notch,
         };
         let mut f = StiffnessFeature::new(kind, a.step_ids(&dep.faces));
+        f.body = a.part().face(dep.faces[0]).body.0;
         let dir = sizes[dep.wall].height_dir;
         let (lo, hi) = a.extent(&dep.faces, &dir);
         match dep.kind {
@@ -206,6 +208,7 @@ pub fn details(
     };
     for b in &claims.blends {
         let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
+        f.body = a.part().face(b.faces[0]).body.0;
         f.radius = b.radius;
         f.convex = Some(b.convex);
         d.features.push(f);
@@ -214,6 +217,7 @@ pub fn details(
     }
     for (c, width) in &claims.chamfers {
         let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
+        f.body = a.part().face(*c).body.0;
         f.width = Some(*width);
         d.features.push(f);
         d.refs

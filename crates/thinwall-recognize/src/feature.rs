@@ -20,6 +20,10 @@ pub struct StiffnessFeature {
     /// Stable within a report: kind prefix and a number (`R2`, `H1`).
     pub id: FeatureId,
     pub kind: StiffnessKind,
+    /// The body (solid, or placed instance of an assembly) its faces are
+    /// on, by index into the report's `bodies`: with it, a `step_id` names
+    /// one face even where instances share ids. A feature never spans bodies.
+    pub body: u32,
     /// `step_id`s of all its faces.
     pub faces: Vec<u64>,
     /// Walls: `step_id`s of the faces of both sides.
@@ -126,6 +130,7 @@ impl StiffnessFeature {
         Self {
             id: FeatureId::new(kind, 0),
             kind,
+            body: 0,
             faces,
             side_faces: None,
             sides: None,

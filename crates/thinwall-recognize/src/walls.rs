@@ -75,15 +75,18 @@ impl Wall {
     }
 }
 
-/// Planes shared by coplanar faces: `plane_of[face]` for planar faces.
-fn plane_ids(faces: &[&PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
+/// Planes shared by coplanar faces of one body: `plane_of[face]` for
+/// planar faces (`body[face]` its body: instances of an assembly never
+/// share a plane, so no wall spans two of them).
+fn plane_ids(faces: &[&PlanarFace], body: &[u32], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
     let mut ids = vec![usize::MAX; faces.len()];
     let mut planes: Vec<(Vector3, f64)> = Vec::new();
-    // Bucket by rounded normal to keep this near-linear.
-    let mut buckets: HashMap<(i64, i64, i64), Vec<usize>> = HashMap::new();
+    // Bucket by body and rounded normal to keep this near-linear.
+    let mut buckets: HashMap<(u32, i64, i64, i64), Vec<usize>> = HashMap::new();
     for (i, f) in faces.iter().enumerate() {
         let n = f.normal();
         let key = (
+            body[i],
             (n.x * 50.0).round() as i64,
             (n.y * 50.0).round() as i64,
             (n.z * 50.0).round() as i64,
@@ -92,7 +95,7 @@ fn plane_ids(faces: &[&PlanarFace], lin_tol: f64, cos_tol: f64) -> Vec<usize> {
         'search: for dx in -1..=1 {
             for dy in -1..=1 {
                 for dz in -1..=1 {
-                    if let Some(list) = buckets.get(&(key.0 + dx, key.1 + dy, key.2 + dz)) {
+                    if let Some(list) = buckets.get(&(key.0, key.1 + dx, key.2 + dy, key.3 + dz)) {
                         for &p in list {
                             let (pn, po) = planes[p];
                             if pn.dot(&n) > cos_tol && (po - f.offset()).abs() < lin_tol {
@@ -127,6 +130,8 @@ struct Pairing<'p> {
     lin: f64,
     cos_tol: f64,
     min_area: f64,
+    /// Per plane: the body its faces belong to.
+    plane_body: Vec<u32>,
 }
 
 /// Two opposed side planes bounding a slab, while their faces are collected.
@@ -175,7 +180,8 @@ impl<'p> Pairing<'p> {
         let lin = a.tol().coplanar;
         let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
         let faces: Vec<&PlanarFace> = a.planar_faces().collect();
-        let plane_of = plane_ids(&faces, lin, cos_tol);
+        let body: Vec<u32> = faces.iter().map(|f| a.part().face(f.face).body.0).collect();
+        let plane_of = plane_ids(&faces, &body, lin, cos_tol);
         let n_planes = plane_of.iter().copied().max().map_or(0, |m| m + 1);
         let mut members: Vec<Vec<usize>> = vec![Vec::new(); n_planes];
         for (i, &p) in plane_of.iter().enumerate() {
@@ -184,6 +190,7 @@ impl<'p> Pairing<'p> {
         // Per plane: its normal and a point (of its first face).
         let plane_normal = members.iter().map(|m| faces[m[0]].normal()).collect();
         let plane_point = members.iter().map(|m| faces[m[0]].frame.origin).collect();
+        let plane_body = members.iter().map(|m| body[m[0]]).collect();
         let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
         let own_area = own.iter().map(|p| p.unsigned_area()).collect();
         let boxes = faces
@@ -206,6 +213,7 @@ impl<'p> Pairing<'p> {
             lin,
             cos_tol,
             min_area: a.tol().min_overlap_area,
+            plane_body,
         }
     }
 
@@ -214,7 +222,9 @@ impl<'p> Pairing<'p> {
     fn pair_face(&self, i: usize, groups: &mut HashMap<(usize, usize), Group>) {
         let f = self.faces[i];
         let n = f.normal();
+        let own_body = self.plane_body[self.plane_of[i]];
         let mut behind: Vec<(f64, usize)> = (0..self.members.len())
+            .filter(|&p| self.plane_body[p] == own_body)
             .filter(|&p| self.plane_normal[p].dot(&n) < -self.cos_tol)
             .map(|p| ((f.frame.origin - self.plane_point[p]).dot(&n), p))
             .filter(|(d, _)| *d > self.lin)

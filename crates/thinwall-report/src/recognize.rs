@@ -23,10 +23,25 @@ pub struct PartSummary {
     pub bounding_box: BoundingBox,
 }
 
+/// A body of the part: a solid, or a placed instance of one.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct BodySummary {
+    /// Index used by `body` fields.
+    pub index: u32,
+    /// Entity id of the solid (shared by instances of one solid).
+    pub step_id: u64,
+    pub name: String,
+    /// The product occurrence path placing it, for an assembly instance.
+    pub placement: Option<String>,
+}
+
 /// One face of the part.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct FaceSummary {
     pub step_id: u64,
+    /// Index of its body: with it, the `step_id` names one face even where
+    /// instances share ids.
+    pub body: u32,
     pub name: String,
     pub surface: String,
     /// mm².
@@ -58,6 +73,8 @@ pub struct RecognitionReport {
     /// The Thinwall version that wrote it.
     pub thinwall_version: String,
     pub part: PartSummary,
+    /// The bodies (solids and placed instances) that `body` fields index.
+    pub bodies: Vec<BodySummary>,
     pub setup: Setup,
     /// The settings in force (include/exclude only hide rows).
     pub settings: SettingsUsed,
@@ -104,6 +121,7 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             let face = part.face(f);
             FaceSummary {
                 step_id: face.step_id,
+                body: face.body.0,
                 name: face.name.clone(),
                 surface: face.surface.kind_name().to_string(),
                 area: out.face_props[f.index()].area,
@@ -134,6 +152,17 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             faces: part.faces.len(),
             bounding_box: part.bounding_box(),
         },
+        bodies: part
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| BodySummary {
+                index: i as u32,
+                step_id: b.step_id,
+                name: b.name.clone(),
+                placement: b.placement.clone(),
+            })
+            .collect(),
         setup: out.setup.clone(),
         settings: SettingsUsed {
             recognition: config.clone(),
