@@ -5,7 +5,8 @@ each with the stiffness features it must yield.
 Expected features name their faces by centroid (mm) so they survive any
 STEP id numbering; tests map centroids to the faces Thinwall reads.
 
-usage: python3 scripts/make_recognition_fixtures.py [OUT_DIR]   (default fixtures/recognition)
+usage: python3 scripts/make_recognition_fixtures.py [OUT_DIR [CASE ...]]
+       (default fixtures/recognition, every case; naming cases regenerates only those)
 """
 import json, math, os, sys
 
@@ -26,6 +27,18 @@ from OCP.BRepGProp import BRepGProp
 from OCP.BRepAdaptor import BRepAdaptor_Surface, BRepAdaptor_Curve
 from OCP.GeomAbs import GeomAbs_SurfaceType as T
 from OCP.ShapeUpgrade import ShapeUpgrade_UnifySameDomain
+
+# OpenCascade 7.x's bindings name static methods with `_s`; 8.x does not.
+_face = getattr(TopoDS, "Face_s", None) or TopoDS.Face
+_edge = getattr(TopoDS, "Edge_s", None) or TopoDS.Edge
+
+
+def occ_version():
+    try:
+        import importlib.metadata as md
+        return md.version("cadquery-ocp-novtk").rsplit(".", 2)[0]
+    except Exception:
+        return "7.9"
 
 
 def box(x0, y0, z0, x1, y1, z1):
@@ -58,7 +71,7 @@ def faces(shape):
     out = []
     e = TopExp_Explorer(shape, TopAbs_FACE)
     while e.More():
-        f = TopoDS.Face_s(e.Current())
+        f = _face(e.Current())
         p = GProp_GProps()
         BRepGProp.SurfaceProperties_s(f, p)
         c = p.CentreOfMass()
@@ -154,7 +167,7 @@ def filleted_chamfered_rib():
     ch = None
     e = TopExp_Explorer(s, TopAbs_EDGE)
     while e.More():
-        ed = TopoDS.Edge_s(e.Current())
+        ed = _edge(e.Current())
         a = BRepAdaptor_Curve(ed)
         p0, p1 = a.Value(a.FirstParameter()), a.Value(a.LastParameter())
         if near(p0.Z(), 20) and near(p1.Z(), 20) and near(p0.Y(), p1.Y()) and (near(p0.Y(), 18.5) or near(p0.Y(), 21.5)):
@@ -164,7 +177,7 @@ def filleted_chamfered_rib():
     cm = BRepFilletAPI_MakeChamfer(s)
     e = TopExp_Explorer(s, TopAbs_EDGE)
     while e.More():
-        ed = TopoDS.Edge_s(e.Current())
+        ed = _edge(e.Current())
         a = BRepAdaptor_Curve(ed)
         p0, p1 = a.Value(a.FirstParameter()), a.Value(a.LastParameter())
         if near(p0.Z(), 70) and near(p1.Z(), 70) and near(p0.Y(), 21.5) and near(p1.Y(), 21.5):
@@ -215,13 +228,31 @@ def sloped_expected(fs):
 
 
 def thick_wall():
-    """A 20 mm wall 40 high on a 20 mm block: not thin."""
-    return fuse(box(0, 0, 0, 100, 60, 20), box(0, 20, 20, 100, 40, 60))
+    """A 20 mm wall 70 high on a 20 mm block: not thin. (It was 40 high
+    until issue 11: a slab under 3 t high is a block, not a wall.)"""
+    return fuse(box(0, 0, 0, 100, 60, 20), box(0, 20, 20, 100, 40, 90))
 
 
 def thick_expected(fs):
     return [wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(f["centroid"][1], 20)) or (n_is(f, [0, 1, 0]) and near(f["centroid"][1], 40)),
                  thin=False, thickness=20.0, fs=fs, name="R")]
+
+
+def pocketed_rib():
+    """An 8 mm rib 60 high on a block, with a blind pocket (30 x 4, 3 deep)
+    in one side and a rectangular window (20 x 15) through it."""
+    s = fuse(box(0, 0, 0, 200, 60, 20), box(0, 26, 20, 200, 34, 80))
+    return cut(s, box(40, 31, 40, 70, 35, 44), box(120, 20, 40, 140, 40, 55))
+
+
+def pocketed_expected(fs):
+    c = lambda f, i: f["centroid"][i]
+    inside = lambda f, x0, x1, y0, y1, z0, z1: x0 - 1e-6 <= c(f, 0) <= x1 + 1e-6 and y0 - 1e-6 <= c(f, 1) <= y1 + 1e-6 and z0 - 1e-6 <= c(f, 2) <= z1 + 1e-6
+    return [
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 26)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 34)), thickness=8.0, fs=fs, name="R"),
+        other("pocket", lambda f: inside(f, 40, 70, 31, 34, 40, 44), fs, "R"),
+        other("cutout", lambda f: inside(f, 120, 140, 26, 34, 40, 55), fs, "R"),
+    ]
 
 
 def c_frame():
@@ -289,6 +320,7 @@ def turn_dir(t, v):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/recognition"
+    only = set(sys.argv[2:])
     os.makedirs(out, exist_ok=True)
     cases = {
         "rib_grid_panel": (rib_grid_panel, rib_grid_expected, "web, four flanges, crossing ribs, ribs ending on flanges, a row of large holes, cut-outs, a corner notch"),
@@ -296,19 +328,24 @@ def main():
         "sloped_rib": (sloped_rib, sloped_expected, "a rib leaning 12° from vertical"),
         "notched_rib": (notched_rib, notched_expected, "a rib with a notch at its top end"),
         "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
+        "pocketed_rib": (pocketed_rib, pocketed_expected, "a rib with a blind pocket in one side and a rectangular window through it"),
         "c_frame": (c_frame, c_frame_expected, "an upright C-section frame with stiffeners and large holes in the web"),
         "thin_plate": (thin_plate, plate_expected, "a free 2 mm plate: a thin wall standing on nothing"),
         "angle_bracket": (angle_bracket, bracket_expected, "two 2 mm plates in an L; with up +Z the horizontal one is the base"),
     }
     for name, (build, expect, about) in cases.items():
+        if only and name not in only:
+            continue
         shape = build()
         fs = faces(shape)
         expected = expect(fs)
         write(shape, os.path.join(out, name + ".step"))
         doc = {"part": name + ".step", "about": about, "up": [0, 0, 1], "features": expected,
-               "source": "scripts/make_recognition_fixtures.py (OpenCascade 7.9)"}
+               "source": f"scripts/make_recognition_fixtures.py (OpenCascade {occ_version()})"}
         json.dump(doc, open(os.path.join(out, name + ".expected.json"), "w"), indent=1)
         print(name, len(fs), "faces,", len(expected), "features")
+    if only and "rib_grid_panel_turned" not in only:
+        return
     # The panel turned out of axis alignment, its up turned with it.
     shape, t = turned(rib_grid_panel())
     write(shape, os.path.join(out, "rib_grid_panel_turned.step"))

@@ -51,6 +51,9 @@ named_enum! {
         Hole => "hole",
         Cutout => "cutout",
         Notch => "notch",
+        /// A blind, not round depression in a wall's side (a wall made
+        /// locally thinner).
+        Pocket => "pocket",
         Chamfer => "chamfer",
         Fillet => "fillet",
     }
@@ -75,6 +78,7 @@ impl StiffnessKind {
             StiffnessKind::Hole => "H",
             StiffnessKind::Cutout => "C",
             StiffnessKind::Notch => "N",
+            StiffnessKind::Pocket => "P",
             StiffnessKind::Chamfer => "CH",
             StiffnessKind::Fillet => "FL",
         }

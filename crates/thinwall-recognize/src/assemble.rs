@@ -12,7 +12,7 @@ use std::collections::BTreeMap;
 use thinwall_analysis::{measure, FeatureId, PartAnalysis, StiffnessKind};
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::DIRECTION_NORM_MIN;
-use thinwall_geom::{Point3, Surface, Vector3};
+use thinwall_geom::{Point3, Vector3};
 
 /// Features before numbering, with references by position.
 pub struct Draft {
@@ -23,7 +23,7 @@ pub struct Draft {
     pub wall_feature: Vec<Option<usize>>,
 }
 
-/// The wall features.
+/// The wall features (squat slabs left out: they are bases, not walls).
 pub fn walls(
     a: &PartAnalysis,
     walls: &[Wall],
@@ -37,6 +37,9 @@ pub fn walls(
         wall_feature: vec![None; walls.len()],
     };
     for (w, wall) in walls.iter().enumerate() {
+        if sizes[w].squat {
+            continue;
+        }
         d.wall_feature[w] = Some(d.features.len());
         d.features
             .push(wall_feature(a, wall, &sizes[w], kinds[w], &claims.rims[w]));
@@ -123,7 +126,10 @@ fn geometry(a: &PartAnalysis, wall: &Wall, s: &WallSize) -> WallGeometry {
     }
 }
 
-/// Add the depressions (holes, cut-outs, notches).
+/// Add the depressions: holes (round, through a wall's side), pockets
+/// (blind, not round), cut-outs (through and not round, or from the rim)
+/// and notches. A depression of no size (a face flat across the height
+/// direction) is not a feature.
 pub fn depressions(
     a: &PartAnalysis,
     d: &mut Draft,
@@ -132,45 +138,61 @@ pub fn depressions(
     deps: &[Depression],
     config: &Config,
 ) {
+    let least = a.tol().coplanar;
     for dep in deps {
-        let kind = match dep.kind {
-            DepressionKind::Hole { .. } => StiffnessKind::Hole,
-            DepressionKind::Cutout => StiffnessKind::Cutout,
-            DepressionKind::Notch => StiffnessKind::Notch,
+        let Some(wall_feature) = d.wall_feature[dep.wall] else {
+            continue; // in a squat slab: a machining feature, not a stiffness one
         };
-        let mut f = StiffnessFeature::new(kind, a.step_ids(&dep.faces));
-        f.body = a.part().face(dep.faces[0]).body.0;
+        let wall = &walls[dep.wall];
         let dir = sizes[dep.wall].height_dir;
         let (lo, hi) = a.extent(&dep.faces, &dir);
-        match dep.kind {
-            DepressionKind::Hole { through } => {
-                let diameter = dep
-                    .faces
-                    .iter()
-                    .filter_map(|&h| match a.part().face(h).surface {
-                        Surface::Cylinder { radius, .. } => Some(2.0 * radius),
-                        _ => None,
-                    })
-                    .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |y| y.max(x))));
-                let height = hi - lo;
-                let t = &config.thresholds;
-                f.diameter = Some(diameter.unwrap_or(height));
-                f.height = Some(height);
-                f.through = Some(through);
-                f.large = Some(height > t.large_hole_factor * t.preferred_tool_diameter_mm);
-            }
-            _ => {
-                let wall = &walls[dep.wall];
-                let (_, top) = measure::extent(&wall.outline(), &dir);
-                f.height = Some((top - lo).max(0.0));
-                if let Some(along) = wall.frame.z.cross(&dir).try_normalize(DIRECTION_NORM_MIN) {
-                    let (l0, l1) = a.extent(&dep.faces, &along);
-                    f.width = Some(l1 - l0);
-                }
-            }
+        let width = wall
+            .frame
+            .z
+            .cross(&dir)
+            .try_normalize(DIRECTION_NORM_MIN)
+            .map(|along| {
+                let (l0, l1) = a.extent(&dep.faces, &along);
+                l1 - l0
+            });
+        let round = dep
+            .faces
+            .iter()
+            .filter_map(|&h| a.cylinder(h))
+            .map(|c| 2.0 * c.radius)
+            .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |y| y.max(x))));
+        let kind = match (dep.kind, round) {
+            (DepressionKind::Hole { .. }, Some(_)) => StiffnessKind::Hole,
+            (DepressionKind::Hole { through: true }, None) => StiffnessKind::Cutout,
+            (DepressionKind::Hole { through: false }, None) => StiffnessKind::Pocket,
+            (DepressionKind::Cutout, _) => StiffnessKind::Cutout,
+            (DepressionKind::Notch, _) => StiffnessKind::Notch,
+        };
+        if hi - lo <= least || width.is_some_and(|w| w <= least) {
+            continue;
+        }
+        let mut f = StiffnessFeature::new(kind, a.step_ids(&dep.faces));
+        f.body = a.part().face(dep.faces[0]).body.0;
+        if let (StiffnessKind::Hole, Some(diameter)) = (kind, round) {
+            let height = hi - lo;
+            let t = &config.thresholds;
+            f.diameter = Some(diameter);
+            f.height = Some(height);
+            f.through = Some(matches!(dep.kind, DepressionKind::Hole { through: true }));
+            f.large = Some(height > t.large_hole_factor * t.preferred_tool_diameter_mm);
+        } else if matches!(dep.kind, DepressionKind::Hole { .. }) {
+            // An opening in a side: its extent across the wall's height and
+            // along it; a pocket also its depth into the wall.
+            f.height = Some(hi - lo);
+            f.width = width;
+            f.through = Some(kind == StiffnessKind::Cutout);
+        } else {
+            let (_, top) = measure::extent(&wall.outline(), &dir);
+            f.height = Some((top - lo).max(0.0));
+            f.width = width;
         }
         d.features.push(f);
-        d.refs.push(d.wall_feature[dep.wall]);
+        d.refs.push(Some(wall_feature));
     }
 }
 
@@ -203,7 +225,7 @@ pub fn details(
                 }
             }
         }
-        touched.sort_by_key(|&w| (!sizes[w].thin, sizes[w].base.is_none(), w));
+        touched.sort_by_key(|&w| (sizes[w].squat, !sizes[w].thin, sizes[w].base.is_none(), w));
         touched.first().copied()
     };
     for b in &claims.blends {

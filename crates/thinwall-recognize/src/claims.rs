@@ -30,10 +30,11 @@ fn stages(config: &Config) -> Vec<StiffnessKind> {
         .iter()
         .chain(Config::default().priority.iter())
     {
-        let stage = if *k == StiffnessKind::Notch {
-            StiffnessKind::Cutout
-        } else {
-            *k
+        // Notches come with cut-outs, pockets with holes (the inner loops).
+        let stage = match *k {
+            StiffnessKind::Notch => StiffnessKind::Cutout,
+            StiffnessKind::Pocket => StiffnessKind::Hole,
+            other => other,
         };
         if !stage.is_wall() && !stages.contains(&stage) {
             stages.push(stage);

@@ -39,6 +39,10 @@ pub struct Thresholds {
     pub parallel_angle_deg: f64,
     /// A wall's narrowest in-plane width must exceed its thickness times this.
     pub min_width_to_thickness: f64,
+    /// A wall's height and length must each be at least its thickness times
+    /// this; a squatter slab (a clamping block, a letter stroke) is material
+    /// a wall may stand on, not a wall itself.
+    pub min_extent_to_thickness: f64,
     /// Preferred tool diameter, mm (large holes, step separation).
     pub preferred_tool_diameter_mm: f64,
     /// A hole is large when its height exceeds this many tool diameters.
@@ -52,6 +56,7 @@ impl Default for Thresholds {
         Self {
             parallel_angle_deg: 0.5,
             min_width_to_thickness: 1.0,
+            min_extent_to_thickness: 3.0,
             preferred_tool_diameter_mm: 12.0,
             large_hole_factor: 1.5,
             chamfer_max_width_mm: 10.0,
@@ -153,6 +158,7 @@ impl Config {
             ("effective_length_factor", t.effective_length_factor),
             ("parallel_angle_deg", h.parallel_angle_deg),
             ("min_width_to_thickness", h.min_width_to_thickness),
+            ("min_extent_to_thickness", h.min_extent_to_thickness),
             ("preferred_tool_diameter_mm", h.preferred_tool_diameter_mm),
             ("large_hole_factor", h.large_hole_factor),
             ("chamfer_max_width_mm", h.chamfer_max_width_mm),

@@ -26,6 +26,10 @@ pub struct WallSize {
     pub height_dir: Vector3,
     /// The foot on the base: the base side's point and outward normal.
     pub foot_plane: Option<(Point3, Vector3)>,
+    /// Too squat to be a wall (height or length under
+    /// `min_extent_to_thickness` × t): kept as a base for others, never
+    /// reported.
+    pub squat: bool,
 }
 
 /// Size every wall: walls on a base from the base, walls without one (webs)
@@ -55,6 +59,8 @@ pub fn size_walls(
             &config.thinness,
         );
         s.thin = s.deflection > config.thinness.allowed_deflection_mm;
+        let least = config.thresholds.min_extent_to_thickness * wall.thickness;
+        s.squat = s.height < least || s.length < least;
     }
     sizes
 }
@@ -83,6 +89,7 @@ fn on_base(
         thin: false,
         height_dir: up,
         foot_plane: None,
+        squat: false,
     };
     if let Some(j) = best {
         let (origin, n) = walls[j.base].side_plane(j.base_side);
