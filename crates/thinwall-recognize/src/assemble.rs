@@ -81,6 +81,7 @@ fn wall_feature(
     f.height = Some(s.height);
     f.length = Some(s.length);
     f.deflection = Some(s.deflection);
+    f.model_note = crate::deflection::validity_note(wall.thickness, s.height, s.deflection);
     f.slenderness = Some(if wall.thickness > 0.0 {
         s.height / wall.thickness
     } else {

@@ -51,6 +51,10 @@ pub struct StiffnessFeature {
     /// h/t (Sandvik: > 15 step-wise, > 30 pyramid).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slenderness: Option<f64>,
+    /// Walls: where the figures leave the cantilever model's validity
+    /// (a deflection over 10 % of h, h/t under 5).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model_note: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mid_plane: Option<Plane>,
     /// Walls: tool access directions, one per side (outward side normals).
@@ -140,6 +144,7 @@ impl StiffnessFeature {
             length: None,
             deflection: None,
             slenderness: None,
+            model_note: None,
             mid_plane: None,
             access_directions: None,
             top_end_faces: None,

@@ -279,6 +279,19 @@ impl RecognitionReport {
                 f.wall.map_or_else(|| "-".into(), |w| w.to_string())
             );
         }
+        let notes: Vec<&StiffnessFeature> = walls
+            .iter()
+            .copied()
+            .filter(|f| f.model_note.is_some())
+            .collect();
+        for f in notes {
+            let _ = writeln!(
+                s,
+                "  {}: {}",
+                f.id,
+                f.model_note.as_deref().unwrap_or_default()
+            );
+        }
         s.push_str(&self.structure_text());
         if !self.warnings.is_empty() {
             let _ = writeln!(s, "warnings: {}", self.warnings.len());
