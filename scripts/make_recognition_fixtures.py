@@ -255,6 +255,45 @@ def pocketed_expected(fs):
     ]
 
 
+def drafted_prism(y0, foot, top, z0, height, length=200.0):
+    """A wall along x whose cross-section tapers symmetrically from `foot`
+    (at z0) to `top` (at z0 + height), centred on y0."""
+    pts = [(y0 - foot / 2, z0), (y0 + foot / 2, z0), (y0 + top / 2, z0 + height), (y0 - top / 2, z0 + height)]
+    poly = BRepBuilderAPI_MakePolygon()
+    for y, z in pts:
+        poly.Add(gp_Pnt(0, y, z))
+    poly.Close()
+    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
+    return BRepPrimAPI_MakePrism(face, gp_Vec(length, 0, 0)).Shape()
+
+
+DRAFT_H = 30.0
+
+
+def drafted_panel(deg):
+    """A 3 mm web with a drafted rib (4 mm foot) in the middle and a drafted
+    flange (3.5 mm foot) on its y = 0 edge, both 30 high, each side leaning
+    `deg` towards the other."""
+    taper = 2 * DRAFT_H * math.tan(math.radians(deg))
+    return fuse(box(0, 0, 0, 200, 100, 3),
+                drafted_prism(50, 4.0, 4.0 - taper, 3, DRAFT_H),
+                drafted_prism(1.75, 3.5, 3.5 - taper, 3, DRAFT_H))
+
+
+def drafted_expected(deg):
+    taper = 2 * DRAFT_H * math.tan(math.radians(deg))
+
+    def expect(fs):
+        c = lambda f, i: f["centroid"][i]
+        side = lambda f: f["normal"] is not None and abs(f["normal"][1]) > 0.9 and c(f, 2) > 3 + 1e-6
+        return [
+            wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 3)), thickness=3.0, fs=fs, name="W"),
+            wall("rib", lambda f: side(f) and 45 < c(f, 1) < 55, thickness=4.0 - taper, fs=fs, name="R"),
+            wall("flange", lambda f: side(f) and c(f, 1) < 5, thickness=3.5 - taper, fs=fs, name="F"),
+        ]
+    return expect
+
+
 def c_frame():
     """An upright C-section frame: 2 mm web (x-z plane) 120 high, 2 mm top
     and bottom flanges 30 wide, two 1.5 mm stiffeners, two Ø30 holes."""
@@ -318,6 +357,22 @@ def turn_dir(t, v):
     return [d.X(), d.Y(), d.Z()]
 
 
+def write_turned(out, name, shape):
+    """`name`_turned: the part turned 37° about (1,2,3) and moved, its
+    expected features' points and up turned with it."""
+    shape, t = turned(shape)
+    write(shape, os.path.join(out, name + "_turned.step"))
+    base = json.load(open(os.path.join(out, name + ".expected.json")))
+    for f in base["features"]:
+        for key in ("side_faces_at", "faces_at"):
+            if key in f:
+                f[key] = [turn_point(t, p) for p in f[key]]
+    base.update({"part": name + "_turned.step", "up": turn_dir(t, (0, 0, 1)),
+                 "about": base["about"] + "; turned 37° about (1,2,3) and moved, up turned with it"})
+    json.dump(base, open(os.path.join(out, name + "_turned.expected.json"), "w"), indent=1)
+    print(name + "_turned")
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/recognition"
     only = set(sys.argv[2:])
@@ -328,6 +383,9 @@ def main():
         "sloped_rib": (sloped_rib, sloped_expected, "a rib leaning 12° from vertical"),
         "notched_rib": (notched_rib, notched_expected, "a rib with a notch at its top end"),
         "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
+        "drafted_05": (lambda: drafted_panel(0.5), drafted_expected(0.5), "a drafted rib and flange, 0.5° per side"),
+        "drafted_1": (lambda: drafted_panel(1.0), drafted_expected(1.0), "a drafted rib and flange, 1° per side"),
+        "drafted_2": (lambda: drafted_panel(2.0), drafted_expected(2.0), "a drafted rib and flange, 2° per side"),
         "pocketed_rib": (pocketed_rib, pocketed_expected, "a rib with a blind pocket in one side and a rectangular window through it"),
         "c_frame": (c_frame, c_frame_expected, "an upright C-section frame with stiffeners and large holes in the web"),
         "thin_plate": (thin_plate, plate_expected, "a free 2 mm plate: a thin wall standing on nothing"),
@@ -344,6 +402,11 @@ def main():
                "source": f"scripts/make_recognition_fixtures.py (OpenCascade {occ_version()})"}
         json.dump(doc, open(os.path.join(out, name + ".expected.json"), "w"), indent=1)
         print(name, len(fs), "faces,", len(expected), "features")
+    for base_name, build in [("drafted_05", lambda: drafted_panel(0.5)), ("drafted_1", lambda: drafted_panel(1.0)),
+                             ("drafted_2", lambda: drafted_panel(2.0))]:
+        if only and base_name + "_turned" not in only:
+            continue
+        write_turned(out, base_name, build())
     if only and "rib_grid_panel_turned" not in only:
         return
     # The panel turned out of axis alignment, its up turned with it.

@@ -77,16 +77,18 @@ fn wall_feature(
     f.side_faces = Some(side_faces);
     f.sides = Some(sides);
     f.thin = Some(s.thin);
-    f.thickness = Some(wall.thickness);
+    f.thickness = Some(wall.thickness_range.0);
+    if wall.drafted() {
+        let (foot, top) = foot_and_top(wall, &s.height_dir);
+        f.thickness_foot = Some(foot);
+        f.thickness_top = Some(top);
+    }
     f.height = Some(s.height);
     f.length = Some(s.length);
     f.deflection = Some(s.deflection);
-    f.model_note = crate::deflection::validity_note(wall.thickness, s.height, s.deflection);
-    f.slenderness = Some(if wall.thickness > 0.0 {
-        s.height / wall.thickness
-    } else {
-        0.0
-    });
+    let t = wall.thickness_range.0;
+    f.model_note = crate::deflection::validity_note(t, s.height, s.deflection);
+    f.slenderness = Some(if t > 0.0 { s.height / t } else { 0.0 });
     f.mid_plane = Some(Plane {
         point: [p.x, p.y, p.z],
         normal: xyz(&n),
@@ -95,6 +97,24 @@ fn wall_feature(
     f.top_end_faces = Some(top);
     f.geometry = Some(geometry(a, wall, s));
     f
+}
+
+/// A drafted wall's thickness at its lowest and highest region vertex
+/// along its height direction, mm.
+fn foot_and_top(wall: &Wall, up: &Vector3) -> (f64, f64) {
+    let pts: Vec<Point3> = wall
+        .region
+        .0
+        .iter()
+        .flat_map(|p| p.exterior().coords())
+        .map(|c| wall.frame.to_world(&Vector3::new(c.x, c.y, 0.0)))
+        .collect();
+    let key = |p: &&Point3| p.coords.dot(up);
+    let at = |p: Option<&Point3>| p.map_or(wall.thickness, |p| wall.thickness_at(p));
+    (
+        at(pts.iter().min_by(|a, b| key(a).total_cmp(&key(b)))),
+        at(pts.iter().max_by(|a, b| key(a).total_cmp(&key(b)))),
+    )
 }
 
 /// The wall's region, side polygons and foot line.

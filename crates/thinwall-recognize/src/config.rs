@@ -37,6 +37,9 @@ impl Default for Thinness {
 pub struct Thresholds {
     /// Angle within which two side faces count as parallel, degrees.
     pub parallel_angle_deg: f64,
+    /// Largest draft of a wall's side, degrees: sides leaning towards each
+    /// other by up to this each still make a wall (0 for none).
+    pub max_draft_deg: f64,
     /// A wall's narrowest in-plane width must exceed its thickness times this.
     pub min_width_to_thickness: f64,
     /// A wall's height and length must each be at least its thickness times
@@ -55,6 +58,7 @@ impl Default for Thresholds {
     fn default() -> Self {
         Self {
             parallel_angle_deg: 0.5,
+            max_draft_deg: 5.0,
             min_width_to_thickness: 1.0,
             min_extent_to_thickness: 3.0,
             preferred_tool_diameter_mm: 12.0,
@@ -166,6 +170,13 @@ impl Config {
             if !(value.is_finite() && value > 0.0) {
                 return Err(ConfigError::NotPositive { name, value });
             }
+        }
+        if !(h.max_draft_deg.is_finite() && (0.0..=15.0).contains(&h.max_draft_deg)) {
+            return Err(ConfigError::TooLarge {
+                name: "max_draft_deg",
+                value: h.max_draft_deg,
+                limit: 15.0,
+            });
         }
         if h.parallel_angle_deg >= 45.0 {
             return Err(ConfigError::TooLarge {

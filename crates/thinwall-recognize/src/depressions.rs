@@ -26,9 +26,16 @@ pub enum DepressionKind {
 /// Whether all of a face lies within the wall's slab (between its side planes).
 pub fn within_slab(a: &PartAnalysis, wall: &Wall, f: FaceId) -> bool {
     let tol = a.tol().slab;
+    let (q1, n1) = wall.side_plane(1);
     a.boundary_points(f).iter().all(|p| {
         let d = (p - wall.frame.origin).dot(&wall.frame.z);
-        d <= tol && d >= -wall.thickness - tol
+        // A drafted wall's side 1 leans: test against its own plane.
+        let inside1 = if wall.drafted() {
+            (p - q1).dot(&n1) <= tol
+        } else {
+            d >= -wall.thickness - tol
+        };
+        d <= tol && inside1
     })
 }
 

@@ -35,9 +35,15 @@ pub struct StiffnessFeature {
     /// Walls: needs stiffness support (cantilever deflection above the limit).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thin: Option<bool>,
-    /// mm.
+    /// mm; a drafted wall's thinnest (the section its thinness is judged on).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thickness: Option<f64>,
+    /// Drafted walls: the thickness at the foot and at the top (the far
+    /// end from the base), mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thickness_foot: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thickness_top: Option<f64>,
     /// mm: foot to free edge (walls on a base), or the largest distance to
     /// a supporting wall (webs); depth of a cut-out; hole height.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -140,6 +146,8 @@ impl StiffnessFeature {
             sides: None,
             thin: None,
             thickness: None,
+            thickness_foot: None,
+            thickness_top: None,
             height: None,
             length: None,
             deflection: None,

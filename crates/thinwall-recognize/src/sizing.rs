@@ -52,14 +52,17 @@ pub fn size_walls(
         }
     }
     for (wall, s) in walls.iter().zip(&mut sizes) {
+        // A drafted wall is judged on its thinnest section (the top, for a
+        // wall tapering from its foot): a uniform wall that thin deflects
+        // at least as much, so the verdict errs towards support.
         s.deflection = deflection_mm(
-            wall.thickness,
+            wall.thickness_range.0,
             s.height,
             s.length.max(s.height),
             &config.thinness,
         );
         s.thin = s.deflection > config.thinness.allowed_deflection_mm;
-        let least = config.thresholds.min_extent_to_thickness * wall.thickness;
+        let least = config.thresholds.min_extent_to_thickness * wall.thickness_range.0;
         s.squat = s.height < least || s.length < least;
     }
     sizes

@@ -7,6 +7,11 @@
 //! planes, so coplanar faces on one side — a side split by crossing walls —
 //! make one wall. A group is a wall when its region is at least as wide as
 //! it is thick (a rib seen from below is a strip, not a wall).
+//!
+//! Drafted walls: side planes that lean towards each other by up to the
+//! draft angle on each side (`thresholds.max_draft_deg`) also pair; such a
+//! wall's thickness varies across its region, from `thickness_range.1`
+//! (thickest) to `.0` (thinnest).
 
 use crate::config::Config;
 use geo::{Area, BooleanOps, BoundingRect, MultiPolygon};
@@ -25,8 +30,14 @@ pub struct Wall {
     pub normals: [Vector3; 2],
     /// Frame of side 0's plane: z is side 0's outward normal.
     pub frame: Frame,
-    /// Distance between the side planes, mm.
+    /// Distance between the side planes, mm (their mean distance over the
+    /// region for a drafted wall).
     pub thickness: f64,
+    /// Thinnest and thickest distance between the sides over the region,
+    /// mm (equal unless drafted).
+    pub thickness_range: (f64, f64),
+    /// Side 1's plane: a point on it (side 0's is `frame.origin`).
+    pub side1_point: Point3,
     /// Where the two sides bound the slab, in `frame`'s xy coordinates.
     pub region: MultiPolygon<f64>,
 }
@@ -63,11 +74,24 @@ impl Wall {
         if s == 0 {
             (self.frame.origin, self.normals[0])
         } else {
-            (
-                self.frame.origin - self.frame.z * self.thickness,
-                self.normals[1],
-            )
+            (self.side1_point, self.normals[1])
         }
+    }
+
+    /// Whether the sides lean towards each other (a drafted wall).
+    pub fn drafted(&self) -> bool {
+        self.thickness_range.1 > self.thickness_range.0
+    }
+
+    /// The distance between the sides at a point of side 0's plane, mm:
+    /// across the wall, along the bisector of the two outward normals (for
+    /// a symmetric draft, the horizontal width at that height).
+    pub fn thickness_at(&self, on_side0: &Point3) -> f64 {
+        let n1 = self.normals[1];
+        let across = (self.normals[0] - n1)
+            .try_normalize(1e-12)
+            .unwrap_or(self.frame.z);
+        (on_side0 - self.side1_point).dot(&n1) / across.dot(&n1)
     }
 
     pub fn contains_side_face(&self, f: FaceId) -> Option<usize> {
@@ -129,9 +153,13 @@ struct Pairing<'p> {
     boxes: Vec<thinwall_geom::BoundingBox>,
     lin: f64,
     cos_tol: f64,
+    /// Opposed planes leaning by up to twice the draft angle still pair.
+    cos_draft: f64,
     min_area: f64,
     /// Per plane: the body its faces belong to.
     plane_body: Vec<u32>,
+    /// Per face: a point on it (the mean of its outer loop's samples).
+    inside: Vec<Point3>,
 }
 
 /// Two opposed side planes bounding a slab, while their faces are collected.
@@ -140,6 +168,7 @@ struct Group {
     frame: Frame,
     normals: [Vector3; 2],
     thickness: f64,
+    side1_point: Point3,
     parts: Vec<geo::Polygon<f64>>,
 }
 
@@ -164,21 +193,50 @@ pub fn find_walls(a: &PartAnalysis, config: &Config) -> Vec<Wall> {
             continue;
         }
         g.faces.iter_mut().for_each(|v| v.sort());
-        walls.push(Wall {
+        let mut wall = Wall {
             sides: g.faces,
             normals: g.normals,
             frame: g.frame,
             thickness: g.thickness,
+            thickness_range: (g.thickness, g.thickness),
+            side1_point: g.side1_point,
             region,
-        });
+        };
+        if wall.normals[0].dot(&wall.normals[1]) >= -p.cos_tol && !drafted_thickness(&mut wall) {
+            continue; // the sides cross within the region: no slab
+        }
+        walls.push(wall);
     }
     walls
+}
+
+/// Measure a drafted wall's thickness over its region: thinnest, thickest,
+/// and the mean for its geometry. False when the sides meet within it (or
+/// one is more than three times the other: not a drafted wall).
+fn drafted_thickness(wall: &mut Wall) -> bool {
+    let at: Vec<f64> = wall
+        .region
+        .0
+        .iter()
+        .flat_map(|p| p.exterior().coords())
+        .map(|c| wall.thickness_at(&wall.frame.to_world(&Vector3::new(c.x, c.y, 0.0))))
+        .collect();
+    let lo = at.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = at.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if !(lo > 0.0 && hi <= 3.0 * lo) {
+        return false;
+    }
+    wall.thickness_range = (lo, hi);
+    wall.thickness = 0.5 * (lo + hi);
+    true
 }
 
 impl<'p> Pairing<'p> {
     fn new(a: &'p PartAnalysis, config: &Config) -> Self {
         let lin = a.tol().coplanar;
         let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
+        let draft = config.thresholds.max_draft_deg.max(0.0);
+        let cos_draft = (2.0 * draft).to_radians().cos().min(cos_tol);
         let faces: Vec<&PlanarFace> = a.planar_faces().collect();
         let body: Vec<u32> = faces.iter().map(|f| a.part().face(f.face).body.0).collect();
         let plane_of = plane_ids(&faces, &body, lin, cos_tol);
@@ -193,6 +251,14 @@ impl<'p> Pairing<'p> {
         let plane_body = members.iter().map(|m| body[m[0]]).collect();
         let own: Vec<MultiPolygon<f64>> = faces.iter().map(|f| f.polygon_in(&f.frame)).collect();
         let own_area = own.iter().map(|p| p.unsigned_area()).collect();
+        let inside = faces
+            .iter()
+            .map(|f| {
+                let pts: Vec<&Point3> = f.loops.outer.iter().flatten().collect();
+                let sum = pts.iter().fold(Vector3::zeros(), |s, p| s + p.coords);
+                Point3::from(sum / pts.len().max(1) as f64)
+            })
+            .collect();
         let boxes = faces
             .iter()
             .map(|f| {
@@ -212,8 +278,10 @@ impl<'p> Pairing<'p> {
             boxes,
             lin,
             cos_tol,
+            cos_draft,
             min_area: a.tol().min_overlap_area,
             plane_body,
+            inside,
         }
     }
 
@@ -225,8 +293,8 @@ impl<'p> Pairing<'p> {
         let own_body = self.plane_body[self.plane_of[i]];
         let mut behind: Vec<(f64, usize)> = (0..self.members.len())
             .filter(|&p| self.plane_body[p] == own_body)
-            .filter(|&p| self.plane_normal[p].dot(&n) < -self.cos_tol)
-            .map(|p| ((f.frame.origin - self.plane_point[p]).dot(&n), p))
+            .filter(|&p| self.plane_normal[p].dot(&n) < -self.cos_draft)
+            .map(|p| (self.distance_behind(i, p), p))
             .filter(|(d, _)| *d > self.lin)
             .collect();
         behind.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -273,6 +341,22 @@ impl<'p> Pairing<'p> {
                 self.record(i, p, d, &partners, &fresh, groups);
             }
         }
+    }
+
+    /// Whether faces `a` and `b` are anti-parallel within the parallel angle.
+    fn normal_parallel(&self, a: usize, b: usize) -> bool {
+        self.faces[a].normal().dot(&self.faces[b].normal()) < -self.cos_tol
+    }
+
+    /// How far plane `p` lies behind face `i`, along the face's normal:
+    /// between parallel planes anywhere, between drafted ones from a point
+    /// on the face.
+    fn distance_behind(&self, i: usize, p: usize) -> f64 {
+        let (f, n, np) = (self.faces[i], self.faces[i].normal(), self.plane_normal[p]);
+        if np.dot(&n) < -self.cos_tol {
+            return (f.frame.origin - self.plane_point[p]).dot(&n);
+        }
+        (self.inside[i] - self.plane_point[p]).dot(&np) / n.dot(&np)
     }
 
     /// The faces among `overlapping` that bound the fresh part of F (tested
@@ -336,6 +420,11 @@ impl<'p> Pairing<'p> {
                 frame: self.faces[s0].frame,
                 normals: [self.faces[s0].normal(), self.faces[s1].normal()],
                 thickness: d,
+                side1_point: if self.normal_parallel(s0, s1) {
+                    self.faces[s0].frame.origin - self.faces[s0].frame.z * d
+                } else {
+                    self.faces[s1].frame.origin
+                },
                 parts: Vec::new(),
             }
         });
