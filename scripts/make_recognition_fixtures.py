@@ -294,6 +294,22 @@ def drafted_expected(deg):
     return expect
 
 
+def engraved_plate():
+    """A 10 mm plate 300 x 200 with two glyphs, an L and a T, engraved 1 mm
+    deep in its top face."""
+    glyph_l = fuse(box(100, 90, 9, 102, 105, 11), box(100, 90, 9, 108, 92, 11))
+    glyph_t = fuse(box(115, 103, 9, 125, 105, 11), box(119, 90, 9, 121, 105, 11))
+    return cut(box(0, 0, 0, 300, 200, 10), glyph_l, glyph_t)
+
+
+def engraved_expected(fs):
+    c = lambda f, i: f["centroid"][i]
+    return [
+        wall("wall", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 10)), thickness=10.0, fs=fs, name="P"),
+        other("engraving", lambda f: 9 - 1e-6 <= c(f, 2) < 10 - 1e-6 and 99 < c(f, 0) < 126 and 89 < c(f, 1) < 106, fs, "P"),
+    ]
+
+
 def c_frame():
     """An upright C-section frame: 2 mm web (x-z plane) 120 high, 2 mm top
     and bottom flanges 30 wide, two 1.5 mm stiffeners, two Ø30 holes."""
@@ -383,6 +399,7 @@ def main():
         "sloped_rib": (sloped_rib, sloped_expected, "a rib leaning 12° from vertical"),
         "notched_rib": (notched_rib, notched_expected, "a rib with a notch at its top end"),
         "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
+        "engraved_plate": (engraved_plate, engraved_expected, "a plate with two glyphs engraved 1 mm deep: lettering, not walls"),
         "drafted_05": (lambda: drafted_panel(0.5), drafted_expected(0.5), "a drafted rib and flange, 0.5° per side"),
         "drafted_1": (lambda: drafted_panel(1.0), drafted_expected(1.0), "a drafted rib and flange, 1° per side"),
         "drafted_2": (lambda: drafted_panel(2.0), drafted_expected(2.0), "a drafted rib and flange, 2° per side"),

@@ -61,3 +61,29 @@ fn nist_stiffness_features_are_ones_a_planner_would_accept() {
     assert!(problems.is_empty(), "{problems:#?}");
     assert!(walls >= 20, "{walls} walls on the NIST parts");
 }
+
+#[test]
+fn lettering_is_an_engraving_where_there_is_lettering_and_nowhere_else() {
+    let lettered = ["ctc_05", "ftc_06", "ftc_11", "stc_06", "stc_08"];
+    let mut parts = nist_parts();
+    parts.extend(common::step_files(&common::shared_data().join("thinwall")));
+    for path in parts {
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        let (part, _) = thinwall_step::read_file(&path).unwrap();
+        let out = run(&part, None, &Request::default()).unwrap();
+        let engravings: Vec<_> = out
+            .recognition
+            .features
+            .iter()
+            .filter(|f| f.kind == thinwall_recognize::StiffnessKind::Engraving)
+            .collect();
+        let expected = lettered.iter().any(|l| name.contains(l));
+        assert_eq!(!engravings.is_empty(), expected, "{name}: {engravings:?}");
+        for e in engravings {
+            assert!(
+                e.faces.len() >= 10 && e.height.unwrap() > 0.0 && e.height.unwrap() <= 3.0,
+                "{name}"
+            );
+        }
+    }
+}

@@ -56,6 +56,8 @@ named_enum! {
         Pocket => "pocket",
         Chamfer => "chamfer",
         Fillet => "fillet",
+        /// Engraving, embossing or lettering on a face: a detail.
+        Engraving => "engraving",
     }
 }
 
@@ -81,6 +83,7 @@ impl StiffnessKind {
             StiffnessKind::Pocket => "P",
             StiffnessKind::Chamfer => "CH",
             StiffnessKind::Fillet => "FL",
+            StiffnessKind::Engraving => "E",
         }
     }
 }

@@ -118,7 +118,17 @@ fn recognize_json_follows_the_contract() {
     assert_eq!(v["setup"]["up"], serde_json::json!([0.0, 0.0, 1.0]));
     let feats = v["stiffness_features"].as_array().unwrap();
     let kinds = [
-        "web", "rib", "flange", "wall", "hole", "cutout", "notch", "pocket", "chamfer", "fillet",
+        "web",
+        "rib",
+        "flange",
+        "wall",
+        "hole",
+        "cutout",
+        "notch",
+        "pocket",
+        "chamfer",
+        "fillet",
+        "engraving",
     ];
     for f in feats {
         assert!(kinds.contains(&f["kind"].as_str().unwrap()));

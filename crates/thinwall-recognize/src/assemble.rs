@@ -258,6 +258,16 @@ pub fn details(
         d.refs
             .push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
     }
+    for e in &claims.engravings {
+        let mut f = StiffnessFeature::new(StiffnessKind::Engraving, a.step_ids(&e.faces));
+        f.body = a.part().face(e.faces[0]).body.0;
+        f.height = Some(e.depth);
+        f.length = Some(e.length);
+        f.width = Some(e.width);
+        d.features.push(f);
+        d.refs
+            .push(wall_of_detail(&e.faces).and_then(|w| d.wall_feature[w]));
+    }
     for (c, width) in &claims.chamfers {
         let mut f = StiffnessFeature::new(StiffnessKind::Chamfer, a.step_ids(&[*c]));
         f.body = a.part().face(*c).body.0;

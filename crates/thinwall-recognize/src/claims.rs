@@ -5,6 +5,7 @@
 use crate::config::Config;
 use crate::depressions::{self, Depression};
 use crate::details::{self, Blend};
+use crate::engraving::{self, Engraving};
 use crate::walls::Wall;
 use std::collections::HashSet;
 use thinwall_analysis::{PartAnalysis, StiffnessKind};
@@ -19,6 +20,7 @@ pub struct Claims {
     pub blends: Vec<Blend>,
     /// Chamfer faces and their widths, mm.
     pub chamfers: Vec<(FaceId, f64)>,
+    pub engravings: Vec<Engraving>,
 }
 
 /// The recognizer stages in the configured priority; kinds left out of the
@@ -43,19 +45,34 @@ fn stages(config: &Config) -> Vec<StiffnessKind> {
     stages
 }
 
-/// Run the stages; thin walls claim before thick ones.
-pub fn claim(a: &PartAnalysis, walls: &[Wall], thin: &[bool], config: &Config) -> Claims {
+/// Run the stages; engravings first (their strokes are squat slabs, never
+/// walls), then the configured ones; thin walls claim before thick ones.
+pub fn claim(
+    a: &PartAnalysis,
+    walls: &[Wall],
+    thin: &[bool],
+    squat: &[bool],
+    config: &Config,
+) -> Claims {
     let any_side: HashSet<FaceId> = walls
         .iter()
         .flat_map(|w| w.sides.iter().flatten().copied())
         .collect();
-    let mut taken: HashSet<FaceId> = any_side.clone();
-    let mut order: Vec<usize> = (0..walls.len()).collect();
-    order.sort_by_key(|&w| (!thin[w], w));
+    let wall_sides: HashSet<FaceId> = walls
+        .iter()
+        .zip(squat)
+        .filter(|(_, &s)| !s)
+        .flat_map(|(w, _)| w.sides.iter().flatten().copied())
+        .collect();
     let mut c = Claims {
         rims: vec![Vec::new(); walls.len()],
+        engravings: engraving::engravings(a, &wall_sides, config),
         ..Claims::default()
     };
+    let mut taken: HashSet<FaceId> = any_side.clone();
+    taken.extend(c.engravings.iter().flat_map(|e| e.faces.iter().copied()));
+    let mut order: Vec<usize> = (0..walls.len()).collect();
+    order.sort_by_key(|&w| (!thin[w], w));
     for stage in stages(config) {
         match stage {
             StiffnessKind::Hole => {

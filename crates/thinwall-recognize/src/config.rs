@@ -52,6 +52,8 @@ pub struct Thresholds {
     pub large_hole_factor: f64,
     /// Largest width of a chamfer face, mm.
     pub chamfer_max_width_mm: f64,
+    /// Deepest engraving (or highest embossing) recognized as lettering, mm.
+    pub engraving_max_depth_mm: f64,
 }
 
 impl Default for Thresholds {
@@ -64,6 +66,7 @@ impl Default for Thresholds {
             preferred_tool_diameter_mm: 12.0,
             large_hole_factor: 1.5,
             chamfer_max_width_mm: 10.0,
+            engraving_max_depth_mm: 3.0,
         }
     }
 }
@@ -166,6 +169,7 @@ impl Config {
             ("preferred_tool_diameter_mm", h.preferred_tool_diameter_mm),
             ("large_hole_factor", h.large_hole_factor),
             ("chamfer_max_width_mm", h.chamfer_max_width_mm),
+            ("engraving_max_depth_mm", h.engraving_max_depth_mm),
         ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(ConfigError::NotPositive { name, value });

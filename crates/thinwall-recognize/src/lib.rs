@@ -23,6 +23,7 @@ pub mod config;
 pub mod deflection;
 pub mod depressions;
 pub mod details;
+pub mod engraving;
 pub mod feature;
 pub mod junctions;
 pub mod sizing;
@@ -70,7 +71,8 @@ pub fn recognize(a: &PartAnalysis, config: &Config) -> Recognition {
     let sizes = sizing::size_walls(a, &walls, &junctions, &heights, config);
     let kinds = sizing::kinds(&sizes);
     let thin: Vec<bool> = sizes.iter().map(|s| s.thin).collect();
-    let claims = claims::claim(a, &walls, &thin, config);
+    let squat: Vec<bool> = sizes.iter().map(|s| s.squat).collect();
+    let claims = claims::claim(a, &walls, &thin, &squat, config);
     let mut draft = assemble::walls(a, &walls, &sizes, &kinds, &claims);
     assemble::depressions(a, &mut draft, &walls, &sizes, &claims.depressions, config);
     assemble::details(a, &mut draft, &walls, &sizes, &claims);

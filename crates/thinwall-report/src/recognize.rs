@@ -271,7 +271,7 @@ impl RecognitionReport {
             };
             let _ = writeln!(
                 s,
-                "  {:<6}{:<8}{:<28}{:>3} faces  in {}",
+                "  {:<6}{:<10}{:<28}{:>3} faces  in {}",
                 f.id,
                 f.kind.name(),
                 size,
