@@ -310,6 +310,27 @@ def engraved_expected(fs):
     ]
 
 
+def flange_cutouts():
+    """A 2 mm web 200 x 120 with a 1.6 mm rib and a 1.2 mm flange 30 high
+    on its y = 0 edge; three 10 mm cut-outs in the flange, 8, 12 and 8 deep
+    (the deep one between the others)."""
+    s = fuse(box(0, 0, 0, 200, 120, 2), box(0, 0, 2, 200, 1.2, 30), box(0, 59.2, 2, 200, 60.8, 25))
+    return cut(s, box(40, -1, 22, 50, 3, 31), box(95, -1, 18, 105, 3, 31), box(150, -1, 22, 160, 3, 31))
+
+
+def flange_cutouts_expected(fs):
+    c = lambda f, i: f["centroid"][i]
+    in_cut = lambda f, x0: x0 - 1e-6 <= c(f, 0) <= x0 + 10 + 1e-6 and c(f, 1) <= 1.2 + 1e-6 and c(f, 2) > 17
+    return [
+        wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 2)), thickness=2.0, fs=fs, name="W"),
+        wall("flange", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 0) and c(f, 2) > 2) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 1.2)), thickness=1.2, fs=fs, name="F"),
+        wall("rib", lambda f: (n_is(f, [0, -1, 0]) and near(c(f, 1), 59.2)) or (n_is(f, [0, 1, 0]) and near(c(f, 1), 60.8)), thickness=1.6, fs=fs, name="R"),
+        other("cutout", lambda f: in_cut(f, 40), fs, "F"),
+        other("cutout", lambda f: in_cut(f, 95), fs, "F"),
+        other("cutout", lambda f: in_cut(f, 150), fs, "F"),
+    ]
+
+
 def c_frame():
     """An upright C-section frame: 2 mm web (x-z plane) 120 high, 2 mm top
     and bottom flanges 30 wide, two 1.5 mm stiffeners, two Ø30 holes."""
@@ -399,6 +420,7 @@ def main():
         "sloped_rib": (sloped_rib, sloped_expected, "a rib leaning 12° from vertical"),
         "notched_rib": (notched_rib, notched_expected, "a rib with a notch at its top end"),
         "thick_wall": (thick_wall, thick_expected, "a 20 mm wall: not thin"),
+        "flange_cutouts": (flange_cutouts, flange_cutouts_expected, "a rib and a flange on a web, three cut-outs in the flange (8, 12 and 8 deep)"),
         "engraved_plate": (engraved_plate, engraved_expected, "a plate with two glyphs engraved 1 mm deep: lettering, not walls"),
         "drafted_05": (lambda: drafted_panel(0.5), drafted_expected(0.5), "a drafted rib and flange, 0.5° per side"),
         "drafted_1": (lambda: drafted_panel(1.0), drafted_expected(1.0), "a drafted rib and flange, 1° per side"),
@@ -419,7 +441,7 @@ def main():
                "source": f"scripts/make_recognition_fixtures.py (OpenCascade {occ_version()})"}
         json.dump(doc, open(os.path.join(out, name + ".expected.json"), "w"), indent=1)
         print(name, len(fs), "faces,", len(expected), "features")
-    for base_name, build in [("drafted_05", lambda: drafted_panel(0.5)), ("drafted_1", lambda: drafted_panel(1.0)),
+    for base_name, build in [("flange_cutouts", flange_cutouts), ("drafted_05", lambda: drafted_panel(0.5)), ("drafted_1", lambda: drafted_panel(1.0)),
                              ("drafted_2", lambda: drafted_panel(2.0))]:
         if only and base_name + "_turned" not in only:
             continue
