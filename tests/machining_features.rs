@@ -89,6 +89,45 @@ fn mfcad_train_face_accuracy_is_at_least_99_5_percent() {
 }
 
 #[test]
+fn mfcad_train_turned_by_rigid_motions_stays_right() {
+    // Each part turned by its own rotation and translation (the stock block
+    // comes from the part, not from the world's axes).
+    let files = common::step_files(&common::shared_data().join("mfcad/train"));
+    let (mut right, mut total) = (0usize, 0usize);
+    let mut wrong_parts = Vec::new();
+    for (i, f) in files.iter().enumerate() {
+        let labels: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(f.with_extension("labels.json")).unwrap(),
+        )
+        .unwrap();
+        let text = std::fs::read_to_string(f).unwrap();
+        let (r, t) = common::rigid_motion(i as u64 + 1);
+        let (turned, n) = common::turned_step(&text, &r, &t);
+        assert!(n > 10, "{}: nothing turned", f.display());
+        let (part, _) = thinwall_step::read_bytes(turned.as_bytes(), "turned.step").unwrap();
+        let m = recognize(&PartAnalysis::new(&part, Setup::default()));
+        let before = right;
+        for face in &part.faces {
+            let truth = labels["face_labels"][face.name.parse::<usize>().unwrap()]
+                .as_u64()
+                .unwrap();
+            right += usize::from(mfcad_class(&m, face.step_id) == truth);
+            total += 1;
+        }
+        if right - before != part.faces.len() {
+            wrong_parts.push(f.file_name().unwrap().to_string_lossy().to_string());
+        }
+    }
+    println!("MFCAD train turned: {right}/{total} faces right");
+    assert_eq!(total, 4482);
+    assert!(
+        wrong_parts.is_empty(),
+        "{} parts wrong: {wrong_parts:?}",
+        wrong_parts.len()
+    );
+}
+
+#[test]
 fn mfinstseg_sample_holes_step_and_rounds() {
     let dir = common::shared_data().join("mfinstseg");
     let (part, m) = run(&dir.join("test.step"));

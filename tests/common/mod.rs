@@ -43,3 +43,67 @@ pub fn recognize_with(
     let a = thinwall_analysis::PartAnalysis::new(part, setup);
     thinwall_recognize::recognize(&a, config)
 }
+
+/// The STEP text of a part turned by a rigid motion: every 3-D
+/// `CARTESIAN_POINT` is rotated by `r` and moved by `t`, every 3-D
+/// `DIRECTION` rotated (2-D parameter-space ones are left alone). Works on
+/// statements (split at `;`; the files' strings hold none). Returns the
+/// text and how many entities were turned.
+pub fn turned_step(
+    text: &str,
+    r: &nalgebra::Rotation3<f64>,
+    t: &nalgebra::Vector3<f64>,
+) -> (String, usize) {
+    let mut out = String::with_capacity(text.len() + text.len() / 4);
+    let mut turned = 0;
+    for stmt in text.split_inclusive(';') {
+        let is_point = stmt.contains("CARTESIAN_POINT(");
+        let is_dir = stmt.contains("= DIRECTION(") || stmt.contains("=DIRECTION(");
+        let coords = (is_point || is_dir)
+            .then(|| {
+                let open = stmt.rfind(",(")? + 2;
+                let close = open + stmt[open..].find(')')?;
+                let v: Vec<f64> = stmt[open..close]
+                    .split(',')
+                    .map(|x| x.trim().parse::<f64>())
+                    .collect::<Result<_, _>>()
+                    .ok()?;
+                (v.len() == 3).then_some((open, close, v))
+            })
+            .flatten();
+        match coords {
+            Some((open, close, v)) => {
+                let p = nalgebra::Vector3::new(v[0], v[1], v[2]);
+                let q = if is_point { r * p + t } else { r * p };
+                out.push_str(&stmt[..open]);
+                out.push_str(&format!("{:.17E},{:.17E},{:.17E}", q.x, q.y, q.z));
+                out.push_str(&stmt[close..]);
+                turned += 1;
+            }
+            None => out.push_str(stmt),
+        }
+    }
+    (out, turned)
+}
+
+/// A deterministic rotation and translation for case `seed`.
+pub fn rigid_motion(seed: u64) -> (nalgebra::Rotation3<f64>, nalgebra::Vector3<f64>) {
+    let mut s = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    let mut next = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((s >> 11) as f64) / ((1u64 << 53) as f64)
+    };
+    let axis = nalgebra::Vector3::new(next() - 0.5, next() - 0.5, next() - 0.5);
+    let axis = nalgebra::Unit::new_normalize(axis + nalgebra::Vector3::new(1e-3, 0.0, 0.0));
+    let angle = 0.2 + 2.8 * next();
+    let t = nalgebra::Vector3::new(
+        200.0 * next() - 100.0,
+        200.0 * next() - 100.0,
+        200.0 * next() - 100.0,
+    );
+    (nalgebra::Rotation3::from_axis_angle(&axis, angle), t)
+}

@@ -26,12 +26,16 @@
 //! are parallel to the block's, else slanted; a blind step of two faces
 //! triangular.
 
+mod stock;
+
+pub use stock::Stock;
+
 use geo::{Area, MultiPolygon};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
 use thinwall_analysis::{Cylinder, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
-use thinwall_brep::{FaceId, FaceProps};
+use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
 use thinwall_geom::{Surface, Vector3};
 use thinwall_graph::Convexity;
@@ -74,33 +78,6 @@ pub struct MachiningFeature {
     pub related: Vec<FeatureId>,
 }
 
-/// The six planes of the part's bounding block: index `2k` is the `min`
-/// side of axis `k`, `2k + 1` the `max` side.
-fn stock_plane(p: &FaceProps, bb: &thinwall_geom::BoundingBox, tol: f64) -> Option<usize> {
-    let n = p.normal?;
-    (0..3).find_map(|k| {
-        if n[k] > 1.0 - UNIT_PARALLEL_EPS
-            && (p.bbox.min[k] - bb.max[k]).abs() < tol
-            && (p.bbox.max[k] - bb.max[k]).abs() < tol
-        {
-            Some(2 * k + 1)
-        } else if n[k] < -1.0 + UNIT_PARALLEL_EPS
-            && (p.bbox.max[k] - bb.min[k]).abs() < tol
-            && (p.bbox.min[k] - bb.min[k]).abs() < tol
-        {
-            Some(2 * k)
-        } else {
-            None
-        }
-    })
-}
-
-fn plane_normal(sp: usize) -> Vector3 {
-    let mut v = Vector3::zeros();
-    v[sp / 2] = if sp % 2 == 1 { 1.0 } else { -1.0 };
-    v
-}
-
 /// Whether two unit normals point the same way.
 fn same_direction(a: &Vector3, b: &Vector3) -> bool {
     a.dot(b) > 1.0 - UNIT_PARALLEL_EPS
@@ -109,13 +86,9 @@ fn same_direction(a: &Vector3, b: &Vector3) -> bool {
 /// Recognize the machining features of the analysed part.
 pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
     let part = a.part();
-    let bb = a.bounding_box();
     let tol = a.tol().feature;
-    let stock: Vec<Option<usize>> = a
-        .face_props()
-        .iter()
-        .map(|p| stock_plane(p, bb, tol))
-        .collect();
+    let block = Stock::of(a);
+    let stock: Vec<Option<usize>> = part.face_ids().map(|f| block.plane_of(a, f)).collect();
     let is_stock = |f: FaceId| stock[f.index()].is_some();
     let mut out: Vec<MachiningFeature> = Vec::new();
     // Blends: chains of tangent curved faces.
@@ -144,7 +117,7 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
             .flat_map(|&f| a.graph().neighbours(f))
             .filter_map(|(h, _)| stock[h.index()])
             .collect();
-        out.push(depression_feature(a, &group, &touched));
+        out.push(depression_feature(a, &block, &group, &touched));
     }
     out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
     for (i, m) in out.iter_mut().enumerate() {
@@ -217,6 +190,7 @@ fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
 /// What typing a depression group needs: the stock planes it opens to,
 /// its distinct planes, its concave cylinders.
 struct GroupShape<'g> {
+    stock: &'g Stock,
     group: &'g [FaceId],
     touched: &'g BTreeSet<usize>,
     /// Axes with both block planes touched.
@@ -229,7 +203,12 @@ struct GroupShape<'g> {
 }
 
 impl<'g> GroupShape<'g> {
-    fn new(a: &PartAnalysis, group: &'g [FaceId], touched: &'g BTreeSet<usize>) -> Self {
+    fn new(
+        a: &PartAnalysis,
+        stock: &'g Stock,
+        group: &'g [FaceId],
+        touched: &'g BTreeSet<usize>,
+    ) -> Self {
         let tol = a.tol().feature;
         let opposite: Vec<usize> = (0..3)
             .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
@@ -263,11 +242,12 @@ impl<'g> GroupShape<'g> {
             .find(|&sp| {
                 planes
                     .iter()
-                    .any(|(n, _)| same_direction(n, &plane_normal(sp)))
+                    .any(|(n, _)| same_direction(n, &stock.normal(sp)))
             })
             .or_else(|| candidates.first().copied())
             .or_else(|| touched.iter().next().copied());
         Self {
+            stock,
             group,
             touched,
             opposite,
@@ -280,7 +260,7 @@ impl<'g> GroupShape<'g> {
     /// A floor facing the only stock plane it opens to.
     fn floor_up(&self) -> Option<Vector3> {
         if self.touched.len() == 1 {
-            self.entry.map(plane_normal)
+            self.entry.map(|sp| self.stock.normal(sp))
         } else {
             None
         }
@@ -330,10 +310,7 @@ impl<'g> GroupShape<'g> {
         } else if opposite && t == 3 {
             (Slot, true, tri_or_rect(d == 2))
         } else if opposite && t == 4 {
-            let aligned = self
-                .planes
-                .iter()
-                .all(|(n, _)| n.iter().any(|c| c.abs() > 1.0 - UNIT_PARALLEL_EPS));
+            let aligned = self.planes.iter().all(|(n, _)| self.stock.aligned(n));
             let profile = if d == 3 {
                 Profile::TwoSided
             } else if aligned {
@@ -358,12 +335,12 @@ impl<'g> GroupShape<'g> {
     fn direction(&self) -> Vector3 {
         if let Some(c) = self.cylinders.first() {
             match self.entry {
-                Some(sp) if plane_normal(sp).dot(&c.axis) > 0.0 => -c.axis,
+                Some(sp) if self.stock.normal(sp).dot(&c.axis) > 0.0 => -c.axis,
                 _ => c.axis,
             }
         } else {
             self.entry
-                .map(|sp| -plane_normal(sp))
+                .map(|sp| -self.stock.normal(sp))
                 .unwrap_or(-Vector3::z())
         }
     }
@@ -460,10 +437,11 @@ fn largest_tool(
 
 fn depression_feature(
     a: &PartAnalysis,
+    stock: &Stock,
     group: &[FaceId],
     touched: &BTreeSet<usize>,
 ) -> MachiningFeature {
-    let shape = GroupShape::new(a, group, touched);
+    let shape = GroupShape::new(a, stock, group, touched);
     let (kind, through, profile) = shape.typing(a);
     let dir = shape.direction();
     let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
@@ -487,7 +465,7 @@ fn depression_feature(
         open_to: touched
             .iter()
             .map(|&sp| {
-                let n = plane_normal(sp);
+                let n = stock.normal(sp);
                 [n.x, n.y, n.z]
             })
             .collect(),

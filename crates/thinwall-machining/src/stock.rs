@@ -1,0 +1,197 @@
+//! The stock a part is cut from: a block whose axes come from the part
+//! itself, so that a part turned by any rigid motion is judged alike.
+//!
+//! The axes are the part's dominant orthogonal planar directions: of all
+//! pairs of planar normal directions at right angles, the one whose
+//! faces, with those along their cross product, carry the most area (a
+//! block's sides outweigh a slanted step); with no such pair, the
+//! direction carrying the most area and the long side of the part's
+//! minimum rectangle seen along it. A part whose axes are the world's
+//! keeps the world's axes exactly (and its bounding box), so axis-aligned
+//! parts are measured as before. The block spans the part's extent along
+//! each axis.
+
+use thinwall_analysis::PartAnalysis;
+use thinwall_brep::FaceId;
+use thinwall_geom::tolerance::{FEATURE_PARALLEL_DEG, UNIT_PARALLEL_EPS};
+use thinwall_geom::Vector3;
+
+/// Two planar directions within this of a right angle can span the stock
+/// (cast and forged parts carry drafts of a degree or two), degrees.
+const FRAME_ORTHOGONAL_DEG: f64 = 3.0;
+/// Axes within this of the world's are taken as the world's (a drafted part
+/// modelled square to the world is cut from a square block), degrees.
+const WORLD_SNAP_DEG: f64 = 2.0;
+
+/// The stock block: three axes and the part's extent along each.
+pub struct Stock {
+    pub axes: [Vector3; 3],
+    lo: [f64; 3],
+    hi: [f64; 3],
+    /// The axes are the world's: faces' and the part's boxes measure them.
+    world: bool,
+    tol: f64,
+}
+
+impl Stock {
+    /// The stock of an analysed part.
+    pub fn of(a: &PartAnalysis) -> Self {
+        let axes = dominant_axes(a);
+        let world = axes == [Vector3::x(), Vector3::y(), Vector3::z()];
+        let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
+        let all: Vec<FaceId> = a.part().face_ids().collect();
+        for k in 0..3 {
+            (lo[k], hi[k]) = if world {
+                (a.bounding_box().min[k], a.bounding_box().max[k])
+            } else {
+                a.extent(&all, &axes[k])
+            };
+        }
+        Self {
+            axes,
+            lo,
+            hi,
+            world,
+            tol: a.tol().feature,
+        }
+    }
+
+    /// The outward normal of block plane `sp` (`2k`: the low side of axis
+    /// `k`, `2k + 1` the high side).
+    pub fn normal(&self, sp: usize) -> Vector3 {
+        let n = self.axes[sp / 2];
+        if sp % 2 == 1 {
+            n
+        } else {
+            -n
+        }
+    }
+
+    /// Whether a unit direction is one of the block's axes (either sense).
+    pub fn aligned(&self, n: &Vector3) -> bool {
+        self.axes
+            .iter()
+            .any(|ax| n.dot(ax).abs() > 1.0 - UNIT_PARALLEL_EPS)
+    }
+
+    /// The block plane a planar face lies on, if any.
+    pub fn plane_of(&self, a: &PartAnalysis, f: FaceId) -> Option<usize> {
+        let p = a.props(f);
+        let n = p.normal?;
+        (0..3).find_map(|k| {
+            let along = n.dot(&self.axes[k]);
+            let (min, max) = if self.world {
+                (p.bbox.min[k], p.bbox.max[k])
+            } else {
+                a.extent(&[f], &self.axes[k])
+            };
+            let at = |v: f64| (min - v).abs() < self.tol && (max - v).abs() < self.tol;
+            if along > 1.0 - UNIT_PARALLEL_EPS && at(self.hi[k]) {
+                Some(2 * k + 1)
+            } else if along < -1.0 + UNIT_PARALLEL_EPS && at(self.lo[k]) {
+                Some(2 * k)
+            } else {
+                None
+            }
+        })
+    }
+}
+
+/// A direction with a canonical sense: its largest component positive.
+fn canonical(v: Vector3) -> Vector3 {
+    let k = v.iamax();
+    if v[k] < 0.0 {
+        -v
+    } else {
+        v
+    }
+}
+
+/// The part's dominant orthogonal planar directions (module docs).
+fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
+    let world = [Vector3::x(), Vector3::y(), Vector3::z()];
+    let cos = FEATURE_PARALLEL_DEG.to_radians().cos();
+    let mut clusters: Vec<(Vector3, f64)> = Vec::new();
+    for f in a.part().face_ids() {
+        let Some(n) = a.props(f).normal else { continue };
+        let area = a.props(f).area;
+        match clusters.iter_mut().find(|(c, _)| c.dot(&n).abs() > cos) {
+            Some(c) => c.1 += area,
+            None => clusters.push((canonical(n), area)),
+        }
+    }
+    let sin = FRAME_ORTHOGONAL_DEG.to_radians().sin();
+    let area_along = |d: &Vector3| -> f64 {
+        clusters
+            .iter()
+            .filter(|(c, _)| c.dot(d).abs() > cos)
+            .map(|c| c.1)
+            .sum()
+    };
+    let mut best: Option<(f64, Vector3, Vector3)> = None;
+    for (i, (ci, ai)) in clusters.iter().enumerate() {
+        for (cj, aj) in clusters.iter().skip(i + 1) {
+            if ci.dot(cj).abs() >= sin {
+                continue;
+            }
+            let score = ai + aj + area_along(&ci.cross(cj).normalize());
+            if best.as_ref().is_none_or(|b| score > b.0) {
+                let (d1, d2) = if ai >= aj { (*ci, *cj) } else { (*cj, *ci) };
+                best = Some((score, d1, d2));
+            }
+        }
+    }
+    let (d1, d2) = match best {
+        Some((_, d1, d2)) => (d1, canonical(d2 - d1 * d2.dot(&d1)).normalize()),
+        None => {
+            let Some(d1) = clusters
+                .iter()
+                .max_by(|x, y| x.1.total_cmp(&y.1))
+                .map(|c| c.0)
+            else {
+                return world;
+            };
+            (d1, across(a, &d1))
+        }
+    };
+    let axes = [d1, d2, canonical(d1.cross(&d2).normalize())];
+    // Axes that are the world's (in any order and sense) are the world's.
+    let snap = WORLD_SNAP_DEG.to_radians().cos();
+    let snapped: Vec<Vector3> = axes
+        .iter()
+        .filter_map(|ax| world.iter().find(|w| ax.dot(w).abs() > snap).copied())
+        .collect();
+    if snapped.len() == 3 {
+        return world;
+    }
+    axes
+}
+
+/// The long side of the part's minimum rectangle seen along `d1`.
+fn across(a: &PartAnalysis, d1: &Vector3) -> Vector3 {
+    use geo::MinimumRotatedRect;
+    let u = thinwall_geom::frame::any_perpendicular(d1);
+    let v = d1.cross(&u);
+    let pts: Vec<geo::Point<f64>> = a
+        .part()
+        .face_ids()
+        .flat_map(|f| a.boundary_points(f))
+        .map(|p| geo::Point::new(p.coords.dot(&u), p.coords.dot(&v)))
+        .collect();
+    let dir = geo::MultiPoint::from(pts)
+        .minimum_rotated_rect()
+        .and_then(|r| {
+            let c: Vec<geo::Coord<f64>> = r.exterior().coords().copied().collect();
+            let (e1, e2) = (
+                (c[1].x - c[0].x, c[1].y - c[0].y),
+                (c[2].x - c[1].x, c[2].y - c[1].y),
+            );
+            let e = if e1.0.hypot(e1.1) >= e2.0.hypot(e2.1) {
+                e1
+            } else {
+                e2
+            };
+            (u * e.0 + v * e.1).try_normalize(1e-12)
+        });
+    canonical(dir.unwrap_or(u))
+}
