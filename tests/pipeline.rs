@@ -87,6 +87,16 @@ fn machining_features_name_the_stiffness_features_on_their_faces() {
             let got: BTreeSet<String> = m.related.iter().map(|r| r.to_string()).collect();
             assert_eq!(got, want, "{name} {}", m.id);
             linked += got.len();
+            // And the other way round.
+            for f in &out.recognition.features {
+                assert_eq!(
+                    f.related.contains(&m.id),
+                    want.contains(&f.id.to_string()),
+                    "{name} {} {}",
+                    f.id,
+                    m.id
+                );
+            }
         }
         // In the JSON too.
         let (part, _) = thinwall_step::read_file(

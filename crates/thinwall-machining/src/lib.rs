@@ -119,6 +119,12 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
             .collect();
         out.push(depression_feature(a, &block, &group, &touched));
     }
+    // A feature has a depth and a profile, or it is not a feature (a lone
+    // side face seen edge-on, a whole-part face of a casting).
+    let least = a.tol().coplanar;
+    out.retain(|m| {
+        m.length > least && m.width > least && (m.depth > least || m.kind == MachiningKind::Chamfer)
+    });
     out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
     for (i, m) in out.iter_mut().enumerate() {
         m.id = MachiningId(i as u32 + 1);
@@ -150,9 +156,29 @@ fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
     r
 }
 
+/// A blend chain: its radius (smallest) as depth, its length and width as
+/// sizes.
 fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
     let convex = a.part().face(group[0]).same_sense;
     let dir = a.props(group[0]).axis.map_or(Vector3::z(), |ax| ax.1);
+    let radii_v = radii(a, group);
+    let along = |d: &Vector3| {
+        let (lo, hi) = a.extent(group, d);
+        if hi.is_finite() {
+            hi - lo
+        } else {
+            0.0
+        }
+    };
+    // Its length: the longest extent of the chain (along the axes and its
+    // own axis); its width: the developed arc, area over length, never more
+    // than the length.
+    let length = [Vector3::x(), Vector3::y(), Vector3::z(), dir]
+        .iter()
+        .map(along)
+        .fold(0.0, f64::max);
+    let area: f64 = group.iter().map(|&f| a.props(f).area).sum();
+    let arc = if length > 0.0 { area / length } else { 0.0 };
     MachiningFeature {
         id: MachiningId::default(),
         kind: MachiningKind::Fillet,
@@ -168,10 +194,10 @@ fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
         bottom_faces: vec![],
         side_faces: a.step_ids(group),
         open_to: vec![],
-        depth: 0.0,
-        length: 0.0,
-        width: 0.0,
-        radii: radii(a, group),
+        depth: radii_v.first().copied().unwrap_or(0.0),
+        length,
+        width: arc.min(length),
+        radii: radii_v,
         largest_tool_diameter: None,
         related: vec![],
     }
@@ -450,8 +476,24 @@ fn depression_feature(
             .is_some_and(|n| n.dot(&-dir) > 1.0 - NEAR_PARALLEL_EPS)
     });
     let (lo, hi) = a.extent(group, &dir);
-    let (length, width) = profile_sizes(a, group, &dir);
     let radii_v = radii(a, group);
+    // A hole's profile is its widest concave cylinder: its true diameter,
+    // not the extent of boundary samples.
+    let hole_diameter = shape
+        .cylinders
+        .iter()
+        .map(|c| 2.0 * c.radius)
+        .fold(0.0, f64::max);
+    let (length, width) = if kind == MachiningKind::Hole && hole_diameter > 0.0 {
+        (hole_diameter, hole_diameter)
+    } else if kind == MachiningKind::Chamfer {
+        // A chamfer is one inclined face: its own long and short sides.
+        a.polygon(group[0])
+            .and_then(|p| min_rect_sides(&p))
+            .unwrap_or_else(|| profile_sizes(a, group, &dir))
+    } else {
+        profile_sizes(a, group, &dir)
+    };
     MachiningFeature {
         id: MachiningId::default(),
         kind,

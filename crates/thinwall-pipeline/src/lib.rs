@@ -140,9 +140,10 @@ pub fn run(
     clock.record("stiffness features", t_stiff);
     clock.record("machining features", t_mach);
     clock.lap("recognizers (wall time)");
+    let mut recognition = recognition;
     let structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
     structure.validate()?;
-    relate(&mut machining, &recognition);
+    relate(&mut machining, &mut recognition);
     clock.lap("connections and links");
     let warnings = a.warnings();
     Ok(Outcome {
@@ -190,16 +191,17 @@ impl Clock {
     }
 }
 
-/// Fill each machining feature's `related`: the stiffness features sharing
-/// a face with it, in report order.
-fn relate(machining: &mut [MachiningFeature], r: &Recognition) {
+/// Fill each machining feature's `related` (the stiffness features sharing
+/// a face with it, in report order) and each stiffness feature's (the
+/// machining features sharing one).
+fn relate(machining: &mut [MachiningFeature], r: &mut Recognition) {
     let mut by_face: BTreeMap<u64, Vec<FeatureId>> = BTreeMap::new();
     for f in &r.features {
         for &face in &f.faces {
             by_face.entry(face).or_default().push(f.id);
         }
     }
-    for m in machining {
+    for m in machining.iter_mut() {
         let mut related: Vec<FeatureId> = Vec::new();
         for face in &m.faces {
             for &id in by_face.get(face).into_iter().flatten() {
@@ -211,5 +213,12 @@ fn relate(machining: &mut [MachiningFeature], r: &Recognition) {
         let pos = |id: &FeatureId| r.features.iter().position(|f| f.id == *id);
         related.sort_by_key(pos);
         m.related = related;
+    }
+    for f in &mut r.features {
+        f.related = machining
+            .iter()
+            .filter(|m| m.related.contains(&f.id))
+            .map(|m| m.id)
+            .collect();
     }
 }

@@ -93,6 +93,10 @@ pub struct StiffnessFeature {
     /// Cut-outs, notches, chamfers: width, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub width: Option<f64>,
+    /// The machining features sharing a face with it (filled by the
+    /// pipeline, which runs both recognizers).
+    #[serde(default)]
+    pub related: Vec<thinwall_analysis::MachiningId>,
     /// Walls: the geometry a planner builds on (region, side polygons, foot
     /// line). Library only, not in the JSON.
     #[serde(skip)]
@@ -164,6 +168,7 @@ impl StiffnessFeature {
             radius: None,
             convex: None,
             width: None,
+            related: Vec::new(),
             geometry: None,
         }
     }
