@@ -155,6 +155,8 @@ struct Pairing<'p> {
     cos_tol: f64,
     /// Opposed planes leaning by up to twice the draft angle still pair.
     cos_draft: f64,
+    /// `min_extent_to_thickness`: how much longer than thick a wall is.
+    min_extent: f64,
     min_area: f64,
     /// Per plane: the body its faces belong to.
     plane_body: Vec<u32>,
@@ -279,6 +281,7 @@ impl<'p> Pairing<'p> {
             lin,
             cos_tol,
             cos_draft,
+            min_extent: config.thresholds.min_extent_to_thickness,
             min_area: a.tol().min_overlap_area,
             plane_body,
             inside,
@@ -291,18 +294,29 @@ impl<'p> Pairing<'p> {
         let f = self.faces[i];
         let n = f.normal();
         let own_body = self.plane_body[self.plane_of[i]];
+        // A drafted partner must be near enough for a wall: a wall is at
+        // least `min_extent_to_thickness` times longer and higher than thick.
+        let drafted_reach = self.boxes[i].diagonal() / self.min_extent;
         let mut behind: Vec<(f64, usize)> = (0..self.members.len())
             .filter(|&p| self.plane_body[p] == own_body)
             .filter(|&p| self.plane_normal[p].dot(&n) < -self.cos_draft)
             .map(|p| (self.distance_behind(i, p), p))
             .filter(|(d, _)| *d > self.lin)
+            .filter(|&(d, p)| self.plane_normal[p].dot(&n) < -self.cos_tol || d <= drafted_reach)
             .collect();
-        behind.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Parallel planes first, nearest first; drafted ones only for a
+        // face parallel planes leave mostly unbounded (a drafted wall's
+        // sides have no parallel partner).
+        let drafted = |p: usize| self.plane_normal[p].dot(&n) >= -self.cos_tol;
+        behind.sort_by(|a, b| drafted(a.1).cmp(&drafted(b.1)).then(a.0.total_cmp(&b.0)));
         let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
         let mut covered_area = 0.0;
         for (d, p) in behind {
             if covered_area >= self.own_area[i] - self.min_area {
                 break; // F is bounded everywhere by nearer faces
+            }
+            if drafted(p) && covered_area > 0.5 * self.own_area[i] {
+                break;
             }
             let overlapping: Vec<usize> = self.members[p]
                 .iter()
