@@ -42,40 +42,8 @@ enum Command {
     Recognize {
         /// The STEP file.
         part: PathBuf,
-        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
-        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-        up: Option<[f64; 3]>,
-        /// TOML file with recognition settings (see docs/RECOGNITION.md).
-        #[arg(long)]
-        config: Option<PathBuf>,
-        /// Only report these kinds (comma separated).
-        #[arg(long, value_delimiter = ',')]
-        include: Vec<String>,
-        /// Never report these kinds (comma separated).
-        #[arg(long, value_delimiter = ',')]
-        exclude: Vec<String>,
-        /// Maximum milling force, N.
-        #[arg(long)]
-        force: Option<f64>,
-        /// Allowed deflection, mm.
-        #[arg(long)]
-        allowed_deflection: Option<f64>,
-        /// Preferred tool diameter, mm.
-        #[arg(long)]
-        tool_diameter: Option<f64>,
-        /// Machine class: 3-axis (tool axis = up) or 5-axis.
-        #[arg(long, value_enum, default_value = "3-axis")]
-        machine: MachineArg,
-        /// 5-axis: largest tilt of the tool axis from up, degrees.
-        #[arg(long, default_value_t = 30.0)]
-        tilt_limit: f64,
-        /// Link thin walls to the thick walls they stand on.
-        #[arg(long)]
-        connect_thick: bool,
-        /// Recognize a part whose shell is open (edges used by one face only)
-        /// instead of refusing it.
-        #[arg(long)]
-        allow_open: bool,
+        #[command(flatten)]
+        flags: RecognizeFlags,
         /// Print the time of every stage and every warning to stderr.
         #[arg(long)]
         verbose: bool,
@@ -215,33 +183,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
         }
         Command::Recognize {
             part,
-            up,
-            config,
-            include,
-            exclude,
-            force,
-            allowed_deflection,
-            tool_diameter,
-            machine,
-            tilt_limit,
-            connect_thick,
-            allow_open,
+            flags,
             verbose,
             format,
         } => {
-            let flags = RecognizeFlags {
-                allow_open,
-                up,
-                config,
-                include,
-                exclude,
-                force,
-                allowed_deflection,
-                tool_diameter,
-                machine,
-                tilt_limit,
-                connect_thick,
-            };
             let request = flags.request()?;
             let t0 = std::time::Instant::now();
             let (model, read) = thinwall_step::read_file(&part)?;
@@ -268,18 +213,42 @@ fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 /// The settings flags of `recognize`.
+#[derive(clap::Args)]
 struct RecognizeFlags {
-    allow_open: bool,
+    /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+    #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
     up: Option<[f64; 3]>,
+    /// TOML file with recognition settings (see docs/RECOGNITION.md).
+    #[arg(long)]
     config: Option<PathBuf>,
+    /// Only report these kinds (comma separated).
+    #[arg(long, value_delimiter = ',')]
     include: Vec<String>,
+    /// Never report these kinds (comma separated).
+    #[arg(long, value_delimiter = ',')]
     exclude: Vec<String>,
+    /// Maximum milling force, N.
+    #[arg(long)]
     force: Option<f64>,
+    /// Allowed deflection, mm.
+    #[arg(long)]
     allowed_deflection: Option<f64>,
+    /// Preferred tool diameter, mm.
+    #[arg(long)]
     tool_diameter: Option<f64>,
+    /// Machine class: 3-axis (tool axis = up) or 5-axis.
+    #[arg(long, value_enum, default_value = "3-axis")]
     machine: MachineArg,
+    /// 5-axis: largest tilt of the tool axis from up, degrees.
+    #[arg(long, default_value_t = 30.0)]
     tilt_limit: f64,
+    /// Link thin walls to the thick walls they stand on.
+    #[arg(long)]
     connect_thick: bool,
+    /// Recognize a part whose shell is open (edges used by one face only)
+    /// instead of refusing it.
+    #[arg(long)]
+    allow_open: bool,
 }
 
 impl RecognizeFlags {

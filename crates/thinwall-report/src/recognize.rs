@@ -196,13 +196,96 @@ impl RecognitionReport {
     }
 }
 
+/// The walls table, thin ones first.
+fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
+    let thin = walls.iter().filter(|f| f.thin == Some(true)).count();
+    let _ = writeln!(s, "walls: {} ({} thin)", walls.len(), thin);
+    let _ = writeln!(
+        s,
+        "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  on",
+        "id", "kind", "thin", "t mm", "h mm", "L mm", "defl. mm", "h/t", "faces"
+    );
+    let mut sorted = walls.to_vec();
+    sorted.sort_by_key(|f| (f.thin != Some(true), f.kind, f.id.to_string()));
+    for f in sorted {
+        let _ = writeln!(
+            s,
+            "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  {}",
+            f.id,
+            f.kind.name(),
+            if f.thin == Some(true) { "yes" } else { "no" },
+            mm(f.thickness),
+            mm(f.height),
+            mm(f.length),
+            f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
+            f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
+            f.faces.len(),
+            f.base.map(|b| b.to_string()).unwrap_or_default()
+        );
+    }
+}
+
+/// Depressions and details, each with its size and the wall it is in or on.
+fn others_text(s: &mut String, others: &[&StiffnessFeature]) {
+    let _ = writeln!(s, "in and on walls: {}", others.len());
+    for f in others {
+        let flag = |on: Option<bool>, word: &'static str| if on == Some(true) { word } else { "" };
+        let size = match f.kind {
+            StiffnessKind::Hole => format!(
+                "Ø{} h {}{}{}",
+                mm(f.diameter),
+                mm(f.height),
+                flag(f.large, " large"),
+                flag(f.through.map(|t| !t), " blind")
+            ),
+            StiffnessKind::Fillet => format!("r {}{}", mm(f.radius), flag(f.convex, " (round)")),
+            _ => format!("depth {} width {}", mm(f.height), mm(f.width)),
+        };
+        let _ = writeln!(
+            s,
+            "  {:<6}{:<10}{:<28}{:>3} faces  in {}",
+            f.id,
+            f.kind.name(),
+            size,
+            f.faces.len(),
+            f.wall.map_or_else(|| "-".into(), |w| w.to_string())
+        );
+    }
+}
+
+/// The machining features, a line each.
+fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeature]) {
+    if features.is_empty() {
+        return;
+    }
+    let _ = writeln!(s, "machining features: {}", features.len());
+    for m in features {
+        let _ = writeln!(
+            s,
+            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}",
+            m.id,
+            m.kind,
+            m.profile,
+            if m.through { "through" } else { "" },
+            m.depth,
+            m.length,
+            m.width,
+            m.faces.len(),
+            m.largest_tool_diameter
+                .map(|d| format!("  tool <= {d:.2}"))
+                .unwrap_or_default()
+        );
+    }
+}
+
 fn mm(v: Option<f64>) -> String {
     v.map(|x| format!("{x:.2}")).unwrap_or_else(|| "-".into())
 }
 
 impl RecognitionReport {
     /// A table a process planner can scan: walls first (thin ones on top),
-    /// then what is in and on them.
+    /// then what is in and on them, the structure, the warnings and the
+    /// machining features.
     pub fn to_text(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(
@@ -212,79 +295,11 @@ impl RecognitionReport {
         );
         let feats: Vec<&StiffnessFeature> =
             self.stiffness_features.iter().map(|e| &e.feature).collect();
-        let walls: Vec<&StiffnessFeature> =
-            feats.iter().copied().filter(|f| f.kind.is_wall()).collect();
-        let thin = walls.iter().filter(|f| f.thin == Some(true)).count();
-        let _ = writeln!(s, "walls: {} ({} thin)", walls.len(), thin);
-        let _ = writeln!(
-            s,
-            "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  on",
-            "id", "kind", "thin", "t mm", "h mm", "L mm", "defl. mm", "h/t", "faces"
-        );
-        let mut sorted = walls.clone();
-        sorted.sort_by_key(|f| (f.thin != Some(true), f.kind, f.id.to_string()));
-        for f in sorted {
-            let _ = writeln!(
-                s,
-                "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  {}",
-                f.id,
-                f.kind.name(),
-                if f.thin == Some(true) { "yes" } else { "no" },
-                mm(f.thickness),
-                mm(f.height),
-                mm(f.length),
-                f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
-                f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
-                f.faces.len(),
-                f.base.map(|b| b.to_string()).unwrap_or_default()
-            );
-        }
-        let others: Vec<&StiffnessFeature> = feats
-            .iter()
-            .copied()
-            .filter(|f| !f.kind.is_wall())
-            .collect();
-        let _ = writeln!(s, "in and on walls: {}", others.len());
-        for f in others {
-            let size = match f.kind {
-                StiffnessKind::Hole => format!(
-                    "Ø{} h {}{}{}",
-                    mm(f.diameter),
-                    mm(f.height),
-                    if f.large == Some(true) { " large" } else { "" },
-                    if f.through == Some(false) {
-                        " blind"
-                    } else {
-                        ""
-                    }
-                ),
-                StiffnessKind::Fillet => format!(
-                    "r {}{}",
-                    mm(f.radius),
-                    if f.convex == Some(true) {
-                        " (round)"
-                    } else {
-                        ""
-                    }
-                ),
-                _ => format!("depth {} width {}", mm(f.height), mm(f.width)),
-            };
-            let _ = writeln!(
-                s,
-                "  {:<6}{:<10}{:<28}{:>3} faces  in {}",
-                f.id,
-                f.kind.name(),
-                size,
-                f.faces.len(),
-                f.wall.map_or_else(|| "-".into(), |w| w.to_string())
-            );
-        }
-        let notes: Vec<&StiffnessFeature> = walls
-            .iter()
-            .copied()
-            .filter(|f| f.model_note.is_some())
-            .collect();
-        for f in notes {
+        let (walls, others): (Vec<&StiffnessFeature>, Vec<&StiffnessFeature>) =
+            feats.iter().copied().partition(|f| f.kind.is_wall());
+        walls_text(&mut s, &walls);
+        others_text(&mut s, &others);
+        for f in walls.iter().filter(|f| f.model_note.is_some()) {
             let _ = writeln!(
                 s,
                 "  {}: {}",
@@ -299,26 +314,7 @@ impl RecognitionReport {
                 let _ = writeln!(s, "  {}", w.message);
             }
         }
-        if !self.machining_features.is_empty() {
-            let _ = writeln!(s, "machining features: {}", self.machining_features.len());
-            for m in &self.machining_features {
-                let _ = writeln!(
-                    s,
-                    "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}",
-                    m.id,
-                    m.kind,
-                    m.profile,
-                    if m.through { "through" } else { "" },
-                    m.depth,
-                    m.length,
-                    m.width,
-                    m.faces.len(),
-                    m.largest_tool_diameter
-                        .map(|d| format!("  tool <= {d:.2}"))
-                        .unwrap_or_default()
-                );
-            }
-        }
+        machining_text(&mut s, &self.machining_features);
         s
     }
 
