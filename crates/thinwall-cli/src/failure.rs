@@ -19,6 +19,16 @@ impl Failure {
         Failure::Usage(e.to_string())
     }
 
+    /// The same failure, its message prefixed with the file it concerns.
+    pub fn in_file(self, file: &std::path::Path) -> Self {
+        let at = |m: String| format!("{}: {m}", file.display());
+        match self {
+            Failure::Usage(m) => Failure::Usage(at(m)),
+            Failure::Input(m) => Failure::Input(at(m)),
+            Failure::Internal(m) => Failure::Internal(at(m)),
+        }
+    }
+
     pub fn exit_code(&self) -> u8 {
         match self {
             Failure::Usage(_) => 2,

@@ -191,7 +191,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let t0 = std::time::Instant::now();
             let (model, read) = thinwall_step::read_file(&part)?;
             let read_seconds = t0.elapsed().as_secs_f64();
-            let outcome = thinwall_pipeline::run(&model, None, &request)?;
+            let outcome = thinwall_pipeline::run(&model, None, &request)
+                .map_err(|e| Failure::from(e).in_file(&part))?;
             let report =
                 thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome)
                     .with_read(&read);
