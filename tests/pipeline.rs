@@ -221,3 +221,52 @@ fn assembly_instances_are_told_apart_and_never_spanned() {
         .iter()
         .all(|f| f["body"].is_u64()));
 }
+
+#[test]
+fn the_two_views_never_disagree_without_a_note() {
+    let mut parts = common::step_files(&common::root().join("fixtures/recognition"));
+    parts.extend(
+        common::step_files(&common::shared_data().join("nist"))
+            .into_iter()
+            .filter(|f| !f.to_string_lossy().contains("-tg")),
+    );
+    let mut noted = 0;
+    for path in parts {
+        let (part, _) = thinwall_step::read_file(&path).unwrap();
+        let out = run(&part, None, &Request::default()).unwrap();
+        for m in &out.machining {
+            for id in &m.related {
+                let f = out.recognition.feature(*id).unwrap();
+                if !f.kind.agrees_with(m.kind) {
+                    let prefix = format!("{} ({}) and {} (", f.id, f.kind, m.id);
+                    assert!(
+                        out.view_notes.iter().any(|n| n.starts_with(&prefix)),
+                        "{}: {} and {} disagree without a note",
+                        path.display(),
+                        f.id,
+                        m.id
+                    );
+                    noted += 1;
+                }
+            }
+        }
+        assert_eq!(out.view_notes.len(), {
+            let mut n = 0;
+            for m in &out.machining {
+                n += m
+                    .related
+                    .iter()
+                    .filter(|id| {
+                        !out.recognition
+                            .feature(**id)
+                            .unwrap()
+                            .kind
+                            .agrees_with(m.kind)
+                    })
+                    .count();
+            }
+            n
+        });
+    }
+    assert!(noted > 0, "no disagreement at all: the check is idle");
+}

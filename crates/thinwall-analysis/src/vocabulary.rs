@@ -70,6 +70,27 @@ impl StiffnessKind {
         )
     }
 
+    /// Whether a machining feature of `kind` on the same faces tells the same
+    /// story: a hole is a hole, a pocket a pocket or step, a cut-out a slot,
+    /// step, passage or pocket, a notch a step or slot, a fillet a fillet, a
+    /// chamfer a chamfer. Walls and engravings share faces with anything.
+    pub fn agrees_with(self, kind: MachiningKind) -> bool {
+        use MachiningKind as M;
+        match self {
+            StiffnessKind::Web
+            | StiffnessKind::Rib
+            | StiffnessKind::Flange
+            | StiffnessKind::Wall
+            | StiffnessKind::Engraving => true,
+            StiffnessKind::Hole => kind == M::Hole,
+            StiffnessKind::Pocket => matches!(kind, M::Pocket | M::Step),
+            StiffnessKind::Cutout => matches!(kind, M::Slot | M::Step | M::Passage | M::Pocket),
+            StiffnessKind::Notch => matches!(kind, M::Step | M::Slot),
+            StiffnessKind::Fillet => kind == M::Fillet,
+            StiffnessKind::Chamfer => kind == M::Chamfer,
+        }
+    }
+
     /// Prefix of this kind's feature ids (`R` in `R2`).
     pub fn prefix(self) -> &'static str {
         match self {

@@ -70,6 +70,9 @@ pub struct Outcome {
     /// What the analysis found questionable (approximate figures, open or
     /// non-manifold edges), in full.
     pub warnings: Vec<Warning>,
+    /// Where the stiffness and machining views name the same faces
+    /// differently (a hole that machining calls a pocket), one note each.
+    pub view_notes: Vec<String>,
     /// Seconds per stage, in order (for `--verbose`; the library never prints).
     pub timings: Vec<(&'static str, f64)>,
 }
@@ -146,6 +149,7 @@ pub fn run(
     relate(&mut machining, &mut recognition);
     clock.lap("connections and links");
     let warnings = a.warnings();
+    let view_notes = disagreements(&machining, &recognition);
     Ok(Outcome {
         request: req.clone(),
         setup: req.setup.clone(),
@@ -154,8 +158,27 @@ pub fn run(
         machining,
         face_props: a.into_face_props(),
         warnings,
+        view_notes,
         timings: clock.laps,
     })
+}
+
+/// One note per machining feature and related stiffness feature whose
+/// kinds tell different stories about the same faces.
+fn disagreements(machining: &[MachiningFeature], r: &Recognition) -> Vec<String> {
+    let mut out = Vec::new();
+    for m in machining {
+        for id in &m.related {
+            let Some(f) = r.feature(*id) else { continue };
+            if !f.kind.agrees_with(m.kind) {
+                out.push(format!(
+                    "{} ({}) and {} ({} {}) share faces: the stiffness view sees a {}, the machining view a {}",
+                    f.id, f.kind, m.id, m.kind, m.profile, f.kind, m.kind
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// A result and the seconds it took.

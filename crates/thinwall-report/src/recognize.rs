@@ -180,7 +180,13 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             })
             .collect(),
         connections,
-        notes: out.structure.notes.clone(),
+        notes: out
+            .structure
+            .notes
+            .iter()
+            .chain(&out.view_notes)
+            .cloned()
+            .collect(),
         machining_features,
         warnings: out.warnings.clone(),
     }
