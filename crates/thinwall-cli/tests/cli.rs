@@ -368,37 +368,20 @@ fn schema(name: &str) -> serde_json::Value {
 #[test]
 fn every_json_output_follows_its_schema_and_names_its_version() {
     let version = env!("CARGO_PKG_VERSION");
+    let of = |args: &[&str], file: &str| json_of(bin().args(args).arg(fixture(file)));
+    let inspect = ["inspect", "--format", "json"];
     let mut outputs = vec![
+        ("inspect", of(&inspect, "recognition/c_frame.step")),
+        ("inspect", of(&inspect, "bracket_assembly.step")),
         (
-            "inspect",
-            json_of(
-                bin()
-                    .args(["inspect", "--format", "json"])
-                    .arg(fixture("recognition/c_frame.step")),
-            ),
-        ),
-        (
-            "inspect",
-            json_of(
-                bin()
-                    .args(["inspect", "--format", "json"])
-                    .arg(fixture("bracket_assembly.step")),
-            ),
+            "recognition",
+            of(&["recognize"], "recognition/rib_grid_panel.step"),
         ),
         (
             "recognition",
-            json_of(
-                bin()
-                    .args(["recognize"])
-                    .arg(fixture("recognition/rib_grid_panel.step")),
-            ),
-        ),
-        (
-            "recognition",
-            json_of(
-                bin()
-                    .args(["recognize", "--exclude", "web"])
-                    .arg(fixture("recognition/c_frame.step")),
+            of(
+                &["recognize", "--exclude", "web"],
+                "recognition/c_frame.step",
             ),
         ),
     ];
