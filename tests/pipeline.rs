@@ -270,3 +270,72 @@ fn the_two_views_never_disagree_without_a_note() {
     }
     assert!(noted > 0, "no disagreement at all: the check is idle");
 }
+
+/// Sorted (kind, profile, through, depth, length, width) of machining
+/// features, and (kind, height, length, width) of stiffness details.
+fn sizes(out: &Outcome) -> (Vec<String>, Vec<String>) {
+    let mut m: Vec<String> = out
+        .machining
+        .iter()
+        .map(|m| {
+            format!(
+                "{} {} {} {:.4} {:.4} {:.4}",
+                m.kind, m.profile, m.through, m.depth, m.length, m.width
+            )
+        })
+        .collect();
+    let mut s: Vec<String> = out
+        .recognition
+        .features
+        .iter()
+        .filter(|f| !f.kind.is_wall())
+        .map(|f| {
+            format!(
+                "{} {:.4?} {:.4?} {:.4?}",
+                f.kind, f.height, f.length, f.width
+            )
+        })
+        .collect();
+    m.sort();
+    s.sort();
+    (m, s)
+}
+
+#[test]
+fn turned_copies_get_the_same_machining_features_and_details() {
+    // A fixture turned by OpenCascade, and one turned here (its STEP text).
+    let read = |rel: &str| {
+        thinwall_step::read_file(common::root().join(rel))
+            .unwrap()
+            .0
+    };
+    let run_default = |p: &thinwall_brep::Part| run(p, None, &Request::default()).unwrap();
+    let (a, b) = (
+        read("fixtures/bracket_with_pocket.step"),
+        read("fixtures/bracket_turned.step"),
+    );
+    assert_eq!(sizes(&run_default(&a)).0, sizes(&run_default(&b)).0);
+    let text =
+        std::fs::read_to_string(common::root().join("fixtures/recognition/engraved_plate.step"))
+            .unwrap();
+    let (r, t) = common::rigid_motion(7);
+    let (turned, n) = common::turned_step(&text, &r, &t);
+    assert!(n > 100);
+    let plate = thinwall_step::read_bytes(text.as_bytes(), "plate.step")
+        .unwrap()
+        .0;
+    let turned = thinwall_step::read_bytes(turned.as_bytes(), "turned.step")
+        .unwrap()
+        .0;
+    let up = r * thinwall_geom::Vector3::z();
+    let turned_req = Request {
+        setup: Setup::new([up.x, up.y, up.z], Machine::ThreeAxis).unwrap(),
+        ..Request::default()
+    };
+    let (x, y) = (
+        sizes(&run_default(&plate)),
+        sizes(&run(&turned, None, &turned_req).unwrap()),
+    );
+    assert!(x.1.iter().any(|d| d.starts_with("engraving")), "{:?}", x.1);
+    assert_eq!(x, y);
+}

@@ -129,11 +129,6 @@ impl<'a> PartAnalysis<'a> {
         self
     }
 
-    /// Whether this analysis may use worker threads.
-    pub fn parallel(&self) -> bool {
-        self.parallel
-    }
-
     pub fn part(&self) -> &'a Part {
         self.part
     }
@@ -199,6 +194,30 @@ impl<'a> PartAnalysis<'a> {
     /// Lowest and highest extent of faces' boundaries along `dir`, mm.
     pub fn extent(&self, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
         measure::extent(faces.iter().flat_map(|&f| self.boundary_points(f)), dir)
+    }
+
+    /// Faces' boundary samples seen along `dir`: the 2-D points in the plane
+    /// across it, with that plane's axes `u`, `v` (`u × v = dir`).
+    pub fn points_across(
+        &self,
+        faces: &[FaceId],
+        dir: &Vector3,
+    ) -> (Vector3, Vector3, Vec<geo::Point<f64>>) {
+        let u = thinwall_geom::frame::any_perpendicular(dir);
+        let v = dir.cross(&u);
+        let pts = faces
+            .iter()
+            .flat_map(|&f| self.boundary_points(f))
+            .map(|p| geo::Point::new(p.coords.dot(&u), p.coords.dot(&v)))
+            .collect();
+        (u, v, pts)
+    }
+
+    /// Long and short side of the minimum rectangle around faces seen along
+    /// `dir` (independent of how the part sits in the world), mm.
+    pub fn sizes_across(&self, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
+        let (_, _, pts) = self.points_across(faces, dir);
+        polygon::min_rect_sides(&geo::MultiPoint::from(pts)).unwrap_or((0.0, 0.0))
     }
 
     /// A planar face with its loops, or `None` for a curved face.

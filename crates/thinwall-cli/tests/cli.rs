@@ -243,20 +243,24 @@ fn recognize_text_options_and_errors() {
     assert!(thin < 8, "{thin} thin walls with a 1 N force");
 }
 
+/// `thinwall classify` of the stacked fixture's two volumes.
+fn classify_stacked() -> Command {
+    let case = fixture("classify/stacked");
+    let mut c = bin();
+    c.arg("classify")
+        .arg("--part")
+        .arg(case.join("part.step"))
+        .arg("--volume")
+        .arg(case.join("v0.step"))
+        .arg("--volume")
+        .arg(case.join("v1.step"));
+    c
+}
+
 #[test]
 fn classify_json_and_errors() {
     let case = fixture("classify/stacked");
-    let v = json_of(
-        bin()
-            .arg("classify")
-            .arg("--part")
-            .arg(case.join("part.step"))
-            .arg("--volume")
-            .arg(case.join("v0.step"))
-            .arg("--volume")
-            .arg(case.join("v1.step"))
-            .args(["--before", "0:1", "--up", "0,0,1"]),
-    );
+    let v = json_of(classify_stacked().args(["--before", "0:1", "--up", "0,0,1"]));
     assert_eq!(v["schema"], "thinwall/classification/1");
     let vols = v["volumes"].as_array().unwrap();
     assert_eq!(vols.len(), 2);
@@ -385,20 +389,9 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
             ),
         ),
     ];
-    let case = fixture("classify/stacked");
     outputs.push((
         "classification",
-        json_of(
-            bin()
-                .arg("classify")
-                .arg("--part")
-                .arg(case.join("part.step"))
-                .arg("--volume")
-                .arg(case.join("v0.step"))
-                .arg("--volume")
-                .arg(case.join("v1.step"))
-                .args(["--before", "0:1"]),
-        ),
+        json_of(classify_stacked().args(["--before", "0:1"])),
     ));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);

@@ -97,7 +97,7 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
         .filter(|&f| !is_stock(f) && is_blend(a, f))
         .collect();
     for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
-        out.push(blend_feature(a, &group));
+        out.push(blend_feature(a, &block, &group));
     }
     let blend_set: BTreeSet<FaceId> = blends.iter().copied().collect();
     // Depressions: concave-connected groups (hole halves across their seam).
@@ -158,7 +158,7 @@ fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
 
 /// A blend chain: its radius (smallest) as depth, its length and width as
 /// sizes.
-fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
+fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> MachiningFeature {
     let convex = a.part().face(group[0]).same_sense;
     let dir = a.props(group[0]).axis.map_or(Vector3::z(), |ax| ax.1);
     let radii_v = radii(a, group);
@@ -170,13 +170,11 @@ fn blend_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
             0.0
         }
     };
-    // Its length: the longest extent of the chain (along the axes and its
-    // own axis); its width: the developed arc, area over length, never more
-    // than the length.
-    let length = [Vector3::x(), Vector3::y(), Vector3::z(), dir]
-        .iter()
-        .map(along)
-        .fold(0.0, f64::max);
+    // Its length: the longest extent of the chain (along the stock's axes
+    // and its own axis); its width: the developed arc, area over length,
+    // never more than the length.
+    let [x, y, z] = stock.axes;
+    let length = [x, y, z, dir].iter().map(along).fold(0.0, f64::max);
     let area: f64 = group.iter().map(|&f| a.props(f).area).sum();
     let arc = if length > 0.0 { area / length } else { 0.0 };
     MachiningFeature {
@@ -424,19 +422,6 @@ fn hole_typing(
     (MachiningKind::Hole, !bottom, profile)
 }
 
-/// Profile length and width: the faces' boundary points projected on the
-/// plane across `dir`, their minimum rectangle.
-fn profile_sizes(a: &PartAnalysis, group: &[FaceId], dir: &Vector3) -> (f64, f64) {
-    let u = thinwall_geom::frame::any_perpendicular(dir);
-    let v = dir.cross(&u);
-    let pts: Vec<geo::Point<f64>> = group
-        .iter()
-        .flat_map(|&f| a.boundary_points(f))
-        .map(|p| geo::Point::new(p.coords.dot(&u), p.coords.dot(&v)))
-        .collect();
-    min_rect_sides(&geo::MultiPoint::from(pts)).unwrap_or((0.0, 0.0))
-}
-
 /// The largest tool that fits: a hole's diameter, or twice the inscribed
 /// radius of the floor.
 fn largest_tool(
@@ -490,9 +475,9 @@ fn depression_feature(
         // A chamfer is one inclined face: its own long and short sides.
         a.polygon(group[0])
             .and_then(|p| min_rect_sides(&p))
-            .unwrap_or_else(|| profile_sizes(a, group, &dir))
+            .unwrap_or_else(|| a.sizes_across(group, &dir))
     } else {
-        profile_sizes(a, group, &dir)
+        a.sizes_across(group, &dir)
     };
     MachiningFeature {
         id: MachiningId::default(),

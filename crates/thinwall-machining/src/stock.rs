@@ -170,14 +170,8 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
 /// The long side of the part's minimum rectangle seen along `d1`.
 fn across(a: &PartAnalysis, d1: &Vector3) -> Vector3 {
     use geo::MinimumRotatedRect;
-    let u = thinwall_geom::frame::any_perpendicular(d1);
-    let v = d1.cross(&u);
-    let pts: Vec<geo::Point<f64>> = a
-        .part()
-        .face_ids()
-        .flat_map(|f| a.boundary_points(f))
-        .map(|p| geo::Point::new(p.coords.dot(&u), p.coords.dot(&v)))
-        .collect();
+    let all: Vec<FaceId> = a.part().face_ids().collect();
+    let (u, v, pts) = a.points_across(&all, d1);
     let dir = geo::MultiPoint::from(pts)
         .minimum_rotated_rect()
         .and_then(|r| {

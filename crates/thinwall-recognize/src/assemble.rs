@@ -102,13 +102,7 @@ fn wall_feature(
 /// A drafted wall's thickness at its lowest and highest region vertex
 /// along its height direction, mm.
 fn foot_and_top(wall: &Wall, up: &Vector3) -> (f64, f64) {
-    let pts: Vec<Point3> = wall
-        .region
-        .0
-        .iter()
-        .flat_map(|p| p.exterior().coords())
-        .map(|c| wall.frame.to_world(&Vector3::new(c.x, c.y, 0.0)))
-        .collect();
+    let pts = crate::walls::region_outline(&wall.frame, &wall.region, 0.0);
     let key = |p: &&Point3| p.coords.dot(up);
     let at = |p: Option<&Point3>| p.map_or(wall.thickness, |p| wall.thickness_at(p));
     (

@@ -12,7 +12,7 @@
 
 use crate::config::Config;
 use std::collections::{BTreeMap, HashSet};
-use thinwall_analysis::{measure, PartAnalysis};
+use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
 use thinwall_geom::Vector3;
 
@@ -61,7 +61,7 @@ pub fn engravings(a: &PartAnalysis, taken: &HashSet<FaceId>, config: &Config) ->
         let Some((depth, dir)) = shallowest(a, &glyph) else {
             continue;
         };
-        let across = extent_across(a, &glyph, &dir).0;
+        let across = a.sizes_across(&glyph, &dir).0;
         if depth > max_depth || across < 2.0 * depth {
             continue;
         }
@@ -78,7 +78,7 @@ pub fn engravings(a: &PartAnalysis, taken: &HashSet<FaceId>, config: &Config) ->
             let dir = glyphs[0].2;
             let mut faces: Vec<FaceId> = glyphs.iter().flat_map(|g| g.0.iter().copied()).collect();
             faces.sort();
-            let (length, width) = extent_across(a, &faces, &dir);
+            let (length, width) = a.sizes_across(&faces, &dir);
             Engraving {
                 depth: glyphs.iter().map(|g| g.1).fold(0.0, f64::max),
                 direction: dir,
@@ -100,18 +100,6 @@ fn shallowest(a: &PartAnalysis, faces: &[FaceId]) -> Option<(f64, Vector3)> {
             (hi - lo, n)
         })
         .min_by(|x, y| x.0.total_cmp(&y.0))
-}
-
-/// Long and short side of the faces' extent across `dir`, mm.
-fn extent_across(a: &PartAnalysis, faces: &[FaceId], dir: &Vector3) -> (f64, f64) {
-    let u = thinwall_geom::frame::any_perpendicular(dir);
-    let v = dir.cross(&u);
-    let pts: Vec<_> = faces.iter().flat_map(|&f| a.boundary_points(f)).collect();
-    let (lu, lv) = (
-        measure::span(pts.iter().copied(), &u),
-        measure::span(pts.iter().copied(), &v),
-    );
-    (lu.max(lv), lu.min(lv))
 }
 
 /// The largest face outside the glyph that it meets: the face it is cut

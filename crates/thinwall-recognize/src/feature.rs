@@ -127,15 +127,7 @@ pub struct WallGeometry {
 impl WallGeometry {
     /// The outline of the region on the mid-plane, in model coordinates.
     pub fn outline(&self) -> Vec<Point3> {
-        self.region
-            .0
-            .iter()
-            .flat_map(|p| p.exterior().coords())
-            .map(|c| {
-                self.frame
-                    .to_world(&Vector3::new(c.x, c.y, -0.5 * self.thickness))
-            })
-            .collect()
+        crate::walls::region_outline(&self.frame, &self.region, -0.5 * self.thickness)
     }
 }
 

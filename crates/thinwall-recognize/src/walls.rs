@@ -42,19 +42,21 @@ pub struct Wall {
     pub region: MultiPolygon<f64>,
 }
 
+/// The outer outline of a region drawn in `frame`'s xy plane, at height
+/// `z` along `frame.z`, in model coordinates.
+pub fn region_outline(frame: &Frame, region: &MultiPolygon<f64>, z: f64) -> Vec<Point3> {
+    region
+        .0
+        .iter()
+        .flat_map(|p| p.exterior().coords())
+        .map(|c| frame.to_world(&Vector3::new(c.x, c.y, z)))
+        .collect()
+}
+
 impl Wall {
     /// 3D points of the region's outline on the mid-plane.
     pub fn outline(&self) -> Vec<Point3> {
-        let mut pts = Vec::new();
-        for poly in &self.region.0 {
-            for c in poly.exterior().coords() {
-                pts.push(
-                    self.frame
-                        .to_world(&Vector3::new(c.x, c.y, -0.5 * self.thickness)),
-                );
-            }
-        }
-        pts
+        region_outline(&self.frame, &self.region, -0.5 * self.thickness)
     }
 
     /// A point on the mid-plane and its unit normal (side 0's).
@@ -216,12 +218,9 @@ pub fn find_walls(a: &PartAnalysis, config: &Config) -> Vec<Wall> {
 /// and the mean for its geometry. False when the sides meet within it (or
 /// one is more than three times the other: not a drafted wall).
 fn drafted_thickness(wall: &mut Wall) -> bool {
-    let at: Vec<f64> = wall
-        .region
-        .0
+    let at: Vec<f64> = region_outline(&wall.frame, &wall.region, 0.0)
         .iter()
-        .flat_map(|p| p.exterior().coords())
-        .map(|c| wall.thickness_at(&wall.frame.to_world(&Vector3::new(c.x, c.y, 0.0))))
+        .map(|p| wall.thickness_at(p))
         .collect();
     let lo = at.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = at.iter().copied().fold(f64::NEG_INFINITY, f64::max);
