@@ -26,7 +26,7 @@ pub mod vocabulary;
 
 pub use polygon::{FaceLoops, PlanarFace};
 pub use setup::{Machine, Setup, SetupError};
-pub use vocabulary::{FeatureId, MachiningId, MachiningKind, Profile, StiffnessKind, VolumeType};
+pub use vocabulary::{Catalog, FeatureId, MachiningId, MachiningKind, Profile, StiffnessKind, VolumeType};
 
 use geo::MultiPolygon;
 use std::borrow::Cow;
@@ -294,6 +294,31 @@ impl<'a> PartAnalysis<'a> {
         }
     }
 
+    /// The angle a cylinder face sweeps around its axis, degrees: 360 less
+    /// the widest gap between its boundary samples' angles (a full
+    /// cylinder comes out a little under 360, by its sampling).
+    pub fn cylinder_sweep_deg(&self, f: FaceId) -> Option<f64> {
+        let c = self.cylinder(f)?;
+        let u = c.axis.cross(&any_perpendicular(&c.axis)).normalize();
+        let v = c.axis.cross(&u);
+        let mut angles: Vec<f64> = self
+            .boundary_points(f)
+            .iter()
+            .filter_map(|p| {
+                let d = p - c.origin;
+                let r = d - c.axis * d.dot(&c.axis);
+                (r.norm() > 0.5 * c.radius).then(|| r.dot(&v).atan2(r.dot(&u)).to_degrees())
+            })
+            .collect();
+        angles.sort_by(f64::total_cmp);
+        let (first, last) = (*angles.first()?, *angles.last()?);
+        let widest = angles
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(360.0 - (last - first), f64::max);
+        Some(360.0 - widest)
+    }
+
     /// A concave cylinder (outward normal towards its axis): a hole's wall,
     /// an inside corner radius.
     pub fn concave_cylinder(&self, f: FaceId) -> Option<Cylinder> {
@@ -409,5 +434,14 @@ impl<'a> PartAnalysis<'a> {
         let mut v: Vec<u64> = faces.iter().map(|&f| self.part.face(f).step_id).collect();
         v.sort();
         v
+    }
+}
+
+/// A unit vector not parallel to `v`.
+fn any_perpendicular(v: &Vector3) -> Vector3 {
+    if v.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::y()
     }
 }

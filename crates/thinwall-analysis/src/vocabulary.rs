@@ -119,6 +119,47 @@ named_enum! {
         Passage => "passage",
         Chamfer => "chamfer",
         Fillet => "fillet",
+        /// A ring-shaped groove around a standing core (an O-ring groove).
+        Groove => "groove",
+    }
+}
+
+named_enum! {
+    /// The 24 machining feature classes of the MFCAD++ benchmark (Colligan
+    /// et al., 2022), by their names in the dataset (its ids in the same
+    /// order, 0–23; 24 is stock). `docs/MACHINING.md` gives the mapping.
+    pub enum Catalog {
+        Chamfer => "chamfer",
+        ThroughHole => "through_hole",
+        TriangularPassage => "triangular_passage",
+        RectangularPassage => "rectangular_passage",
+        SixSidesPassage => "6sides_passage",
+        TriangularThroughSlot => "triangular_through_slot",
+        RectangularThroughSlot => "rectangular_through_slot",
+        CircularThroughSlot => "circular_through_slot",
+        RectangularThroughStep => "rectangular_through_step",
+        TwoSidesThroughStep => "2sides_through_step",
+        SlantedThroughStep => "slanted_through_step",
+        ORing => "Oring",
+        BlindHole => "blind_hole",
+        TriangularPocket => "triangular_pocket",
+        RectangularPocket => "rectangular_pocket",
+        SixSidesPocket => "6sides_pocket",
+        CircularEndPocket => "circular_end_pocket",
+        RectangularBlindSlot => "rectangular_blind_slot",
+        VCircularEndBlindSlot => "v_circular_end_blind_slot",
+        HCircularEndBlindSlot => "h_circular_end_blind_slot",
+        TriangularBlindStep => "triangular_blind_step",
+        CircularBlindStep => "circular_blind_step",
+        RectangularBlindStep => "rectangular_blind_step",
+        Round => "round",
+    }
+}
+
+impl Catalog {
+    /// The class id in MFCAD++ (0–23).
+    pub fn id(self) -> u32 {
+        Self::ALL.iter().position(|&c| c == self).unwrap_or(0) as u32
     }
 }
 
@@ -135,6 +176,9 @@ named_enum! {
         Counterbored => "counterbored",
         Countersunk => "countersunk",
         MultiSegment => "multi_segment",
+        /// Straight sides ending in half or quarter circles (an obround
+        /// pocket, a slot with a round end).
+        CircularEnd => "circular_end",
         /// A concave blend.
         Fillet => "fillet",
         /// A convex blend.

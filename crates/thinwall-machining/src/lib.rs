@@ -26,6 +26,9 @@
 //! are parallel to the block's, else slanted; a blind step of two faces
 //! triangular.
 
+mod catalog;
+mod chamfer;
+mod shape;
 mod stock;
 
 pub use stock::Stock;
@@ -34,7 +37,7 @@ use geo::{Area, MultiPolygon};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
-use thinwall_analysis::{Cylinder, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
+use thinwall_analysis::{Catalog, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
 use thinwall_geom::{Surface, Vector3};
@@ -51,6 +54,9 @@ pub struct MachiningFeature {
     /// Opens through the part (no bottom).
     pub through: bool,
     pub profile: Profile,
+    /// The MFCAD++ catalogue name (one of its 24 kinds), when it is one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub catalog: Option<Catalog>,
     /// Unit tool (access) direction, into the part.
     pub direction: [f64; 3],
     /// `step_id`s of all faces it creates, floors included.
@@ -99,11 +105,20 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
     for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
         out.push(blend_feature(a, &block, &group));
     }
-    let blend_set: BTreeSet<FaceId> = blends.iter().copied().collect();
+    let mut taken: BTreeSet<FaceId> = blends.iter().copied().collect();
+    // Chamfers: chains of bevels.
+    let bevels: Vec<FaceId> = part
+        .face_ids()
+        .filter(|&f| !is_stock(f) && !taken.contains(&f) && chamfer::is_chamfer(a, f))
+        .collect();
+    for group in a.components(&bevels, |_, _, adj| adj.convexity == Convexity::Smooth) {
+        out.push(chamfer::chamfer_feature(a, &block, &group));
+    }
+    taken.extend(bevels);
     // Depressions: concave-connected groups (hole halves across their seam).
     let rest: Vec<FaceId> = part
         .face_ids()
-        .filter(|f| !is_stock(*f) && !blend_set.contains(f))
+        .filter(|f| !is_stock(*f) && !taken.contains(f))
         .collect();
     let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
         adj.convexity == Convexity::Concave
@@ -135,6 +150,12 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
 /// A curved face tangent to two or more faces, but not a hole's cylinder
 /// whose tangent neighbours are all hole cylinders (its other half).
 fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
+    if a
+        .cylinder_sweep_deg(f)
+        .is_some_and(|s| s >= shape::HALF_SWEEP_DEG && a.concave_cylinder(f).is_some())
+    {
+        return false;
+    }
     if a.concave_cylinder(f).is_some()
         && a.graph()
             .neighbours(f)
@@ -187,6 +208,7 @@ fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> Machining
         } else {
             Profile::Fillet
         },
+        catalog: Some(Catalog::Round),
         direction: [dir.x, dir.y, dir.z],
         faces: a.step_ids(group),
         bottom_faces: vec![],
@@ -199,227 +221,6 @@ fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> Machining
         largest_tool_diameter: None,
         related: vec![],
     }
-}
-
-/// Walls of `group` adjacent to wall `w` (sharing an edge).
-fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
-    a.graph()
-        .neighbours(w)
-        .filter(|(x, _)| *x != w && walls.contains(x))
-        .map(|(x, _)| x)
-        .collect::<BTreeSet<FaceId>>()
-        .len()
-}
-
-/// What typing a depression group needs: the stock planes it opens to,
-/// its distinct planes, its concave cylinders.
-struct GroupShape<'g> {
-    stock: &'g Stock,
-    group: &'g [FaceId],
-    touched: &'g BTreeSet<usize>,
-    /// Axes with both block planes touched.
-    opposite: Vec<usize>,
-    /// Distinct planes among the planar faces: normal and offset.
-    planes: Vec<(Vector3, f64)>,
-    cylinders: Vec<Cylinder>,
-    /// The stock plane it is entered from.
-    entry: Option<usize>,
-}
-
-impl<'g> GroupShape<'g> {
-    fn new(
-        a: &PartAnalysis,
-        stock: &'g Stock,
-        group: &'g [FaceId],
-        touched: &'g BTreeSet<usize>,
-    ) -> Self {
-        let tol = a.tol().feature;
-        let opposite: Vec<usize> = (0..3)
-            .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
-            .collect();
-        let mut planes: Vec<(Vector3, f64)> = Vec::new();
-        for &f in group {
-            if let Some(n) = a.props(f).normal {
-                let off = n.dot(&a.props(f).centroid.coords);
-                if !planes
-                    .iter()
-                    .any(|(m, o)| same_direction(m, &n) && (o - off).abs() < tol * 10.0)
-                {
-                    planes.push((n, off));
-                }
-            }
-        }
-        let cylinders = group
-            .iter()
-            .filter_map(|&f| a.concave_cylinder(f))
-            .collect();
-        // The entry: a touched plane not in an opposite pair, facing the
-        // same way as a floor if there is one.
-        let candidates: Vec<usize> = touched
-            .iter()
-            .copied()
-            .filter(|sp| !opposite.contains(&(sp / 2)))
-            .collect();
-        let entry = candidates
-            .iter()
-            .copied()
-            .find(|&sp| {
-                planes
-                    .iter()
-                    .any(|(n, _)| same_direction(n, &stock.normal(sp)))
-            })
-            .or_else(|| candidates.first().copied())
-            .or_else(|| touched.iter().next().copied());
-        Self {
-            stock,
-            group,
-            touched,
-            opposite,
-            planes,
-            cylinders,
-            entry,
-        }
-    }
-
-    /// A floor facing the only stock plane it opens to.
-    fn floor_up(&self) -> Option<Vector3> {
-        if self.touched.len() == 1 {
-            self.entry.map(|sp| self.stock.normal(sp))
-        } else {
-            None
-        }
-    }
-
-    /// Walls closing a ring around the floor: each wall meets two others.
-    fn ring(&self, a: &PartAnalysis) -> bool {
-        let floor_up = self.floor_up();
-        let walls: Vec<FaceId> = self
-            .group
-            .iter()
-            .copied()
-            .filter(|&f| {
-                !floor_up.is_some_and(|u| a.props(f).normal.is_some_and(|n| same_direction(&n, &u)))
-            })
-            .collect();
-        !walls.is_empty() && walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
-    }
-
-    /// Kind, through and profile.
-    fn typing(&self, a: &PartAnalysis) -> (MachiningKind, bool, Profile) {
-        use MachiningKind::*;
-        if !self.cylinders.is_empty() {
-            return hole_typing(a, self.group, &self.cylinders);
-        }
-        let (t, d) = (self.touched.len(), self.planes.len());
-        let opposite = !self.opposite.is_empty();
-        let has_floor = self
-            .floor_up()
-            .is_some_and(|u| self.planes.iter().any(|(n, _)| same_direction(n, &u)));
-        let tri_or_rect = |two: bool| {
-            if two {
-                Profile::Triangular
-            } else {
-                Profile::Rectangular
-            }
-        };
-        if d == 1 && t >= 3 {
-            (Chamfer, false, Profile::Slanted)
-        } else if has_floor && self.ring(a) {
-            (Pocket, false, Profile::of_sides(d - 1))
-        } else if has_floor {
-            // A floor whose walls do not close: it opens sideways into another feature.
-            (Step, false, tri_or_rect(d <= 2))
-        } else if t == 1 || (t == 2 && self.opposite.len() == 1) {
-            (Passage, true, Profile::of_sides(d))
-        } else if opposite && t == 3 {
-            (Slot, true, tri_or_rect(d == 2))
-        } else if opposite && t == 4 {
-            let aligned = self.planes.iter().all(|(n, _)| self.stock.aligned(n));
-            let profile = if d == 3 {
-                Profile::TwoSided
-            } else if aligned {
-                Profile::Rectangular
-            } else {
-                Profile::Slanted
-            };
-            (Step, true, profile)
-        } else if !opposite && t == 3 {
-            (Step, false, tri_or_rect(d == 2))
-        } else if !opposite && t == 2 && d == 4 {
-            (Slot, false, Profile::Rectangular)
-        } else if !opposite && t == 2 {
-            (Step, false, tri_or_rect(d <= 2))
-        } else {
-            // Opens to no block plane, or in a way none of the above describes.
-            (Pocket, false, Profile::Free)
-        }
-    }
-
-    /// Into the part from the entry plane (holes: along the axis).
-    fn direction(&self) -> Vector3 {
-        if let Some(c) = self.cylinders.first() {
-            match self.entry {
-                Some(sp) if self.stock.normal(sp).dot(&c.axis) > 0.0 => -c.axis,
-                _ => c.axis,
-            }
-        } else {
-            self.entry
-                .map(|sp| -self.stock.normal(sp))
-                .unwrap_or(-Vector3::z())
-        }
-    }
-}
-
-/// Holes: concave cylinders. Blind when a face closes the far end: a plane
-/// across the axis, or a drill point (cone, sphere) there.
-fn hole_typing(
-    a: &PartAnalysis,
-    group: &[FaceId],
-    cylinders: &[Cylinder],
-) -> (MachiningKind, bool, Profile) {
-    let part = a.part();
-    let tol = a.tol().feature;
-    let axis = cylinders[0].axis;
-    let (lo, hi) = a.extent(group, &axis);
-    let at_end = |f: FaceId| {
-        let (x, y) = a.extent(&[f], &axis);
-        (x - lo).abs() < tol * 100.0 || (y - hi).abs() < tol * 100.0
-    };
-    let closes = |f: FaceId| {
-        let face = part.face(f);
-        match face.surface {
-            Surface::Plane { .. } => {
-                a.props(f)
-                    .normal
-                    .is_some_and(|n| n.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
-                    && at_end(f)
-                    && face.loops.len() == 1
-            }
-            // A drill point: at the far end, coming to a tip (a vertex
-            // loop) or a single boundary.
-            Surface::Cone { .. } | Surface::Sphere { .. } => {
-                at_end(f)
-                    && (face.loops.len() == 1
-                        || face.loops.iter().any(|&l| part.loop_(l).vertex.is_some()))
-            }
-            _ => false,
-        }
-    };
-    let bottom = group.iter().any(|&f| closes(f));
-    let distinct_r = radii(a, group).len();
-    let cone = group
-        .iter()
-        .any(|&f| matches!(part.face(f).surface, Surface::Cone { .. }));
-    let profile = if cone && distinct_r >= 1 {
-        Profile::Countersunk
-    } else if distinct_r == 2 {
-        Profile::Counterbored
-    } else if distinct_r > 2 {
-        Profile::MultiSegment
-    } else {
-        Profile::Circular
-    };
-    (MachiningKind::Hole, !bottom, profile)
 }
 
 /// The largest tool that fits: a hole's diameter, or twice the inscribed
@@ -452,8 +253,13 @@ fn depression_feature(
     group: &[FaceId],
     touched: &BTreeSet<usize>,
 ) -> MachiningFeature {
-    let shape = GroupShape::new(a, stock, group, touched);
-    let (kind, through, profile) = shape.typing(a);
+    let shape = shape::GroupShape::new(a, stock, group, touched);
+    let shape::Typed {
+        kind,
+        through,
+        profile,
+        catalog,
+    } = shape.typing(a);
     let dir = shape.direction();
     let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
         a.props(f)
@@ -485,6 +291,7 @@ fn depression_feature(
         body: a.part().face(group[0]).body.0,
         through,
         profile,
+        catalog,
         direction: [dir.x, dir.y, dir.z],
         faces: a.step_ids(group),
         bottom_faces: a.step_ids(&bottom),

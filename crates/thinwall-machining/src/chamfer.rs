@@ -1,0 +1,137 @@
+//! Chamfers: bevel faces replacing an edge between two faces, found before
+//! depressions are grouped (a bevel on an inside edge would otherwise join
+//! the features on either side of it into one).
+//!
+//! A planar face is a chamfer when its normal bisects the normals of two
+//! of its (non-parallel) planar neighbours, a symmetric bevel, and it is
+//! narrower than both; a cone is a chamfer when it joins a plane square to
+//! its axis and a coaxial cylinder and is shorter along the axis than the
+//! cylinder's radius (a longer cone is a countersink, part of its hole).
+
+use crate::Stock;
+use thinwall_analysis::{Catalog, MachiningId, MachiningKind, PartAnalysis, Profile};
+use thinwall_brep::FaceId;
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
+use thinwall_geom::{Surface, Vector3};
+use thinwall_graph::Convexity;
+
+use crate::MachiningFeature;
+
+/// A bevel's normal bisects its neighbours' within this angle, degrees.
+const BISECT_DEG: f64 = 0.5;
+/// A bevel is narrower than this share of the wider face it joins.
+const NARROWER: f64 = 0.5;
+/// A bevel is at least this many times longer than wide (a strip).
+const ELONGATED: f64 = 3.0;
+
+/// Whether face `f` is a chamfer (module docs).
+pub(crate) fn is_chamfer(a: &PartAnalysis, f: FaceId) -> bool {
+    match a.part().face(f).surface {
+        Surface::Plane { .. } => is_planar_bevel(a, f),
+        Surface::Cone { .. } => is_conical_bevel(a, f),
+        _ => false,
+    }
+}
+
+fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
+    let Some(n) = a.props(f).normal else {
+        return false;
+    };
+    let (width, length) = a.strip_width(f);
+    if length < ELONGATED * width {
+        return false;
+    }
+    let mut planes: Vec<(FaceId, Vector3, Convexity)> = Vec::new();
+    for (g, adj) in a.graph().neighbours(f) {
+        if let Some(m) = a.props(g).normal {
+            if g != f && !planes.iter().any(|(h, ..)| *h == g) {
+                planes.push((g, m, adj.convexity));
+            }
+        }
+    }
+    let cos = BISECT_DEG.to_radians().cos();
+    planes.iter().enumerate().any(|(i, (g, ng, cg))| {
+        planes[i + 1..].iter().any(|(h, nh, ch)| {
+            let sum = ng + nh;
+            cg == ch
+                && ng.dot(nh) < 1.0 - NEAR_PARALLEL_EPS
+                && sum.norm() > NEAR_PARALLEL_EPS
+                && n.dot(&sum.normalize()) > cos
+                && width < NARROWER * a.strip_width(*g).0.max(a.strip_width(*h).0)
+                && !closes_a_floor(a, f, *g, *h)
+        })
+    })
+}
+
+/// Whether bevel candidate `f` between `g` and `h` bounds, with them only,
+/// a face it meets: a triangular step's floor (a bevel's end faces go on
+/// beyond it).
+fn closes_a_floor(a: &PartAnalysis, f: FaceId, g: FaceId, h: FaceId) -> bool {
+    a.graph().neighbours(f).any(|(e, adj)| {
+        adj.convexity == Convexity::Concave
+            && e != g
+            && e != h
+            && a.graph().neighbours(e).all(|(x, _)| x == f || x == g || x == h)
+    })
+}
+
+fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
+    let Surface::Cone { frame, .. } = a.part().face(f).surface else {
+        return false;
+    };
+    let axis = frame.z;
+    let square_plane = a.graph().neighbours(f).any(|(g, _)| {
+        a.props(g)
+            .normal
+            .is_some_and(|m| m.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
+    });
+    let (lo, hi) = a.extent(&[f], &axis);
+    let cylinder = a.graph().neighbours(f).find_map(|(g, _)| {
+        a.cylinder(g).filter(|c| {
+            c.axis.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS
+                && (c.origin - frame.origin).cross(&axis).norm() < a.tol().feature * 100.0
+        })
+    });
+    square_plane && cylinder.is_some_and(|c| hi - lo < c.radius)
+}
+
+/// A chamfer feature: a chain of bevel faces, its long and short sides.
+pub(crate) fn chamfer_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> MachiningFeature {
+    let normal: Vector3 = group
+        .iter()
+        .filter_map(|&f| a.props(f).normal)
+        .fold(Vector3::zeros(), |s, n| s + n);
+    let dir = (-normal).try_normalize(1e-12).unwrap_or(-stock.axes[2]);
+    let (length, width) = if group.len() == 1 {
+        a.polygon(group[0])
+            .and_then(|p| thinwall_analysis::polygon::min_rect_sides(&p))
+            .unwrap_or_else(|| a.strip_width(group[0]))
+    } else {
+        // A chain: its developed length along the bevel, its width across.
+        let (w, l) = group
+            .iter()
+            .map(|&f| a.strip_width(f))
+            .fold((0.0, 0.0), |(w, l), (fw, fl)| (f64::max(w, fw), l + fl));
+        (l, w)
+    };
+    let (lo, hi) = a.extent(group, &dir);
+    MachiningFeature {
+        id: MachiningId::default(),
+        kind: MachiningKind::Chamfer,
+        body: a.part().face(group[0]).body.0,
+        through: false,
+        profile: Profile::Slanted,
+        catalog: Some(Catalog::Chamfer),
+        direction: [dir.x, dir.y, dir.z],
+        faces: a.step_ids(group),
+        bottom_faces: vec![],
+        side_faces: a.step_ids(group),
+        open_to: vec![],
+        depth: if hi.is_finite() { hi - lo } else { 0.0 },
+        length: length.max(width),
+        width: width.min(length),
+        radii: vec![],
+        largest_tool_diameter: None,
+        related: vec![],
+    }
+}

@@ -1,0 +1,433 @@
+//! The shape of a depression group and its typing: which stock planes it
+//! opens to, its planes and cylinders, and from those its kind, whether
+//! it goes through, its profile and its catalogue name.
+
+use crate::catalog;
+use crate::{radii, same_direction, Stock};
+use std::collections::BTreeSet;
+use thinwall_analysis::{Catalog, Cylinder, MachiningKind, PartAnalysis, Profile};
+use thinwall_brep::FaceId;
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
+use thinwall_geom::{Surface, Vector3};
+
+/// A concave cylinder sweeping this much or more is the round end of a
+/// slot or pocket (half a circle), not a blend, degrees.
+pub(crate) const HALF_SWEEP_DEG: f64 = 150.0;
+/// Coaxial concave cylinders sweeping this much together are a hole (a
+/// full circle less its boundary sampling), degrees.
+const FULL_SWEEP_DEG: f64 = 300.0;
+
+/// A floor outline filling less of its minimum rectangle than this is a
+/// triangle (a right triangle fills ½).
+const TRIANGLE_FILL: f64 = 0.6;
+/// A floor outline filling this much of its minimum rectangle or more is a
+/// rectangle (a slanted step's quadrilateral fills 0.7–0.85).
+const RECTANGLE_FILL: f64 = 0.95;
+
+/// The profile a ring of walls (or what is left of one where another
+/// feature cut it) comes from, by the angles between their normals: six
+/// walls, or walls at 60°, a hexagon; walls square or parallel only, a
+/// rectangle; three walls with no two parallel, a triangle.
+fn ring_profile(walls: &[Vector3]) -> Profile {
+    let cos = |i: usize, j: usize| walls[i].dot(&walls[j]);
+    let pairs = || (0..walls.len()).flat_map(|i| (i + 1..walls.len()).map(move |j| (i, j)));
+    let square_or_parallel = pairs().all(|(i, j)| {
+        let c = cos(i, j).abs();
+        c < NEAR_PARALLEL_EPS || c > 1.0 - NEAR_PARALLEL_EPS
+    });
+    let sixty = pairs().any(|(i, j)| (cos(i, j).abs() - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt());
+    let parallel = pairs().any(|(i, j)| cos(i, j) < -1.0 + NEAR_PARALLEL_EPS);
+    match walls.len() {
+        n if n >= 5 => Profile::Hexagonal,
+        n if n >= 3 && square_or_parallel => Profile::Rectangular,
+        3 if !parallel => Profile::Triangular,
+        n if n >= 3 && sixty && parallel => Profile::Hexagonal,
+        _ => Profile::Free,
+    }
+}
+
+/// The area of the faces' convex hull over that of its minimum rectangle.
+fn fill_ratio(a: &PartAnalysis, faces: &[FaceId]) -> f64 {
+    use geo::{Area, ConvexHull, MinimumRotatedRect};
+    let polys: geo::MultiPolygon<f64> = faces
+        .iter()
+        .filter_map(|&f| a.polygon(f))
+        .flat_map(|p| p.0)
+        .collect();
+    let hull = polys.convex_hull();
+    match hull.minimum_rotated_rect() {
+        Some(r) if r.unsigned_area() > 0.0 => hull.unsigned_area() / r.unsigned_area(),
+        _ => 1.0,
+    }
+}
+
+/// The typing of a group.
+pub(crate) struct Typed {
+    pub kind: MachiningKind,
+    pub through: bool,
+    pub profile: Profile,
+    pub catalog: Option<Catalog>,
+}
+
+/// Walls of `group` adjacent to wall `w` (sharing an edge).
+fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
+    a.graph()
+        .neighbours(w)
+        .filter(|(x, _)| *x != w && walls.contains(x))
+        .map(|(x, _)| x)
+        .collect::<BTreeSet<FaceId>>()
+        .len()
+}
+
+/// What typing a depression group needs: the stock planes it opens to,
+/// its distinct planes, its concave cylinders.
+pub(crate) struct GroupShape<'g> {
+    stock: &'g Stock,
+    group: &'g [FaceId],
+    touched: &'g BTreeSet<usize>,
+    /// Axes with both block planes touched.
+    opposite: Vec<usize>,
+    /// Distinct planes among the planar faces: normal and offset.
+    planes: Vec<(Vector3, f64)>,
+    pub(crate) cylinders: Vec<Cylinder>,
+    /// The stock plane it is entered from.
+    entry: Option<usize>,
+}
+
+impl<'g> GroupShape<'g> {
+    pub(crate) fn new(
+        a: &PartAnalysis,
+        stock: &'g Stock,
+        group: &'g [FaceId],
+        touched: &'g BTreeSet<usize>,
+    ) -> Self {
+        let tol = a.tol().feature;
+        let opposite: Vec<usize> = (0..3)
+            .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
+            .collect();
+        let mut planes: Vec<(Vector3, f64)> = Vec::new();
+        for &f in group {
+            if let Some(n) = a.props(f).normal {
+                let off = n.dot(&a.props(f).centroid.coords);
+                if !planes
+                    .iter()
+                    .any(|(m, o)| same_direction(m, &n) && (o - off).abs() < tol * 10.0)
+                {
+                    planes.push((n, off));
+                }
+            }
+        }
+        let cylinders = group
+            .iter()
+            .filter_map(|&f| a.concave_cylinder(f))
+            .collect();
+        // The entry: a touched plane not in an opposite pair, facing the
+        // same way as a floor if there is one.
+        let candidates: Vec<usize> = touched
+            .iter()
+            .copied()
+            .filter(|sp| !opposite.contains(&(sp / 2)))
+            .collect();
+        let entry = candidates
+            .iter()
+            .copied()
+            .find(|&sp| {
+                planes
+                    .iter()
+                    .any(|(n, _)| same_direction(n, &stock.normal(sp)))
+            })
+            .or_else(|| candidates.first().copied())
+            .or_else(|| touched.iter().next().copied());
+        Self {
+            stock,
+            group,
+            touched,
+            opposite,
+            planes,
+            cylinders,
+            entry,
+        }
+    }
+
+    /// A floor facing the only stock plane it opens to.
+    fn floor_up(&self) -> Option<Vector3> {
+        if self.touched.len() == 1 {
+            self.entry.map(|sp| self.stock.normal(sp))
+        } else {
+            None
+        }
+    }
+
+    /// Walls closing a ring around the floor: each wall meets two others.
+    fn ring(&self, a: &PartAnalysis) -> bool {
+        let floor_up = self.floor_up();
+        let walls: Vec<FaceId> = self
+            .group
+            .iter()
+            .copied()
+            .filter(|&f| {
+                !floor_up.is_some_and(|u| a.props(f).normal.is_some_and(|n| same_direction(&n, &u)))
+            })
+            .collect();
+        !walls.is_empty() && walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
+    }
+
+    /// Kind, through, profile and catalogue name.
+    pub(crate) fn typing(&self, a: &PartAnalysis) -> Typed {
+        if !self.cylinders.is_empty() {
+            return self.curved_typing(a);
+        }
+        let (kind, through, profile) = self.planar_typing(a);
+        Typed {
+            kind,
+            through,
+            profile,
+            catalog: catalog::planar(kind, through, profile),
+        }
+    }
+
+    /// Groups with concave cylinders: holes, O-rings, circular slots,
+    /// steps and pocket ends.
+    fn curved_typing(&self, a: &PartAnalysis) -> Typed {
+        use MachiningKind::*;
+        let first = self.cylinders[0];
+        let tol = a.tol().feature * 100.0;
+        let normal_along = |f: FaceId, across: bool| {
+            a.props(f).normal.is_some_and(|n| {
+                let c = n.dot(&first.axis).abs();
+                if across {
+                    c > 1.0 - NEAR_PARALLEL_EPS
+                } else {
+                    c < NEAR_PARALLEL_EPS
+                }
+            })
+        };
+        let floor = self.group.iter().any(|&f| normal_along(f, true));
+        let walls: Vec<FaceId> = self
+            .group
+            .iter()
+            .copied()
+            .filter(|&f| normal_along(f, false))
+            .collect();
+        let core = self
+            .group
+            .iter()
+            .filter_map(|&f| a.cylinder(f))
+            .any(|c| c.convex && c.coaxial(&first, tol));
+        let sweeps: Vec<f64> = self
+            .group
+            .iter()
+            .filter(|&&f| a.concave_cylinder(f).is_some())
+            .filter_map(|&f| a.cylinder_sweep_deg(f))
+            .collect();
+        let round_sweep: f64 = self
+            .group
+            .iter()
+            .filter(|&&f| a.concave_cylinder(f).is_some_and(|c| c.coaxial(&first, tol)))
+            .filter_map(|&f| a.cylinder_sweep_deg(f))
+            .sum();
+        let half = sweeps.iter().any(|&s| s >= HALF_SWEEP_DEG);
+        let typed = |kind, through, profile, catalog| Typed {
+            kind,
+            through,
+            profile,
+            catalog,
+        };
+        use Catalog as C;
+        if core && floor {
+            typed(Groove, false, Profile::Circular, Some(C::ORing))
+        } else if walls.is_empty() && round_sweep >= FULL_SWEEP_DEG {
+            let (kind, through, profile) = hole_typing(a, self.group, &self.cylinders);
+            let name = match (through, profile) {
+                (true, Profile::Circular) => Some(C::ThroughHole),
+                (false, Profile::Circular) => Some(C::BlindHole),
+                _ => None,
+            };
+            typed(kind, through, profile, name)
+        } else if walls.is_empty() && !floor {
+            let name = half.then_some(C::CircularThroughSlot);
+            typed(Slot, true, Profile::Circular, name)
+        } else if walls.is_empty() {
+            let name = (!half).then_some(C::CircularBlindStep);
+            typed(Step, false, Profile::Circular, name)
+        } else if !floor {
+            typed(Slot, true, Profile::CircularEnd, None)
+        } else if self.closed(a, &walls) {
+            typed(Pocket, false, Profile::CircularEnd, Some(C::CircularEndPocket))
+        } else if half {
+            typed(Slot, false, Profile::CircularEnd, Some(C::VCircularEndBlindSlot))
+        } else {
+            typed(Slot, false, Profile::CircularEnd, Some(C::HCircularEndBlindSlot))
+        }
+    }
+
+    /// Walls (planar and cylindrical, across the floor) closing a ring:
+    /// each meets two others.
+    fn closed(&self, a: &PartAnalysis, planar_walls: &[FaceId]) -> bool {
+        let walls: Vec<FaceId> = self
+            .group
+            .iter()
+            .copied()
+            .filter(|f| planar_walls.contains(f) || a.concave_cylinder(*f).is_some())
+            .collect();
+        walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
+    }
+
+    /// Groups of planar faces only: typed by their floor (a face every
+    /// other face stands square on) and their walls, not by the stock
+    /// planes they reach (a feature cut into another one's face reaches
+    /// none).
+    fn planar_typing(&self, a: &PartAnalysis) -> (MachiningKind, bool, Profile) {
+        use MachiningKind::*;
+        use Profile as P;
+        if self.planes.len() == 1 && self.touched.len() >= 3 {
+            return (Chamfer, false, P::Slanted);
+        }
+        let floor = self.floor(a);
+        let walls: Vec<Vector3> = self
+            .planes
+            .iter()
+            .map(|p| p.0)
+            .filter(|n| !floor.is_some_and(|(m, _)| same_direction(n, &m)))
+            .collect();
+        let w = walls.len();
+        let pair = |f: &dyn Fn(f64) -> bool| {
+            walls
+                .iter()
+                .enumerate()
+                .any(|(i, n)| walls[i + 1..].iter().any(|m| f(n.dot(m))))
+        };
+        let parallel = pair(&|c| c < -1.0 + NEAR_PARALLEL_EPS);
+        let square = pair(&|c| c.abs() < NEAR_PARALLEL_EPS);
+        let wall_faces: Vec<FaceId> = self
+            .group
+            .iter()
+            .copied()
+            .filter(|&f| {
+                !floor.is_some_and(|(m, _)| a.props(f).normal.is_some_and(|n| same_direction(&n, &m)))
+            })
+            .collect();
+        let closed =
+            w >= 3 && wall_faces.iter().all(|&f| wall_neighbours(a, f, &wall_faces) >= 2);
+        let sides = ring_profile(&walls);
+        match floor {
+            Some(_) if closed => (Pocket, false, sides),
+            Some((_, fill)) if w == 1 => {
+                if fill < TRIANGLE_FILL {
+                    (Step, false, P::Triangular)
+                } else if fill < RECTANGLE_FILL {
+                    (Step, true, P::Slanted)
+                } else {
+                    (Step, true, P::Rectangular)
+                }
+            }
+            Some(_) if w == 2 && parallel => (Slot, true, P::Rectangular),
+            Some(_) if w == 2 && square => (Step, false, P::Rectangular),
+            Some(_) if w == 2 => (Step, true, P::TwoSided),
+            Some(_) if w == 3 && parallel && square => (Slot, false, P::Rectangular),
+            Some(_) => (Pocket, false, sides),
+            None if closed => (Passage, true, sides),
+            None if w == 2 && parallel => (Slot, true, P::Rectangular),
+            None if w == 2 => (Slot, true, P::Triangular),
+            None if w >= 3 => (Passage, true, sides),
+            None => (Slot, true, P::Free),
+        }
+    }
+
+    /// The floor: a plane every other plane of the group stands square on
+    /// (preferring one square to the stock and facing a stock plane the
+    /// group reaches), with how well its outline fills its minimum
+    /// rectangle (a triangle ½, a rectangle 1).
+    fn floor(&self, a: &PartAnalysis) -> Option<(Vector3, f64)> {
+        if self.planes.len() < 2 {
+            return None;
+        }
+        let candidates = self.planes.iter().filter(|(n, _)| {
+            self.planes
+                .iter()
+                .all(|(m, _)| same_direction(n, m) || n.dot(m).abs() < NEAR_PARALLEL_EPS)
+        });
+        let rank = |n: &Vector3| {
+            let faces_entry = self
+                .touched
+                .iter()
+                .any(|&sp| same_direction(n, &self.stock.normal(sp)));
+            (self.stock.aligned(n), faces_entry)
+        };
+        let (n, _) = candidates.max_by_key(|(n, _)| rank(n))?;
+        let faces: Vec<FaceId> = self
+            .group
+            .iter()
+            .copied()
+            .filter(|&f| a.props(f).normal.is_some_and(|m| same_direction(n, &m)))
+            .collect();
+        Some((*n, fill_ratio(a, &faces)))
+    }
+
+    /// Into the part from the entry plane (holes: along the axis).
+    pub(crate) fn direction(&self) -> Vector3 {
+        if let Some(c) = self.cylinders.first() {
+            match self.entry {
+                Some(sp) if self.stock.normal(sp).dot(&c.axis) > 0.0 => -c.axis,
+                _ => c.axis,
+            }
+        } else {
+            self.entry
+                .map(|sp| -self.stock.normal(sp))
+                .unwrap_or(-Vector3::z())
+        }
+    }
+}
+
+/// Holes: concave cylinders. Blind when a face closes the far end: a plane
+/// across the axis, or a drill point (cone, sphere) there.
+fn hole_typing(
+    a: &PartAnalysis,
+    group: &[FaceId],
+    cylinders: &[Cylinder],
+) -> (MachiningKind, bool, Profile) {
+    let part = a.part();
+    let tol = a.tol().feature;
+    let axis = cylinders[0].axis;
+    let (lo, hi) = a.extent(group, &axis);
+    let at_end = |f: FaceId| {
+        let (x, y) = a.extent(&[f], &axis);
+        (x - lo).abs() < tol * 100.0 || (y - hi).abs() < tol * 100.0
+    };
+    let closes = |f: FaceId| {
+        let face = part.face(f);
+        match face.surface {
+            Surface::Plane { .. } => {
+                a.props(f)
+                    .normal
+                    .is_some_and(|n| n.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
+                    && at_end(f)
+                    && face.loops.len() == 1
+            }
+            // A drill point: at the far end, coming to a tip (a vertex
+            // loop) or a single boundary.
+            Surface::Cone { .. } | Surface::Sphere { .. } => {
+                at_end(f)
+                    && (face.loops.len() == 1
+                        || face.loops.iter().any(|&l| part.loop_(l).vertex.is_some()))
+            }
+            _ => false,
+        }
+    };
+    let bottom = group.iter().any(|&f| closes(f));
+    let distinct_r = radii(a, group).len();
+    let cone = group
+        .iter()
+        .any(|&f| matches!(part.face(f).surface, Surface::Cone { .. }));
+    let profile = if cone && distinct_r >= 1 {
+        Profile::Countersunk
+    } else if distinct_r == 2 {
+        Profile::Counterbored
+    } else if distinct_r > 2 {
+        Profile::MultiSegment
+    } else {
+        Profile::Circular
+    };
+    (MachiningKind::Hole, !bottom, profile)
+}
+
