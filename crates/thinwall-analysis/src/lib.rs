@@ -26,7 +26,9 @@ pub mod vocabulary;
 
 pub use polygon::{FaceLoops, PlanarFace};
 pub use setup::{Machine, Setup, SetupError};
-pub use vocabulary::{Catalog, FeatureId, MachiningId, MachiningKind, Profile, StiffnessKind, VolumeType};
+pub use vocabulary::{
+    Catalog, FeatureId, MachiningId, MachiningKind, Profile, StiffnessKind, VolumeType,
+};
 
 use geo::MultiPolygon;
 use std::borrow::Cow;

@@ -306,6 +306,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn catalogue_ids_are_mfcadpp_class_ids() {
+        assert_eq!(Catalog::ALL.len(), 24);
+        assert_eq!(Catalog::Chamfer.id(), 0);
+        assert_eq!(Catalog::ORing.id(), 11);
+        assert_eq!(Catalog::ORing.name(), "Oring");
+        assert_eq!(Catalog::SixSidesPocket.name(), "6sides_pocket");
+        assert_eq!(Catalog::RectangularBlindStep.id(), 22);
+        assert_eq!(Catalog::Round.id(), 23);
+        // The JSON schema lists the same names, in the same order.
+        let schema = include_str!("../../../docs/schema/recognition.schema.json");
+        let names: Vec<String> = Catalog::ALL
+            .iter()
+            .map(|c| format!("\"{}\"", c.name()))
+            .collect();
+        assert!(schema.contains(&names.join(", ")));
+    }
+
+    #[test]
     fn names_round_trip_and_ids_read_back() {
         for k in StiffnessKind::ALL {
             assert_eq!(StiffnessKind::parse(k.name()), Some(*k));

@@ -9,6 +9,7 @@
 //! cylinder's radius (a longer cone is a countersink, part of its hole).
 
 use crate::Stock;
+use thinwall_analysis::polygon::min_rect_sides;
 use thinwall_analysis::{Catalog, MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
@@ -71,7 +72,9 @@ fn closes_a_floor(a: &PartAnalysis, f: FaceId, g: FaceId, h: FaceId) -> bool {
         adj.convexity == Convexity::Concave
             && e != g
             && e != h
-            && a.graph().neighbours(e).all(|(x, _)| x == f || x == g || x == h)
+            && a.graph()
+                .neighbours(e)
+                .all(|(x, _)| x == f || x == g || x == h)
     })
 }
 
@@ -96,24 +99,38 @@ fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
 }
 
 /// A chamfer feature: a chain of bevel faces, its long and short sides.
-pub(crate) fn chamfer_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> MachiningFeature {
+pub(crate) fn chamfer_feature(
+    a: &PartAnalysis,
+    stock: &Stock,
+    group: &[FaceId],
+) -> MachiningFeature {
     let normal: Vector3 = group
         .iter()
         .filter_map(|&f| a.props(f).normal)
         .fold(Vector3::zeros(), |s, n| s + n);
     let dir = (-normal).try_normalize(1e-12).unwrap_or(-stock.axes[2]);
-    let (length, width) = if group.len() == 1 {
-        a.polygon(group[0])
-            .and_then(|p| thinwall_analysis::polygon::min_rect_sides(&p))
-            .unwrap_or_else(|| a.strip_width(group[0]))
-    } else {
-        // A chain: its developed length along the bevel, its width across.
-        let (w, l) = group
+    // A lone planar bevel: its own long and short sides. A chain or a
+    // conical bevel: its longest extent along the stock's axes (a ring's
+    // diameter, not its developed length) and its widest strip.
+    let planar = group.len() == 1 && a.polygon(group[0]).is_some();
+    let sides = planar
+        .then(|| a.polygon(group[0]).and_then(|p| min_rect_sides(&p)))
+        .flatten();
+    let (length, width) = sides.unwrap_or_else(|| {
+        let width = group
             .iter()
-            .map(|&f| a.strip_width(f))
-            .fold((0.0, 0.0), |(w, l), (fw, fl)| (f64::max(w, fw), l + fl));
-        (l, w)
-    };
+            .map(|&f| a.strip_width(f).0)
+            .fold(0.0, f64::max);
+        let length = stock
+            .axes
+            .iter()
+            .map(|ax| {
+                let (lo, hi) = a.extent(group, ax);
+                hi - lo
+            })
+            .fold(0.0, f64::max);
+        (length, width)
+    });
     let (lo, hi) = a.extent(group, &dir);
     MachiningFeature {
         id: MachiningId::default(),

@@ -150,8 +150,7 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
 /// A curved face tangent to two or more faces, but not a hole's cylinder
 /// whose tangent neighbours are all hole cylinders (its other half).
 fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
-    if a
-        .cylinder_sweep_deg(f)
+    if a.cylinder_sweep_deg(f)
         .is_some_and(|s| s >= shape::HALF_SWEEP_DEG && a.concave_cylinder(f).is_some())
     {
         return false;
@@ -260,7 +259,7 @@ fn depression_feature(
         profile,
         catalog,
     } = shape.typing(a);
-    let dir = shape.direction();
+    let dir = shape.direction(a);
     let (bottom, sides): (Vec<FaceId>, Vec<FaceId>) = group.iter().partition(|&&f| {
         a.props(f)
             .normal

@@ -20,10 +20,6 @@ const FULL_SWEEP_DEG: f64 = 300.0;
 /// A floor outline filling less of its minimum rectangle than this is a
 /// triangle (a right triangle fills ½).
 const TRIANGLE_FILL: f64 = 0.6;
-/// A floor outline filling this much of its minimum rectangle or more is a
-/// rectangle (a slanted step's quadrilateral fills 0.7–0.85).
-const RECTANGLE_FILL: f64 = 0.95;
-
 /// The profile a ring of walls (or what is left of one where another
 /// feature cut it) comes from, by the angles between their normals: six
 /// walls, or walls at 60°, a hexagon; walls square or parallel only, a
@@ -33,7 +29,7 @@ fn ring_profile(walls: &[Vector3]) -> Profile {
     let pairs = || (0..walls.len()).flat_map(|i| (i + 1..walls.len()).map(move |j| (i, j)));
     let square_or_parallel = pairs().all(|(i, j)| {
         let c = cos(i, j).abs();
-        c < NEAR_PARALLEL_EPS || c > 1.0 - NEAR_PARALLEL_EPS
+        !(NEAR_PARALLEL_EPS..=1.0 - NEAR_PARALLEL_EPS).contains(&c)
     });
     let sixty = pairs().any(|(i, j)| (cos(i, j).abs() - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt());
     let parallel = pairs().any(|(i, j)| cos(i, j) < -1.0 + NEAR_PARALLEL_EPS);
@@ -85,8 +81,6 @@ pub(crate) struct GroupShape<'g> {
     stock: &'g Stock,
     group: &'g [FaceId],
     touched: &'g BTreeSet<usize>,
-    /// Axes with both block planes touched.
-    opposite: Vec<usize>,
     /// Distinct planes among the planar faces: normal and offset.
     planes: Vec<(Vector3, f64)>,
     pub(crate) cylinders: Vec<Cylinder>,
@@ -128,48 +122,32 @@ impl<'g> GroupShape<'g> {
             .copied()
             .filter(|sp| !opposite.contains(&(sp / 2)))
             .collect();
+        // Ranked by whether a face of the group faces it, then by the
+        // group's depth seen from it: never by the planes' numbering,
+        // which follows the world's axes.
+        let rank = |sp: usize| {
+            let n = stock.normal(sp);
+            let faces_it = planes.iter().any(|(m, _)| same_direction(m, &n));
+            let (lo, hi) = a.extent(group, &n);
+            (faces_it, hi - lo)
+        };
         let entry = candidates
             .iter()
             .copied()
-            .find(|&sp| {
-                planes
-                    .iter()
-                    .any(|(n, _)| same_direction(n, &stock.normal(sp)))
+            .max_by(|&x, &y| {
+                let (fx, dx) = rank(x);
+                let (fy, dy) = rank(y);
+                fx.cmp(&fy).then(dx.total_cmp(&dy))
             })
-            .or_else(|| candidates.first().copied())
             .or_else(|| touched.iter().next().copied());
         Self {
             stock,
             group,
             touched,
-            opposite,
             planes,
             cylinders,
             entry,
         }
-    }
-
-    /// A floor facing the only stock plane it opens to.
-    fn floor_up(&self) -> Option<Vector3> {
-        if self.touched.len() == 1 {
-            self.entry.map(|sp| self.stock.normal(sp))
-        } else {
-            None
-        }
-    }
-
-    /// Walls closing a ring around the floor: each wall meets two others.
-    fn ring(&self, a: &PartAnalysis) -> bool {
-        let floor_up = self.floor_up();
-        let walls: Vec<FaceId> = self
-            .group
-            .iter()
-            .copied()
-            .filter(|&f| {
-                !floor_up.is_some_and(|u| a.props(f).normal.is_some_and(|n| same_direction(&n, &u)))
-            })
-            .collect();
-        !walls.is_empty() && walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
     }
 
     /// Kind, through, profile and catalogue name.
@@ -223,10 +201,14 @@ impl<'g> GroupShape<'g> {
         let round_sweep: f64 = self
             .group
             .iter()
-            .filter(|&&f| a.concave_cylinder(f).is_some_and(|c| c.coaxial(&first, tol)))
+            .filter(|&&f| {
+                a.concave_cylinder(f)
+                    .is_some_and(|c| c.coaxial(&first, tol))
+            })
             .filter_map(|&f| a.cylinder_sweep_deg(f))
             .sum();
-        let half = sweeps.iter().any(|&s| s >= HALF_SWEEP_DEG);
+        let halves = sweeps.iter().filter(|&&s| s >= HALF_SWEEP_DEG).count();
+        let half = halves > 0;
         let typed = |kind, through, profile, catalog| Typed {
             kind,
             through,
@@ -252,25 +234,29 @@ impl<'g> GroupShape<'g> {
             typed(Step, false, Profile::Circular, name)
         } else if !floor {
             typed(Slot, true, Profile::CircularEnd, None)
-        } else if self.closed(a, &walls) {
-            typed(Pocket, false, Profile::CircularEnd, Some(C::CircularEndPocket))
-        } else if half {
-            typed(Slot, false, Profile::CircularEnd, Some(C::VCircularEndBlindSlot))
+        } else if halves >= 1 && sweeps.len() >= 2 {
+            // Two round ends (one may be cut short by another feature).
+            typed(
+                Pocket,
+                false,
+                Profile::CircularEnd,
+                Some(C::CircularEndPocket),
+            )
+        } else if halves == 1 {
+            typed(
+                Slot,
+                false,
+                Profile::CircularEnd,
+                Some(C::VCircularEndBlindSlot),
+            )
         } else {
-            typed(Slot, false, Profile::CircularEnd, Some(C::HCircularEndBlindSlot))
+            typed(
+                Slot,
+                false,
+                Profile::CircularEnd,
+                Some(C::HCircularEndBlindSlot),
+            )
         }
-    }
-
-    /// Walls (planar and cylindrical, across the floor) closing a ring:
-    /// each meets two others.
-    fn closed(&self, a: &PartAnalysis, planar_walls: &[FaceId]) -> bool {
-        let walls: Vec<FaceId> = self
-            .group
-            .iter()
-            .copied()
-            .filter(|f| planar_walls.contains(f) || a.concave_cylinder(*f).is_some())
-            .collect();
-        walls.iter().all(|&w| wall_neighbours(a, w, &walls) >= 2)
     }
 
     /// Groups of planar faces only: typed by their floor (a face every
@@ -284,11 +270,12 @@ impl<'g> GroupShape<'g> {
             return (Chamfer, false, P::Slanted);
         }
         let floor = self.floor(a);
+        let on_floor = |n: &Vector3| floor.is_some_and(|(m, _)| same_direction(n, &m));
         let walls: Vec<Vector3> = self
             .planes
             .iter()
+            .filter(|p| !on_floor(&p.0))
             .map(|p| p.0)
-            .filter(|n| !floor.is_some_and(|(m, _)| same_direction(n, &m)))
             .collect();
         let w = walls.len();
         let pair = |f: &dyn Fn(f64) -> bool| {
@@ -303,27 +290,28 @@ impl<'g> GroupShape<'g> {
             .group
             .iter()
             .copied()
-            .filter(|&f| {
-                !floor.is_some_and(|(m, _)| a.props(f).normal.is_some_and(|n| same_direction(&n, &m)))
-            })
+            .filter(|&f| a.props(f).normal.is_some_and(|n| !on_floor(&n)))
             .collect();
-        let closed =
-            w >= 3 && wall_faces.iter().all(|&f| wall_neighbours(a, f, &wall_faces) >= 2);
+        let closed = w >= 3
+            && wall_faces
+                .iter()
+                .all(|&f| wall_neighbours(a, f, &wall_faces) >= 2);
         let sides = ring_profile(&walls);
         match floor {
             Some(_) if closed => (Pocket, false, sides),
-            Some((_, fill)) if w == 1 => {
-                if fill < TRIANGLE_FILL {
-                    (Step, false, P::Triangular)
-                } else if fill < RECTANGLE_FILL {
-                    (Step, true, P::Slanted)
-                } else {
-                    (Step, true, P::Rectangular)
-                }
-            }
+            // One wall: square to the stock, a step along a whole edge;
+            // else a triangle in a corner or a slanted step, by the floor.
+            Some(_) if w == 1 && self.stock.aligned(&walls[0]) => (Step, true, P::Rectangular),
+            Some((_, fill)) if w == 1 && fill < TRIANGLE_FILL => (Step, false, P::Triangular),
+            Some(_) if w == 1 => (Step, true, P::Slanted),
             Some(_) if w == 2 && parallel => (Slot, true, P::Rectangular),
             Some(_) if w == 2 && square => (Step, false, P::Rectangular),
             Some(_) if w == 2 => (Step, true, P::TwoSided),
+            // Two sides and a back: a slot, unless it opens to three stock
+            // planes (a notch through a corner: a step).
+            Some(_) if w == 3 && parallel && square && self.touched.len() >= 3 => {
+                (Step, false, P::Rectangular)
+            }
             Some(_) if w == 3 && parallel && square => (Slot, false, P::Rectangular),
             Some(_) => (Pocket, false, sides),
             None if closed => (Passage, true, sides),
@@ -365,16 +353,22 @@ impl<'g> GroupShape<'g> {
     }
 
     /// Into the part from the entry plane (holes: along the axis).
-    pub(crate) fn direction(&self) -> Vector3 {
+    /// With no entry: into its largest planar face (a lone face seen
+    /// square on has no depth), never a world axis.
+    pub(crate) fn direction(&self, a: &PartAnalysis) -> Vector3 {
         if let Some(c) = self.cylinders.first() {
             match self.entry {
                 Some(sp) if self.stock.normal(sp).dot(&c.axis) > 0.0 => -c.axis,
                 _ => c.axis,
             }
+        } else if let Some(sp) = self.entry {
+            -self.stock.normal(sp)
         } else {
-            self.entry
-                .map(|sp| -self.stock.normal(sp))
-                .unwrap_or(-Vector3::z())
+            self.group
+                .iter()
+                .filter_map(|&f| a.props(f).normal.map(|n| (n, a.props(f).area)))
+                .max_by(|x, y| x.1.total_cmp(&y.1))
+                .map_or(-self.stock.axes[2], |(n, _)| -n)
         }
     }
 }
@@ -430,4 +424,3 @@ fn hole_typing(
     };
     (MachiningKind::Hole, !bottom, profile)
 }
-
