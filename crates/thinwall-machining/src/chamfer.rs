@@ -39,7 +39,9 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
         return false;
     };
     let (width, length) = a.strip_width(f);
-    if length < ELONGATED * width {
+    // A bevel is one strip: no holes in it (holes would make a broad face
+    // look narrow by its boundary length).
+    if a.part().face(f).loops.len() != 1 || length < ELONGATED * width {
         return false;
     }
     let mut planes: Vec<(FaceId, Vector3, Convexity)> = Vec::new();

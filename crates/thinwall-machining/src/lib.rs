@@ -89,6 +89,10 @@ fn same_direction(a: &Vector3, b: &Vector3) -> bool {
     a.dot(b) > 1.0 - UNIT_PARALLEL_EPS
 }
 
+/// A lone face at least this share of the block's largest extent long is a
+/// side of the part, not a feature.
+const PART_SIDE_SHARE: f64 = 0.5;
+
 /// Recognize the machining features of the analysed part.
 pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
     let part = a.part();
@@ -132,7 +136,16 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
             .flat_map(|&f| a.graph().neighbours(f))
             .filter_map(|(h, _)| stock[h.index()])
             .collect();
-        out.push(depression_feature(a, &block, &group, &touched));
+        let feature = depression_feature(a, &block, &group, &touched);
+        // A lone planar face spanning half the part or more that is no
+        // bevel is no feature: a side of a part not cut from a block.
+        let side = group.len() == 1
+            && a.planar(group[0]).is_some()
+            && feature.kind != MachiningKind::Chamfer
+            && feature.length >= PART_SIDE_SHARE * block.largest_extent();
+        if !side {
+            out.push(feature);
+        }
     }
     // A feature has a depth and a profile, or it is not a feature (a lone
     // side face seen edge-on, a whole-part face of a casting).

@@ -57,6 +57,10 @@ fn fill_ratio(a: &PartAnalysis, faces: &[FaceId]) -> f64 {
     }
 }
 
+/// A lone face on the block's edge is a bevel when at least this many
+/// times longer than wide.
+const LONE_BEVEL: f64 = 3.0;
+
 /// The typing of a group.
 pub(crate) struct Typed {
     pub kind: MachiningKind,
@@ -266,7 +270,10 @@ impl<'g> GroupShape<'g> {
     fn planar_typing(&self, a: &PartAnalysis) -> (MachiningKind, bool, Profile) {
         use MachiningKind::*;
         use Profile as P;
-        if self.planes.len() == 1 && self.touched.len() >= 3 {
+        // One strip of a face meeting three block planes: a bevel on the
+        // block's edge (a broad face there is the part's own side).
+        let (width, length) = a.strip_width(self.group[0]);
+        if self.group.len() == 1 && self.touched.len() >= 3 && length >= LONE_BEVEL * width {
             return (Chamfer, false, P::Slanted);
         }
         let floor = self.floor(a);

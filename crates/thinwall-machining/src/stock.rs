@@ -67,6 +67,11 @@ impl Stock {
         }
     }
 
+    /// The block's largest extent along its axes, mm.
+    pub fn largest_extent(&self) -> f64 {
+        (0..3).map(|k| self.hi[k] - self.lo[k]).fold(0.0, f64::max)
+    }
+
     /// Whether a unit direction is one of the block's axes (either sense).
     pub fn aligned(&self, n: &Vector3) -> bool {
         self.axes
