@@ -230,9 +230,12 @@ impl<'g> GroupShape<'g> {
                 _ => None,
             };
             typed(kind, through, profile, name)
+        } else if walls.len() <= 1 && !floor && half && sweeps.len() == 1 {
+            // A half circle through the part (one plane beside it: where
+            // material beyond the edge closed its open side lower down).
+            typed(Slot, true, Profile::Circular, Some(C::CircularThroughSlot))
         } else if walls.is_empty() && !floor {
-            let name = half.then_some(C::CircularThroughSlot);
-            typed(Slot, true, Profile::Circular, name)
+            typed(Slot, true, Profile::Circular, None)
         } else if walls.is_empty() {
             let name = (!half).then_some(C::CircularBlindStep);
             typed(Step, false, Profile::Circular, name)
