@@ -317,3 +317,67 @@ fn nist_twins_with_one_geometry_get_the_same_features() {
     assert_eq!(a.len(), 52);
     assert_eq!(a, summary("nist_stc_07_asme1_ap242-e3.stp"));
 }
+
+/// Hole patterns of a part: (holes, diameter, layout name, pitch or step).
+fn pattern_summary(part: &thinwall_brep::Part) -> Vec<String> {
+    let a = PartAnalysis::new(part, Setup::default());
+    let m = recognize(&a);
+    let mut v: Vec<String> = thinwall_machining::hole_patterns(&a, &m)
+        .iter()
+        .map(|p| {
+            let layout = match p.layout {
+                thinwall_machining::Layout::Linear { pitch, .. } => format!("row {pitch:.3}"),
+                thinwall_machining::Layout::Circular {
+                    radius, step_deg, ..
+                } => format!("circle R{radius:.3} {step_deg:.2}"),
+            };
+            let holes: Vec<String> = p.holes.iter().map(|h| h.to_string()).collect();
+            format!(
+                "{} x {:.3} {layout}: {}",
+                p.holes.len(),
+                p.diameter,
+                holes.join(" ")
+            )
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn ftc_10_hole_rows_are_found_and_survive_a_rigid_motion() {
+    let path = common::shared_data().join("nist/nist_ftc_10_asme1_ap242-e2.stp");
+    let (part, _) = thinwall_step::read_file(&path).unwrap();
+    let found = pattern_summary(&part);
+    println!("{found:#?}");
+    // FTC 10 carries rows of equal holes: two rows of four Ø10 at 22 mm
+    // (one from each side), four Ø7 at 22 mm, two rows of four Ø2.5 at
+    // 22 mm, rows of three Ø3.5 and Ø2.459.
+    assert_eq!(found.len(), 9, "{found:#?}");
+    assert_eq!(
+        found
+            .iter()
+            .filter(|p| p.starts_with("4 x 10.000 row 22.000"))
+            .count(),
+        2
+    );
+    assert_eq!(
+        found
+            .iter()
+            .filter(|p| p.starts_with("4 x 7.000 row 22.000"))
+            .count(),
+        1
+    );
+    assert_eq!(
+        found
+            .iter()
+            .filter(|p| p.starts_with("4 x 2.500 row 22.000"))
+            .count(),
+        2
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (r, t) = common::rigid_motion(7);
+    let (turned, _) = common::turned_step(&text, &r, &t);
+    let (turned, _) = thinwall_step::read_bytes(turned.as_bytes(), "turned.step").unwrap();
+    assert_eq!(pattern_summary(&turned), found);
+}

@@ -149,6 +149,7 @@ pub(crate) fn chamfer_feature(
         depth: if hi.is_finite() { hi - lo } else { 0.0 },
         length: length.max(width),
         width: width.min(length),
+        centre: None,
         radii: vec![],
         largest_tool_diameter: None,
         related: vec![],

@@ -28,9 +28,11 @@
 
 mod catalog;
 mod chamfer;
+mod patterns;
 mod shape;
 mod stock;
 
+pub use patterns::{hole_patterns, HolePattern, Layout};
 pub use stock::Stock;
 
 use geo::{Area, MultiPolygon};
@@ -72,6 +74,10 @@ pub struct MachiningFeature {
     /// Profile length and width (minimum rectangle), or hole diameter, mm.
     pub length: f64,
     pub width: f64,
+    /// A hole's axis point where the tool enters (its centre on the entry
+    /// face), mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre: Option<[f64; 3]>,
     /// Radii of cylindrical faces (holes, corners, blends), mm.
     pub radii: Vec<f64>,
     /// Largest tool diameter that fits the floor (or the cross-section of a
@@ -229,6 +235,7 @@ fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> Machining
         depth: radii_v.first().copied().unwrap_or(0.0),
         length,
         width: arc.min(length),
+        centre: None,
         radii: radii_v,
         largest_tool_diameter: None,
         related: vec![],
@@ -318,6 +325,13 @@ fn depression_feature(
         depth: if hi.is_finite() { hi - lo } else { 0.0 },
         length,
         width,
+        centre: (kind == MachiningKind::Hole)
+            .then(|| shape.cylinders.first())
+            .flatten()
+            .map(|c| {
+                let p = c.origin + dir * (lo - c.origin.coords.dot(&dir));
+                [p.x, p.y, p.z]
+            }),
         largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
         radii: radii_v,
         related: vec![],

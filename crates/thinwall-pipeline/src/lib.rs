@@ -65,6 +65,8 @@ pub struct Outcome {
     /// Conventional machining features, each with the stiffness features
     /// sharing its faces (`related`).
     pub machining: Vec<MachiningFeature>,
+    /// Equal holes on a line or a circle (`thinwall_machining::patterns`).
+    pub hole_patterns: Vec<thinwall_machining::HolePattern>,
     /// Every face's properties, by `face.index()`.
     pub face_props: Vec<FaceProps>,
     /// What the analysis found questionable (approximate figures, open or
@@ -150,12 +152,14 @@ pub fn run(
     clock.lap("connections and links");
     let warnings = a.warnings();
     let view_notes = disagreements(&machining, &recognition);
+    let hole_patterns = thinwall_machining::hole_patterns(&a, &machining);
     Ok(Outcome {
         request: req.clone(),
         setup: req.setup.clone(),
         recognition,
         structure,
         machining,
+        hole_patterns,
         face_props: a.into_face_props(),
         warnings,
         view_notes,

@@ -86,6 +86,8 @@ pub struct RecognitionReport {
     /// Conventional machining features (holes, pockets, slots, steps,
     /// passages, chamfers, fillets), `docs/MACHINING.md`.
     pub machining_features: Vec<thinwall_machining::MachiningFeature>,
+    /// Equal holes on a line or a circle.
+    pub hole_patterns: Vec<thinwall_machining::HolePattern>,
     /// What the reader dropped or repaired and what the analysis found
     /// questionable, in full.
     pub warnings: Vec<Warning>,
@@ -188,6 +190,7 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
             .cloned()
             .collect(),
         machining_features,
+        hole_patterns: out.hole_patterns.clone(),
         warnings: out.warnings.clone(),
     }
 }
@@ -284,6 +287,36 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
     }
 }
 
+/// The hole patterns, a line each.
+fn patterns_text(s: &mut String, patterns: &[thinwall_machining::HolePattern]) {
+    if patterns.is_empty() {
+        return;
+    }
+    let _ = writeln!(s, "hole patterns: {}", patterns.len());
+    for p in patterns {
+        let layout = match &p.layout {
+            thinwall_machining::Layout::Linear { pitch, .. } => {
+                format!("in a row, pitch {pitch:.2}")
+            }
+            thinwall_machining::Layout::Circular {
+                radius, step_deg, ..
+            } => {
+                format!("on a circle R{radius:.2}, every {step_deg:.1} deg")
+            }
+        };
+        let holes: Vec<String> = p.holes.iter().map(|h| h.to_string()).collect();
+        let _ = writeln!(
+            s,
+            "  {:<5}{} x dia {:.2} {}: {}",
+            p.id,
+            p.holes.len(),
+            p.diameter,
+            layout,
+            holes.join(" ")
+        );
+    }
+}
+
 fn mm(v: Option<f64>) -> String {
     v.map(|x| format!("{x:.2}")).unwrap_or_else(|| "-".into())
 }
@@ -321,6 +354,7 @@ impl RecognitionReport {
             }
         }
         machining_text(&mut s, &self.machining_features);
+        patterns_text(&mut s, &self.hole_patterns);
         s
     }
 
