@@ -137,8 +137,14 @@ const char *tw_last_error_message(void);
 // New options with the defaults; free with `tw_options_free`.
 enum tw_status tw_options_new(struct tw_options **out);
 
-// The set-up's up direction (tool axis); need not be unit length, must not be zero.
+// The set-up's up direction (tool axis); need not be unit length, must not
+// be zero. Machining features are then judged in the set-up (entered from
+// up where they open there; each says whether the tool reaches it).
 enum tw_status tw_options_set_up(struct tw_options *opt, double x, double y, double z);
+
+// A uniform allowance on the part's block, mm (0 or more): the part's
+// faces on the block become facing features.
+enum tw_status tw_options_set_stock_offset(struct tw_options *opt, double mm);
 
 // Maximum milling force, N (> 0).
 enum tw_status tw_options_set_force(struct tw_options *opt, double newton);

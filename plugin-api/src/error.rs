@@ -200,6 +200,7 @@ pub(crate) fn pipeline_failure(e: thinwall_pipeline::PipelineError) -> Failure {
         E::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
         E::OpenShell { .. } => tw_status::TW_ERR_INVALID_PART,
         E::Structure(_) => tw_status::TW_ERR_RECOGNITION,
+        E::Machining(_) => tw_status::TW_ERR_INVALID_CONFIG,
         _ => tw_status::TW_ERR_INTERNAL,
     };
     (status, e.to_string())

@@ -58,7 +58,9 @@ unsafe fn with(
     })
 }
 
-/// The set-up's up direction (tool axis); need not be unit length, must not be zero.
+/// The set-up's up direction (tool axis); need not be unit length, must not
+/// be zero. Machining features are then judged in the set-up (entered from
+/// up where they open there; each says whether the tool reaches it).
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_set_up(
     opt: *mut tw_options,
@@ -69,6 +71,20 @@ pub unsafe extern "C" fn tw_options_set_up(
     with(opt, |o| {
         let s = Setup::new([x, y, z], o.request.setup.machine).map_err(|e| e.to_string())?;
         o.request.setup = s;
+        o.request.machining.in_setup = true;
+        Ok(())
+    })
+}
+
+/// A uniform allowance on the part's block, mm (0 or more): the part's
+/// faces on the block become facing features.
+#[no_mangle]
+pub unsafe extern "C" fn tw_options_set_stock_offset(opt: *mut tw_options, mm: f64) -> tw_status {
+    with(opt, |o| {
+        if !(mm.is_finite() && mm >= 0.0) {
+            return Err(format!("stock offset must be 0 mm or more, got {mm}"));
+        }
+        o.request.machining.stock_offset = mm;
         Ok(())
     })
 }

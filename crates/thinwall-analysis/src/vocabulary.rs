@@ -121,6 +121,12 @@ named_enum! {
         Fillet => "fillet",
         /// A ring-shaped groove around a standing core (an O-ring groove).
         Groove => "groove",
+        /// A face of the part's envelope to face-mill: the allowance on a
+        /// block or blank face above it.
+        Face => "face",
+        /// A round boss standing above the face around it: the material
+        /// to machine away around it.
+        Boss => "boss",
     }
 }
 

@@ -250,6 +250,14 @@ struct RecognizeFlags {
     /// instead of refusing it.
     #[arg(long)]
     allow_open: bool,
+    /// The stock the part is cut from: a STEP solid (a blank, a casting
+    /// envelope). Faces on its surface are not machined.
+    #[arg(long, conflicts_with = "stock_offset")]
+    stock: Option<PathBuf>,
+    /// A uniform allowance on the part's block, mm: its faces on the block
+    /// are faced.
+    #[arg(long, allow_hyphen_values = true)]
+    stock_offset: Option<f64>,
 }
 
 impl RecognizeFlags {
@@ -298,8 +306,22 @@ impl RecognizeFlags {
                 tilt_limit_deg: self.tilt_limit,
             },
         };
-        let up = self.up.or(settings.up).unwrap_or([0.0, 0.0, 1.0]);
+        let given_up = self.up.or(settings.up);
+        let up = given_up.unwrap_or([0.0, 0.0, 1.0]);
         let setup = thinwall_analysis::Setup::new(up, machine).map_err(Failure::usage)?;
+        let stock = match &self.stock {
+            Some(path) => {
+                let (solid, _) = thinwall_step::read_file(path).map_err(Failure::from)?;
+                Some(std::sync::Arc::new(solid))
+            }
+            None => None,
+        };
+        let stock_offset = self.stock_offset.unwrap_or(0.0);
+        if !(stock_offset.is_finite() && stock_offset >= 0.0) {
+            return Err(Failure::Usage(format!(
+                "--stock-offset must be a length of 0 mm or more, got {stock_offset}"
+            )));
+        }
         Ok(thinwall_pipeline::Request {
             setup,
             config: cfg,
@@ -308,6 +330,12 @@ impl RecognizeFlags {
             },
             parallel: true,
             allow_open: self.allow_open,
+            machining: thinwall_pipeline::MachiningRequest {
+                in_setup: given_up.is_some(),
+                stock_offset,
+                stock,
+                stock_file: self.stock.as_ref().map(|p| p.display().to_string()),
+            },
         })
     }
 }

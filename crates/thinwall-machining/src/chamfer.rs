@@ -152,6 +152,7 @@ pub(crate) fn chamfer_feature(
         centre: None,
         radii: vec![],
         largest_tool_diameter: None,
+        reachable: None,
         related: vec![],
     }
 }

@@ -28,10 +28,14 @@
 
 mod catalog;
 mod chamfer;
+mod facing;
+mod options;
 mod patterns;
 mod shape;
+mod solid;
 mod stock;
 
+pub use options::{MachiningError, Options, StockSpec};
 pub use patterns::{hole_patterns, HolePattern, Layout};
 pub use stock::Stock;
 
@@ -41,7 +45,7 @@ use std::collections::BTreeSet;
 use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
 use thinwall_analysis::{Catalog, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
-use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
+use thinwall_geom::tolerance::{FEATURE_PARALLEL_DEG, NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
 use thinwall_geom::{Surface, Vector3};
 use thinwall_graph::Convexity;
 
@@ -84,6 +88,11 @@ pub struct MachiningFeature {
     /// passage or hole), mm; absent when there is no floor to measure.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub largest_tool_diameter: Option<f64>,
+    /// Whether the set-up's tool (along up, within its tilt limit) reaches
+    /// it along its direction; absent when no set-up was given, and for
+    /// blends and chamfers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reachable: Option<bool>,
     /// The stiffness features sharing a face with it (filled by the
     /// pipeline, which runs both recognizers).
     #[serde(default)]
@@ -99,36 +108,111 @@ fn same_direction(a: &Vector3, b: &Vector3) -> bool {
 /// side of the part, not a feature.
 const PART_SIDE_SHARE: f64 = 0.5;
 
-/// Recognize the machining features of the analysed part.
+/// Recognize the machining features of the analysed part, cut from its
+/// own block, every block direction a candidate.
 pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
+    recognize_with(a, &Options::default()).unwrap_or_default()
+}
+
+/// Recognize the machining features with `opts` (a set-up's tool axis, a
+/// stock); an error when the stock is unusable.
+pub fn recognize_with(
+    a: &PartAnalysis,
+    opts: &Options,
+) -> Result<Vec<MachiningFeature>, MachiningError> {
+    let part = a.part();
+    let block = Stock::of(a, opts.up);
+    let on_block: Vec<Option<usize>> = part.face_ids().map(|f| block.plane_of(a, f)).collect();
+    let as_stock = stock_faces(a, &on_block, &opts.stock)?;
+    let mut out = facing::facing_features(a, &block, &on_block, &as_stock, &opts.stock);
+    // Faces on the block or the given stock are in no other feature.
+    let left: Vec<bool> = part
+        .face_ids()
+        .map(|f| on_block[f.index()].is_none() && !as_stock[f.index()])
+        .collect();
+    out.extend(cut_features(a, &block, &on_block, &left));
+    // A feature has a depth and a profile, or it is not a feature (a lone
+    // side face seen edge-on, a whole-part face of a casting).
+    let least = a.tol().coplanar;
+    out.retain(|m| {
+        m.length > least && m.width > least && (m.depth > least || m.kind == MachiningKind::Chamfer)
+    });
+    if let Some(up) = opts.up {
+        let reach = (opts.tilt_limit_deg + FEATURE_PARALLEL_DEG)
+            .to_radians()
+            .cos();
+        for m in &mut out {
+            m.reachable = reachability(m, &up, reach);
+        }
+    }
+    out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
+    for (i, m) in out.iter_mut().enumerate() {
+        m.id = MachiningId(i as u32 + 1);
+    }
+    Ok(out)
+}
+
+/// Whether a tool within the tilt limit of up reaches a feature along its
+/// direction; none for blends and chamfers (a profiled cutter follows
+/// them from wherever their faces are reached).
+fn reachability(m: &MachiningFeature, up: &Vector3, reach: f64) -> Option<bool> {
+    if matches!(m.kind, MachiningKind::Fillet | MachiningKind::Chamfer) {
+        return None;
+    }
+    let d = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
+    Some(d.dot(&-up) >= reach || (m.through && d.dot(up) >= reach))
+}
+
+/// Which faces are stock: on the block (or none with an allowance), or on
+/// the given solid's surface.
+fn stock_faces(
+    a: &PartAnalysis,
+    on_block: &[Option<usize>],
+    spec: &StockSpec,
+) -> Result<Vec<bool>, MachiningError> {
+    match *spec {
+        StockSpec::Block => Ok(on_block.iter().map(Option::is_some).collect()),
+        StockSpec::Offset(mm) if !(mm.is_finite() && mm >= 0.0) => {
+            Err(MachiningError::BadOffset(mm))
+        }
+        StockSpec::Offset(mm) => Ok(on_block.iter().map(|b| b.is_some() && mm == 0.0).collect()),
+        StockSpec::Solid(stock) => solid::faces_on(a, stock),
+    }
+}
+
+/// Blends, chamfers and depressions among the faces `left`.
+fn cut_features(
+    a: &PartAnalysis,
+    block: &Stock,
+    on_block: &[Option<usize>],
+    left: &[bool],
+) -> Vec<MachiningFeature> {
     let part = a.part();
     let tol = a.tol().feature;
-    let block = Stock::of(a);
-    let stock: Vec<Option<usize>> = part.face_ids().map(|f| block.plane_of(a, f)).collect();
-    let is_stock = |f: FaceId| stock[f.index()].is_some();
+    let is_left = |f: FaceId| left[f.index()];
     let mut out: Vec<MachiningFeature> = Vec::new();
     // Blends: chains of tangent curved faces.
     let blends: Vec<FaceId> = part
         .face_ids()
-        .filter(|&f| !is_stock(f) && is_blend(a, f))
+        .filter(|&f| is_left(f) && is_blend(a, f))
         .collect();
     for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
-        out.push(blend_feature(a, &block, &group));
+        out.push(blend_feature(a, block, &group));
     }
     let mut taken: BTreeSet<FaceId> = blends.iter().copied().collect();
     // Chamfers: chains of bevels.
     let bevels: Vec<FaceId> = part
         .face_ids()
-        .filter(|&f| !is_stock(f) && !taken.contains(&f) && chamfer::is_chamfer(a, f))
+        .filter(|&f| is_left(f) && !taken.contains(&f) && chamfer::is_chamfer(a, f))
         .collect();
     for group in a.components(&bevels, |_, _, adj| adj.convexity == Convexity::Smooth) {
-        out.push(chamfer::chamfer_feature(a, &block, &group));
+        out.push(chamfer::chamfer_feature(a, block, &group));
     }
     taken.extend(bevels);
     // Depressions: concave-connected groups (hole halves across their seam).
     let rest: Vec<FaceId> = part
         .face_ids()
-        .filter(|f| !is_stock(*f) && !taken.contains(f))
+        .filter(|f| is_left(*f) && !taken.contains(f))
         .collect();
     let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
         adj.convexity == Convexity::Concave
@@ -140,9 +224,9 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
         let touched: BTreeSet<usize> = group
             .iter()
             .flat_map(|&f| a.graph().neighbours(f))
-            .filter_map(|(h, _)| stock[h.index()])
+            .filter_map(|(h, _)| on_block[h.index()])
             .collect();
-        let feature = depression_feature(a, &block, &group, &touched);
+        let feature = depression_feature(a, block, &group, &touched);
         // A lone planar face spanning half the part or more that is no
         // bevel is no feature: a side of a part not cut from a block.
         let side = group.len() == 1
@@ -152,16 +236,6 @@ pub fn recognize(a: &PartAnalysis) -> Vec<MachiningFeature> {
         if !side {
             out.push(feature);
         }
-    }
-    // A feature has a depth and a profile, or it is not a feature (a lone
-    // side face seen edge-on, a whole-part face of a casting).
-    let least = a.tol().coplanar;
-    out.retain(|m| {
-        m.length > least && m.width > least && (m.depth > least || m.kind == MachiningKind::Chamfer)
-    });
-    out.sort_by_key(|m| m.faces.first().copied().unwrap_or(0));
-    for (i, m) in out.iter_mut().enumerate() {
-        m.id = MachiningId(i as u32 + 1);
     }
     out
 }
@@ -238,6 +312,7 @@ fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> Machining
         centre: None,
         radii: radii_v,
         largest_tool_diameter: None,
+        reachable: None,
         related: vec![],
     }
 }
@@ -334,6 +409,7 @@ fn depression_feature(
             }),
         largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
         radii: radii_v,
+        reachable: None,
         related: vec![],
     }
 }

@@ -313,6 +313,7 @@ mod tests {
             centre: Some([x, y, 10.0]),
             radii: vec![3.0],
             largest_tool_diameter: Some(6.0),
+            reachable: None,
             related: vec![],
         }
     }

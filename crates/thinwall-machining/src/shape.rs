@@ -135,15 +135,16 @@ impl<'g> GroupShape<'g> {
             let (lo, hi) = a.extent(group, &n);
             (faces_it, hi - lo)
         };
-        let entry = candidates
-            .iter()
-            .copied()
-            .max_by(|&x, &y| {
+        // In a set-up, from up wherever the group opens there.
+        let from_up = stock.up_plane().filter(|sp| touched.contains(sp));
+        let entry = from_up.or_else(|| {
+            candidates.iter().copied().max_by(|&x, &y| {
                 let (fx, dx) = rank(x);
                 let (fy, dy) = rank(y);
                 fx.cmp(&fy).then(dx.total_cmp(&dy))
             })
-            .or_else(|| touched.iter().next().copied());
+        });
+        let entry = entry.or_else(|| touched.iter().next().copied());
         Self {
             stock,
             group,

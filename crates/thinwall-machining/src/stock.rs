@@ -31,12 +31,18 @@ pub struct Stock {
     /// The axes are the world's: faces' and the part's boxes measure them.
     world: bool,
     tol: f64,
+    /// The set-up's tool axis, when features are judged in it.
+    pub up: Option<Vector3>,
 }
 
 impl Stock {
-    /// The stock of an analysed part.
-    pub fn of(a: &PartAnalysis) -> Self {
-        let axes = dominant_axes(a);
+    /// The stock of an analysed part; with the set-up's `up`, one of its
+    /// axes is up.
+    pub fn of(a: &PartAnalysis, up: Option<Vector3>) -> Self {
+        let axes = match up {
+            Some(u) => axes_about(a, u),
+            None => dominant_axes(a),
+        };
         let world = axes == [Vector3::x(), Vector3::y(), Vector3::z()];
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         let all: Vec<FaceId> = a.part().face_ids().collect();
@@ -53,7 +59,25 @@ impl Stock {
             hi,
             world,
             tol: a.tol().feature,
+            up,
         }
+    }
+
+    /// Block plane `sp`'s offset along its outward normal, mm.
+    pub fn plane_offset(&self, sp: usize) -> f64 {
+        let k = sp / 2;
+        if sp % 2 == 1 {
+            self.hi[k]
+        } else {
+            -self.lo[k]
+        }
+    }
+
+    /// The block plane facing up, if features are judged in a set-up.
+    pub fn up_plane(&self) -> Option<usize> {
+        let u = self.up?;
+        let snap = WORLD_SNAP_DEG.to_radians().cos();
+        (0..6).find(|&sp| self.normal(sp).dot(&u) > snap)
     }
 
     /// The outward normal of block plane `sp` (`2k`: the low side of axis
@@ -167,6 +191,42 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
         .filter_map(|ax| world.iter().find(|w| ax.dot(w).abs() > snap).copied())
         .collect();
     if snapped.len() == 3 {
+        return world;
+    }
+    axes
+}
+
+/// Axes with `up` as one: up, the planar direction square to it carrying
+/// the most area (or the long side of the part seen from up), and their
+/// cross product; the world's when all three are within the snap angle of
+/// the world's.
+fn axes_about(a: &PartAnalysis, up: Vector3) -> [Vector3; 3] {
+    let sin = FRAME_ORTHOGONAL_DEG.to_radians().sin();
+    let cos = FEATURE_PARALLEL_DEG.to_radians().cos();
+    let mut clusters: Vec<(Vector3, f64)> = Vec::new();
+    for f in a.part().face_ids() {
+        let Some(n) = a.props(f).normal else { continue };
+        if n.dot(&up).abs() >= sin {
+            continue;
+        }
+        let area = a.props(f).area;
+        match clusters.iter_mut().find(|(c, _)| c.dot(&n).abs() > cos) {
+            Some(c) => c.1 += area,
+            None => clusters.push((canonical(n), area)),
+        }
+    }
+    let d2 = clusters
+        .iter()
+        .max_by(|x, y| x.1.total_cmp(&y.1))
+        .map_or_else(|| across(a, &up), |c| c.0);
+    let d2 = canonical((d2 - up * d2.dot(&up)).normalize());
+    let axes = [up, d2, canonical(up.cross(&d2).normalize())];
+    let world = [Vector3::x(), Vector3::y(), Vector3::z()];
+    let snap = WORLD_SNAP_DEG.to_radians().cos();
+    if axes
+        .iter()
+        .all(|ax| world.iter().any(|w| ax.dot(w).abs() > snap))
+    {
         return world;
     }
     axes

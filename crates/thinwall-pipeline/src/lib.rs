@@ -38,6 +38,27 @@ pub struct Request {
     pub parallel: bool,
     /// Recognize a part whose shell is open (free edges) instead of refusing it.
     pub allow_open: bool,
+    /// What the machining-feature layer is asked.
+    pub machining: MachiningRequest,
+}
+
+/// The machining-feature layer's part of a request.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct MachiningRequest {
+    /// Judge features in the set-up (its up is the tool axis): the block
+    /// has up as an axis, features are entered from up where they open
+    /// there, and each says whether the tool reaches it. Off: every block
+    /// direction is a candidate.
+    pub in_setup: bool,
+    /// Uniform allowance on the block, mm (0: faces on the block are
+    /// stock).
+    pub stock_offset: f64,
+    /// A given stock solid (a blank, a casting envelope) and the file it
+    /// came from.
+    #[serde(skip)]
+    pub stock: Option<std::sync::Arc<Part>>,
+    /// The stock file, for the report.
+    pub stock_file: Option<String>,
 }
 
 impl Default for Request {
@@ -48,6 +69,7 @@ impl Default for Request {
             connect: Options::default(),
             parallel: true,
             allow_open: false,
+            machining: MachiningRequest::default(),
         }
     }
 }
@@ -95,6 +117,10 @@ pub enum PipelineError {
     /// defect of Thinwall, reported rather than returned.
     #[error("internal error: invalid connection structure: {0}")]
     Structure(#[from] StructureError),
+    /// The machining request cannot be met (a bad allowance, a stock that
+    /// does not contain the part).
+    #[error(transparent)]
+    Machining(#[from] thinwall_machining::MachiningError),
 }
 
 impl PipelineError {
@@ -105,6 +131,7 @@ impl PipelineError {
             PipelineError::Setup(e) => format!("setup.{}", e.code()),
             PipelineError::OpenShell { .. } => "input.open_shell".to_string(),
             PipelineError::Structure(e) => format!("structure.{}", e.code()),
+            PipelineError::Machining(e) => format!("machining.{}", e.code()),
         }
     }
 }
@@ -136,12 +163,14 @@ pub fn run(
     clock.lap("face properties");
     // The two recognizers only read the analysis: run them side by side.
     let stiffness = || timed(|| thinwall_recognize::recognize(&a, &req.config));
-    let conventional = || timed(|| thinwall_machining::recognize(&a));
-    let ((recognition, t_stiff), (mut machining, t_mach)) = if req.parallel {
+    let m_opts = machining_options(req);
+    let conventional = || timed(|| thinwall_machining::recognize_with(&a, &m_opts));
+    let ((recognition, t_stiff), (machining, t_mach)) = if req.parallel {
         rayon::join(stiffness, conventional)
     } else {
         (stiffness(), conventional())
     };
+    let mut machining = machining?;
     clock.record("stiffness features", t_stiff);
     clock.record("machining features", t_mach);
     clock.lap("recognizers (wall time)");
@@ -165,6 +194,29 @@ pub fn run(
         view_notes,
         timings: clock.laps,
     })
+}
+
+/// The machining layer's options from the request.
+fn machining_options(req: &Request) -> thinwall_machining::Options<'_> {
+    let up = req.setup.up;
+    let tilt = match req.setup.machine {
+        thinwall_analysis::Machine::ThreeAxis => 0.0,
+        thinwall_analysis::Machine::FiveAxis { tilt_limit_deg } => tilt_limit_deg,
+    };
+    thinwall_machining::Options {
+        up: req
+            .machining
+            .in_setup
+            .then(|| thinwall_geom::Vector3::new(up[0], up[1], up[2]).normalize()),
+        tilt_limit_deg: tilt,
+        stock: match &req.machining.stock {
+            Some(solid) => thinwall_machining::StockSpec::Solid(solid),
+            None if req.machining.stock_offset != 0.0 => {
+                thinwall_machining::StockSpec::Offset(req.machining.stock_offset)
+            }
+            None => thinwall_machining::StockSpec::Block,
+        },
+    }
 }
 
 /// One note per machining feature and related stiffness feature whose
