@@ -292,7 +292,8 @@ fn nist_features_have_the_properties_of_a_right_answer() {
 fn nist_twins_with_one_geometry_get_the_same_features() {
     // FTC 07 and STC 07 carry the same solid (different PMI, and edges
     // parameterised differently): the features must agree in kind, profile,
-    // depth and largest tool. (Profile sizes come from boundary samples,
+    // depth and largest tool (to 0.1 mm). (Profile sizes and the largest
+    // tool come from boundary samples,
     // which follow each file's knots: they differ by up to 0.1 mm.)
     let dir = common::shared_data().join("nist");
     let summary = |name: &str| {
@@ -301,7 +302,7 @@ fn nist_twins_with_one_geometry_get_the_same_features() {
             .iter()
             .map(|f| {
                 format!(
-                    "{} {} {} {:.3} {:.3}",
+                    "{} {} {} {:.3} {:.1}",
                     f.kind,
                     f.profile,
                     f.through,
@@ -314,7 +315,7 @@ fn nist_twins_with_one_geometry_get_the_same_features() {
         v
     };
     let a = summary("nist_ftc_07_asme1_ap242-e2.stp");
-    assert_eq!(a.len(), 52);
+    assert_eq!(a.len(), 40);
     assert_eq!(a, summary("nist_stc_07_asme1_ap242-e3.stp"));
 }
 

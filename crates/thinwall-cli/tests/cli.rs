@@ -388,6 +388,13 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
                 "recognition/c_frame.step",
             ),
         ),
+        (
+            "recognition",
+            of(
+                &["recognize", "--up", "0,0,1", "--stock-offset", "1"],
+                "machining/boss_plate.step",
+            ),
+        ),
     ];
     outputs.push((
         "classification",
@@ -453,6 +460,27 @@ fn exit_codes_follow_the_kind_of_error() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("force_n") && err.contains("finite"), "{err}");
+    // Stock: a negative allowance is usage; a stock that does not hold the
+    // part, or a missing stock file, is input.
+    let plate = fixture("machining/boss_plate.step");
+    assert_eq!(
+        code(&["recognize", "--stock-offset", "-1"], &plate),
+        Some(2)
+    );
+    let small = fixture("recognition/c_frame.step");
+    let small = small.to_str().unwrap();
+    assert_eq!(code(&["recognize", "--stock", small], &plate), Some(1));
+    assert_eq!(
+        code(&["recognize", "--stock", "/no/such.step"], &plate),
+        Some(1)
+    );
+    let out = bin()
+        .args(["recognize", "--stock", small])
+        .arg(&plate)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("does not contain the part"), "{err}");
 }
 
 #[test]

@@ -5,6 +5,7 @@
 use crate::{MachiningFeature, Stock, StockSpec};
 use thinwall_analysis::{MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
+use thinwall_geom::Vector3;
 
 /// One facing feature per block plane holding faces that are not stock;
 /// its depth is the allowance (the offset; for a given solid, how far the
@@ -32,28 +33,38 @@ pub(crate) fn facing_features(
             StockSpec::Solid(stock) => crate::solid::standoff(stock, block, sp),
             StockSpec::Block => 0.0,
         };
-        let (length, width) = a.sizes_across(&faces, &n);
-        out.push(MachiningFeature {
-            id: MachiningId::default(),
-            kind: MachiningKind::Face,
-            body: a.part().face(faces[0]).body.0,
-            through: false,
-            profile: Profile::Free,
-            catalog: None,
-            direction: [-n.x, -n.y, -n.z],
-            faces: a.step_ids(&faces),
-            bottom_faces: a.step_ids(&faces),
-            side_faces: vec![],
-            open_to: vec![[n.x, n.y, n.z]],
-            depth,
-            length: length.max(width),
-            width: width.min(length),
-            centre: None,
-            radii: vec![],
-            largest_tool_diameter: None,
-            reachable: None,
-            related: vec![],
-        });
+        out.push(face_feature(a, &faces, &n, depth));
     }
     out
+}
+
+/// Facing `faces` (outward normal `n`) down by `depth` mm.
+pub(crate) fn face_feature(
+    a: &PartAnalysis,
+    faces: &[FaceId],
+    n: &Vector3,
+    depth: f64,
+) -> MachiningFeature {
+    let (length, width) = a.sizes_across(faces, n);
+    MachiningFeature {
+        id: MachiningId::default(),
+        kind: MachiningKind::Face,
+        body: a.part().face(faces[0]).body.0,
+        through: false,
+        profile: Profile::Free,
+        catalog: None,
+        direction: [-n.x, -n.y, -n.z],
+        faces: a.step_ids(faces),
+        bottom_faces: a.step_ids(faces),
+        side_faces: vec![],
+        open_to: vec![[n.x, n.y, n.z]],
+        depth,
+        length: length.max(width),
+        width: width.min(length),
+        centre: None,
+        radii: vec![],
+        largest_tool_diameter: None,
+        reachable: None,
+        related: vec![],
+    }
 }

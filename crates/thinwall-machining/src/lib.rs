@@ -26,6 +26,7 @@
 //! are parallel to the block's, else slanted; a blind step of two faces
 //! triangular.
 
+mod boss;
 mod catalog;
 mod chamfer;
 mod facing;
@@ -209,35 +210,78 @@ fn cut_features(
         out.push(chamfer::chamfer_feature(a, block, &group));
     }
     taken.extend(bevels);
-    // Depressions: concave-connected groups (hole halves across their seam).
-    let rest: Vec<FaceId> = part
+    // Bosses: round convex cylinders standing on a face.
+    let candidates: Vec<FaceId> = part
         .face_ids()
         .filter(|f| is_left(*f) && !taken.contains(f))
+        .collect();
+    for group in boss::boss_groups(a, &candidates) {
+        out.push(boss::boss_feature(a, block, &group));
+        taken.extend(group);
+    }
+    // Depressions: concave-connected groups (hole halves across their
+    // seam), joined also through the concave blends between their faces
+    // (a filleted pocket's floor and walls are one pocket).
+    let concave_blends: BTreeSet<FaceId> = blends
+        .iter()
+        .copied()
+        .filter(|&f| a.is_concave_blend(f))
+        .collect();
+    let rest: Vec<FaceId> = part
+        .face_ids()
+        .filter(|f| (is_left(*f) && !taken.contains(f)) || concave_blends.contains(f))
         .collect();
     let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
         adj.convexity == Convexity::Concave
             || (adj.convexity == Convexity::Smooth
+                && (concave_blends.contains(&f) || concave_blends.contains(&g)))
+            || (adj.convexity == Convexity::Smooth
                 && matches!((a.concave_cylinder(f), a.concave_cylinder(g)),
                     (Some(x), Some(y)) if x.coaxial(&y, tol * 100.0)))
     };
-    for group in a.components(&rest, joined) {
+    for mut group in a.components(&rest, joined) {
+        group.retain(|f| !concave_blends.contains(f));
+        if group.is_empty() {
+            continue;
+        }
         let touched: BTreeSet<usize> = group
             .iter()
             .flat_map(|&f| a.graph().neighbours(f))
             .filter_map(|(h, _)| on_block[h.index()])
             .collect();
-        let feature = depression_feature(a, block, &group, &touched);
-        // A lone planar face spanning half the part or more that is no
-        // bevel is no feature: a side of a part not cut from a block.
-        let side = group.len() == 1
-            && a.planar(group[0]).is_some()
-            && feature.kind != MachiningKind::Chamfer
-            && feature.length >= PART_SIDE_SHARE * block.largest_extent();
-        if !side {
-            out.push(feature);
+        if group.len() == 1 && a.planar(group[0]).is_some() {
+            out.extend(lone_face(a, block, group[0], &touched));
+            continue;
         }
+        out.push(depression_feature(a, block, &group, &touched));
     }
     out
+}
+
+/// A lone planar face (no walls meet it along concave edges): facing a
+/// block plane below it, a face to mill down (the material above it, as
+/// round a boss); else a bevel on the block's edge, or, spanning half the
+/// part or more, a side of a part not cut from a block (no feature), or
+/// typed as any group.
+fn lone_face(
+    a: &PartAnalysis,
+    block: &Stock,
+    f: FaceId,
+    touched: &BTreeSet<usize>,
+) -> Option<MachiningFeature> {
+    let n = a.props(f).normal?;
+    let offset = n.dot(&a.props(f).centroid.coords);
+    let facing = (0..6).find(|&sp| same_direction(&block.normal(sp), &n));
+    if let Some(sp) = facing {
+        let depth = block.plane_offset(sp) - offset;
+        if depth > a.tol().coplanar {
+            return Some(facing::face_feature(a, &[f], &n, depth));
+        }
+    }
+    let feature = depression_feature(a, block, &[f], touched);
+    let side = feature.kind != MachiningKind::Chamfer
+        && feature.length >= PART_SIDE_SHARE * block.largest_extent();
+    (!side).then_some(feature)
 }
 
 /// A curved face tangent to two or more faces, but not a hole's cylinder

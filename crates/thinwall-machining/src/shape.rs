@@ -22,7 +22,8 @@ const FULL_SWEEP_DEG: f64 = 300.0;
 const TRIANGLE_FILL: f64 = 0.6;
 /// The profile a ring of walls (or what is left of one where another
 /// feature cut it) comes from, by the angles between their normals: six
-/// walls, or walls at 60°, a hexagon; walls square or parallel only, a
+/// walls at 60° or parallel to each other, or four with a parallel pair
+/// and one at 60°, a hexagon; walls square or parallel only, a
 /// rectangle; three walls with no two parallel, a triangle.
 fn ring_profile(walls: &[Vector3]) -> Profile {
     let cos = |i: usize, j: usize| walls[i].dot(&walls[j]);
@@ -31,10 +32,15 @@ fn ring_profile(walls: &[Vector3]) -> Profile {
         let c = cos(i, j).abs();
         !(NEAR_PARALLEL_EPS..=1.0 - NEAR_PARALLEL_EPS).contains(&c)
     });
-    let sixty = pairs().any(|(i, j)| (cos(i, j).abs() - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt());
+    let at_60 = |i: usize, j: usize| (cos(i, j).abs() - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt();
+    let sixty = pairs().any(|(i, j)| at_60(i, j));
+    // A hexagon's walls are parallel or at 60° to each other, all of them.
+    let hexagon_walls =
+        pairs().all(|(i, j)| at_60(i, j) || cos(i, j).abs() > 1.0 - NEAR_PARALLEL_EPS);
     let parallel = pairs().any(|(i, j)| cos(i, j) < -1.0 + NEAR_PARALLEL_EPS);
     match walls.len() {
-        n if n >= 5 => Profile::Hexagonal,
+        n if n >= 5 && hexagon_walls => Profile::Hexagonal,
+        n if n >= 5 => Profile::Free,
         n if n >= 3 && square_or_parallel => Profile::Rectangular,
         3 if !parallel => Profile::Triangular,
         n if n >= 3 && sixty && parallel => Profile::Hexagonal,

@@ -43,7 +43,7 @@ pub struct Request {
 }
 
 /// The machining-feature layer's part of a request.
-#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct MachiningRequest {
     /// Judge features in the set-up (its up is the tool axis): the block
     /// has up as an axis, features are entered from up where they open

@@ -64,6 +64,9 @@ pub struct FeatureEntry {
 pub struct SettingsUsed {
     pub recognition: thinwall_recognize::Config,
     pub connections: thinwall_connect::Options,
+    /// The machining layer's request (set-up judging, stock).
+    #[serde(default)]
+    pub machining: thinwall_pipeline::MachiningRequest,
 }
 
 /// The whole recognition report.
@@ -169,6 +172,7 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
         settings: SettingsUsed {
             recognition: config.clone(),
             connections: out.request.connect.clone(),
+            machining: out.request.machining.clone(),
         },
         faces,
         stiffness_features: out

@@ -1,0 +1,34 @@
+#!/usr/bin/env python3
+"""Generate machining fixtures: a plate with a round boss standing above its
+top and a rectangular pocket, the casting envelope it is machined from (the
+plate and boss, pocket not yet cut), and a rectangular blank around it.
+
+usage: python3 scripts/make_machining_fixtures.py [OUT_DIR]
+       (default fixtures/machining)
+"""
+import os, sys
+
+sys.path.insert(0, os.path.dirname(__file__))
+from make_recognition_fixtures import box, fuse, cut, write  # noqa: E402
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder  # noqa: E402
+from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt  # noqa: E402
+
+
+def boss(x, y, z, d, h):
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, z), gp_Dir(0, 0, 1)), d / 2, h).Shape()
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/machining"
+    os.makedirs(out, exist_ok=True)
+    # Plate 100 x 60 x 20, a boss Ø20 standing 10 on it, a 30 x 20 pocket 8 deep.
+    casting = fuse(box(0, 0, 0, 100, 60, 20), boss(30, 30, 20, 20, 10))
+    part = cut(casting, box(60, 20, 12, 90, 40, 25))
+    write(part, os.path.join(out, "boss_plate.step"))
+    write(casting, os.path.join(out, "boss_plate_casting.step"))
+    # A blank 5 mm larger on every side, 2 below and 3 above.
+    write(box(-5, -5, -2, 105, 65, 33), os.path.join(out, "boss_plate_blank.step"))
+
+
+if __name__ == "__main__":
+    main()
