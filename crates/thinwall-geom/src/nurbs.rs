@@ -120,6 +120,8 @@ fn find_span(n_ctrl: usize, p: usize, u: f64, knots: &[f64]) -> usize {
 /// Scratch size for the common degrees (< 8): small arrays keep evaluation
 /// cheap; higher degrees use [`M`].
 const SMALL: usize = 8;
+/// Basis arrays for cubic and lower degrees (most CAD surfaces).
+const CUBIC: usize = 4;
 
 /// Non-zero basis functions at `u` and their first derivatives (`p < N`).
 fn basis_with_derivative<const N: usize>(
@@ -227,7 +229,9 @@ impl NurbsCurve {
 
     /// The point at `t` and the derivative there.
     pub fn eval(&self, t: f64) -> (Point3, Vector3) {
-        if self.degree < SMALL {
+        if self.degree < CUBIC {
+            self.eval_n::<CUBIC>(t)
+        } else if self.degree < SMALL {
             self.eval_n::<SMALL>(t)
         } else {
             self.eval_n::<M>(t)
@@ -385,7 +389,10 @@ impl NurbsSurface {
 
     /// Point and first partial derivatives at `(u, v)`.
     pub fn eval(&self, u: f64, v: f64) -> SurfacePoint {
-        if self.degree_u.max(self.degree_v) < SMALL {
+        let degree = self.degree_u.max(self.degree_v);
+        if degree < CUBIC {
+            self.eval_n::<CUBIC>(u, v)
+        } else if degree < SMALL {
             self.eval_n::<SMALL>(u, v)
         } else {
             self.eval_n::<M>(u, v)

@@ -177,43 +177,59 @@ fn best_line(left: &[&Hole], tol: f64) -> Option<(Vec<usize>, Layout)> {
 }
 
 /// The circle through three centres holding the most centres at equal
-/// angles.
+/// angles. Circles through every triple are bucketed by centre and radius
+/// (to `tol`), so the search is cubic in the holes, not quartic.
 fn best_circle(left: &[&Hole], tol: f64) -> Option<(Vec<usize>, Layout)> {
     let axis = left[0].axis;
-    let mut best: Option<(Vec<usize>, Layout)> = None;
     let n = left.len();
+    let key = |c: &Point3, r: f64| {
+        let q = |v: f64| (v / (10.0 * tol)).round() as i64;
+        (q(c.x), q(c.y), q(c.z), q(r))
+    };
+    let mut circles: std::collections::HashMap<(i64, i64, i64, i64), (Point3, f64)> =
+        std::collections::HashMap::new();
     for i in 0..n {
         for j in i + 1..n {
             for k in j + 1..n {
-                let Some((c, r)) =
+                if let Some((c, r)) =
                     circumcircle(&left[i].centre, &left[j].centre, &left[k].centre, tol)
-                else {
-                    continue;
-                };
-                let on: Vec<usize> = (0..n)
-                    .filter(|&q| ((left[q].centre - c).norm() - r).abs() < tol)
-                    .collect();
-                if on.len() < MIN_HOLES || best.as_ref().is_some_and(|b| b.0.len() >= on.len()) {
-                    continue;
-                }
-                let Some((order, step)) = equal_angles(left, &on, &c, &axis, r, tol) else {
-                    continue;
-                };
-                // Any three holes at the corners of an isosceles triangle
-                // lie on a circle at equal angles: three make a circle
-                // only when they go all the way round.
-                let round = (step * 3.0 - std::f64::consts::TAU).abs() * r < tol;
-                if on.len() > MIN_HOLES || round {
-                    best = Some((
-                        order,
-                        Layout::Circular {
-                            centre: [c.x, c.y, c.z],
-                            radius: r,
-                            step_deg: step.to_degrees(),
-                        },
-                    ));
+                {
+                    circles.entry(key(&c, r)).or_insert((c, r));
                 }
             }
+        }
+    }
+    let mut best: Option<(Vec<usize>, Layout)> = None;
+    let mut found: Vec<(Point3, f64)> = circles.into_values().collect();
+    // The same answer whatever the map's order.
+    found.sort_by(|a, b| {
+        (a.0.x, a.0.y, a.0.z, a.1)
+            .partial_cmp(&(b.0.x, b.0.y, b.0.z, b.1))
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    for (c, r) in found {
+        let on: Vec<usize> = (0..n)
+            .filter(|&q| ((left[q].centre - c).norm() - r).abs() < tol)
+            .collect();
+        if on.len() < MIN_HOLES || best.as_ref().is_some_and(|b| b.0.len() >= on.len()) {
+            continue;
+        }
+        let Some((order, step)) = equal_angles(left, &on, &c, &axis, r, tol) else {
+            continue;
+        };
+        // Any three holes at the corners of an isosceles triangle lie on a
+        // circle at equal angles: three make a circle only when they go
+        // all the way round.
+        let round = (step * 3.0 - std::f64::consts::TAU).abs() * r < tol;
+        if on.len() > MIN_HOLES || round {
+            best = Some((
+                order,
+                Layout::Circular {
+                    centre: [c.x, c.y, c.z],
+                    radius: r,
+                    step_deg: step.to_degrees(),
+                },
+            ));
         }
     }
     best
