@@ -51,6 +51,20 @@ enum Command {
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
     },
+    /// Plan the machining order of the stiffness features: sequence
+    /// constraints from rules (docs/PLANNING.md), each decision explained.
+    Plan {
+        /// The STEP file.
+        part: PathBuf,
+        #[command(flatten)]
+        flags: RecognizeFlags,
+        /// A TOML file of sequence rules (default: the shipped five).
+        #[arg(long)]
+        rules: Option<PathBuf>,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "json")]
+        format: Format,
+    },
     /// Classify machining-feature volumes (pocket, slot, step, …) by shape
     /// and by which faces touch the part or volumes not removed before them.
     Classify {
@@ -93,6 +107,32 @@ enum MachineArg {
     ThreeAxis,
     #[value(name = "5-axis")]
     FiveAxis,
+}
+
+fn plan_command(
+    part: PathBuf,
+    flags: RecognizeFlags,
+    rules: Option<PathBuf>,
+    format: Format,
+) -> Result<(), Failure> {
+    let rules = match &rules {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+            thinwall_plan::RuleSet::from_toml(&text, &path.display().to_string())
+                .map_err(|e| Failure::Usage(e.to_string()))?
+        }
+        None => thinwall_plan::RuleSet::default_rules(),
+    };
+    let request = flags.request()?;
+    let (model, _) = thinwall_step::read_file(&part)?;
+    let outcome = thinwall_pipeline::run(&model, None, &request)
+        .map_err(|e| Failure::from(e).in_file(&part))?;
+    let plan = thinwall_plan::plan(&part.display().to_string(), &model, &outcome, &rules);
+    write_out(&match format {
+        Format::Text => plan.to_text(),
+        Format::Json => plan.to_json(),
+    })
 }
 
 fn classify_command(
@@ -171,6 +211,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             up,
             format,
         } => classify_command(part, volume, before, up, format),
+        Command::Plan {
+            part,
+            flags,
+            rules,
+            format,
+        } => plan_command(part, flags, rules, format),
         Command::Inspect { part, format } => {
             let (model, read) = thinwall_step::read_file(&part)?;
             let graph = AdjacencyGraph::build(&model, &model.tolerances());

@@ -1,0 +1,121 @@
+//! The first planner layer (issue 13): in what order to machine the
+//! stiffness features of a part. Rules are data (`rules`), the facts they
+//! read come from one pipeline run (`scene`), and the two-phase algorithm
+//! (`sequence`) enforces, rejects and explains. `docs/PLANNING.md` has the
+//! rules, the algorithm and every decision taken where the thesis is
+//! silent.
+
+pub mod rules;
+pub mod scene;
+pub mod sequence;
+
+pub use rules::{Relation, Rule, RuleSet, RulesError};
+pub use scene::Scene;
+pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
+
+use serde::Serialize;
+use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_brep::Part;
+use thinwall_connect::Connection;
+use thinwall_pipeline::Outcome;
+
+/// The plan's JSON contract name and version.
+pub const PLAN_SCHEMA: &str = "thinwall/plan/1";
+
+/// A feature as the plan lists it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PlannedFeature {
+    pub id: FeatureId,
+    pub kind: StiffnessKind,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thin: Option<bool>,
+    /// Highest point along the set-up's up, mm.
+    pub top: f64,
+}
+
+/// A plan: the features, their connections and their sequence.
+#[derive(Clone, Debug, Serialize)]
+pub struct Plan {
+    pub schema: String,
+    pub thinwall_version: String,
+    pub file: String,
+    pub up: [f64; 3],
+    /// Where the rules came from (`default` or a file).
+    pub rules: String,
+    pub stiffness_features: Vec<PlannedFeature>,
+    pub connections: Vec<Connection>,
+    /// The constraints in force.
+    pub sequence: Vec<Constraint>,
+    /// Candidates not enforced, with why.
+    pub rejected: Vec<Rejected>,
+    /// A valid order, level by level.
+    pub order: Vec<Vec<FeatureId>>,
+    /// The in-memory sequence, for queries.
+    #[serde(skip)]
+    pub queries: Sequence,
+}
+
+/// Plan the pipeline's outcome on `part` with `rules`.
+pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
+    let scene = Scene::of(part, out);
+    let seq = sequence(&scene, rules);
+    Plan {
+        schema: PLAN_SCHEMA.to_string(),
+        thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
+        file: file.to_string(),
+        up: out.setup.up,
+        rules: rules.source.clone(),
+        stiffness_features: out
+            .recognition
+            .features
+            .iter()
+            .zip(&scene.facts)
+            .map(|(f, fact)| PlannedFeature {
+                id: f.id,
+                kind: f.kind,
+                thin: f.thin,
+                top: fact.top,
+            })
+            .collect(),
+        connections: out.structure.connections.clone(),
+        sequence: seq.constraints.clone(),
+        rejected: seq.rejected.clone(),
+        order: seq.order.clone(),
+        queries: seq,
+    }
+}
+
+impl Plan {
+    /// Pretty JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a plan serialises")
+    }
+
+    /// A table a planner can read: the order, the constraints, the
+    /// rejected candidates.
+    pub fn to_text(&self) -> String {
+        use std::fmt::Write;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "{}: {} stiffness features, rules: {}",
+            self.file,
+            self.stiffness_features.len(),
+            self.rules
+        );
+        let _ = writeln!(s, "order ({} levels):", self.order.len());
+        for (i, level) in self.order.iter().enumerate() {
+            let names: Vec<String> = level.iter().map(|f| f.to_string()).collect();
+            let _ = writeln!(s, "  {:>3}  {}", i + 1, names.join(" "));
+        }
+        let _ = writeln!(s, "sequence constraints: {}", self.sequence.len());
+        for c in &self.sequence {
+            let _ = writeln!(s, "  {}", sequence::describe(c));
+        }
+        let _ = writeln!(s, "rejected candidates: {}", self.rejected.len());
+        for r in &self.rejected {
+            let _ = writeln!(s, "  [{:?}] {}", r.reason, r.explanation);
+        }
+        s
+    }
+}

@@ -1,0 +1,220 @@
+//! The planner's sequence constraints (issue 13) on the thin-walled parts of
+//! `../shared/data/thinwall` and the recognition fixtures: acyclic, top-down
+//! except where a higher rule says otherwise, flanges before their walls,
+//! depressions with their walls; priorities decide between opposite rules;
+//! redundancies and would-be cycles are rejected with their reasons; turned
+//! copies (set-up turned alike) get the same plan.
+
+mod common;
+
+use thinwall_analysis::{FeatureId, Setup, StiffnessKind};
+use thinwall_plan::{plan, Plan, Rejection, Relation, RuleSet};
+
+fn plan_text(text: &str, up: [f64; 3], rules: &RuleSet) -> Plan {
+    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
+    let req = thinwall_pipeline::Request {
+        setup: Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
+        ..Default::default()
+    };
+    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
+    plan("part.step", &part, &out, rules)
+}
+
+fn plan_file(path: &std::path::Path, rules: &RuleSet) -> Plan {
+    plan_text(
+        &std::fs::read_to_string(path).unwrap(),
+        [0.0, 0.0, 1.0],
+        rules,
+    )
+}
+
+fn parts() -> Vec<std::path::PathBuf> {
+    let mut v = common::step_files(&common::shared_data().join("thinwall"));
+    v.extend(common::step_files(
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/recognition"),
+    ));
+    v
+}
+
+/// Level of each feature in the plan's order.
+fn level(p: &Plan, id: FeatureId) -> usize {
+    p.order.iter().position(|l| l.contains(&id)).unwrap()
+}
+
+#[test]
+fn default_rules_give_an_acyclic_top_down_plan_on_every_part() {
+    let rules = RuleSet::default_rules();
+    let mut checked = 0;
+    for path in parts() {
+        let p = plan_file(&path, &rules);
+        let name = path.display().to_string();
+        // Every feature has one level; constraints agree with the levels.
+        let placed: usize = p.order.iter().map(Vec::len).sum();
+        assert_eq!(placed, p.stiffness_features.len(), "{name}");
+        for c in &p.sequence {
+            let (a, b) = (level(&p, c.before), level(&p, c.after));
+            match c.relation {
+                Relation::Before => assert!(a < b, "{name}: {c:?}"),
+                Relation::Simultaneous => assert_eq!(a, b, "{name}: {c:?}"),
+            }
+        }
+        for f in &p.stiffness_features {
+            let Some(base) = p.connections.iter().find_map(|c| match c {
+                thinwall_connect::Connection::BaseLeaf { base, leaf } if *leaf == f.id => {
+                    Some(*base)
+                }
+                _ => None,
+            }) else {
+                continue;
+            };
+            match f.kind {
+                // A flange precedes the wall it is on.
+                StiffnessKind::Flange => {
+                    assert!(
+                        p.queries.predecessors(base, true).contains(&f.id),
+                        "{name}: {} on {base}",
+                        f.id
+                    )
+                }
+                // Holes and cut-outs go with their wall.
+                StiffnessKind::Hole | StiffnessKind::Cutout => {
+                    assert!(
+                        p.queries.simultaneous(base).contains(&f.id),
+                        "{name}: {} in {base}",
+                        f.id
+                    )
+                }
+                _ => {}
+            }
+        }
+        // Top-down: a top-down candidate is enforced, implied already, or
+        // rejected only because a higher rule's constraint is in the way.
+        for r in p.rejected.iter().filter(|r| r.rule == "top-down") {
+            if r.reason != Rejection::Redundant {
+                assert!(
+                    r.because.iter().any(|c| c.rule != "top-down"),
+                    "{name}: {}",
+                    r.explanation
+                );
+            }
+        }
+        checked += 1;
+    }
+    assert!(checked >= 20, "{checked} parts");
+}
+
+/// Two opposite rules on a flange and its wall; the first has priority `a`,
+/// the second `b`.
+fn opposite_rules(a: i64, b: i64) -> RuleSet {
+    let text = format!(
+        r#"
+[[rule]]
+name = "flange-first"
+priority = {a}
+first = ["flange"]
+second = ["web"]
+connection = "first_on_second"
+relation = "before"
+
+[[rule]]
+name = "web-first"
+priority = {b}
+first = ["web"]
+second = ["flange"]
+connection = "second_on_first"
+relation = "before"
+"#
+    );
+    RuleSet::from_toml(&text, "opposite.toml").unwrap()
+}
+
+#[test]
+fn the_higher_rule_wins_and_swapping_priorities_flips_it() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fixtures/recognition/rib_grid_panel.step");
+    for (a, b, winner, loser) in [
+        (2, 1, "flange-first", "web-first"),
+        (1, 2, "web-first", "flange-first"),
+    ] {
+        let p = plan_file(&path, &opposite_rules(a, b));
+        assert!(!p.sequence.is_empty());
+        assert!(
+            p.sequence.iter().all(|c| c.rule == winner),
+            "{:?}",
+            p.sequence
+        );
+        assert_eq!(p.rejected.len(), p.sequence.len());
+        for r in &p.rejected {
+            assert_eq!(r.rule, loser);
+            assert_eq!(r.reason, Rejection::Cycle, "{}", r.explanation);
+            assert_eq!(r.because.len(), 1);
+            assert_eq!(r.because[0].rule, winner);
+            assert!(
+                r.explanation.contains("would close a cycle"),
+                "{}",
+                r.explanation
+            );
+        }
+    }
+}
+
+#[test]
+fn redundancy_and_a_would_be_cycle_are_rejected_with_their_chains() {
+    let rules = RuleSet::default_rules();
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/recognition");
+    // Rib grid: a flange before the web, then top-down says so again.
+    let p = plan_file(&fixtures.join("rib_grid_panel.step"), &rules);
+    let redundant = p
+        .rejected
+        .iter()
+        .find(|r| r.reason == Rejection::Redundant)
+        .expect("a redundant candidate");
+    assert_eq!(redundant.rule, "top-down");
+    assert!(
+        redundant.explanation.contains("already precedes"),
+        "{}",
+        redundant.explanation
+    );
+    // C frame: the web stands above its lower flange, but the flange goes
+    // first: top-down would close a cycle.
+    let p = plan_file(&fixtures.join("c_frame.step"), &rules);
+    let cycle = p
+        .rejected
+        .iter()
+        .find(|r| r.reason == Rejection::Cycle)
+        .expect("a would-be cycle");
+    assert_eq!(cycle.rule, "top-down");
+    assert_eq!(cycle.because[0].rule, "flange-before-its-wall");
+}
+
+#[test]
+fn queries_answer_direct_and_indirect() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/recognition/c_frame.step");
+    let p = plan_file(&path, &RuleSet::default_rules());
+    let id = |s: &str| FeatureId::parse(s).unwrap();
+    // F2 before F1 before W1 before the ribs.
+    assert!(p.queries.successors(id("F2"), false).contains(&id("F1")));
+    assert!(!p.queries.successors(id("F2"), false).contains(&id("R1")));
+    assert!(p.queries.successors(id("F2"), true).contains(&id("R1")));
+    assert!(p.queries.predecessors(id("R1"), true).contains(&id("F2")));
+    assert_eq!(p.queries.simultaneous(id("W1")), vec![id("H1"), id("H2")]);
+}
+
+#[test]
+fn a_turned_part_and_set_up_get_the_same_plan() {
+    let rules = RuleSet::default_rules();
+    for name in ["rib_grid_panel", "c_frame", "flange_cutouts"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join(format!("fixtures/recognition/{name}.step"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let (r, t) = common::rigid_motion(5);
+        let (turned, _) = common::turned_step(&text, &r, &t);
+        let up = r * nalgebra::Vector3::z();
+        let a = plan_text(&text, [0.0, 0.0, 1.0], &rules);
+        let b = plan_text(&turned, [up.x, up.y, up.z], &rules);
+        assert_eq!(a.sequence, b.sequence, "{name}");
+        assert_eq!(a.rejected, b.rejected, "{name}");
+        assert_eq!(a.order, b.order, "{name}");
+    }
+}
