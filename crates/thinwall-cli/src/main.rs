@@ -65,6 +65,9 @@ enum Command {
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
     },
+    /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
+    /// step-approach bending model (docs/PLANNING.md).
+    SizeWall(SizeWallArgs),
     /// Classify machining-feature volumes (pocket, slot, step, …) by shape
     /// and by which faces touch the part or volumes not removed before them.
     Classify {
@@ -107,6 +110,130 @@ enum MachineArg {
     ThreeAxis,
     #[value(name = "5-axis")]
     FiveAxis,
+}
+
+/// `size-wall`: the wall and every model parameter (App. A.2 defaults).
+#[derive(clap::Args)]
+struct SizeWallArgs {
+    /// Wall length, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    length: f64,
+    /// Wall thickness, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    thickness: f64,
+    /// Wall height, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    height: f64,
+    /// Peripheral (ribs, flanges, walls) or face milling (webs).
+    #[arg(long, value_enum, default_value = "peripheral")]
+    milling: MillingArg,
+    /// Preferred tool diameter, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    tool_diameter: Option<f64>,
+    /// Largest milling force, N.
+    #[arg(long, allow_hyphen_values = true)]
+    force: Option<f64>,
+    /// Young's modulus, N/mm².
+    #[arg(long, allow_hyphen_values = true)]
+    youngs_modulus: Option<f64>,
+    /// Allowed deflection, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    allowed_deflection: Option<f64>,
+    /// Effective length over wall height.
+    #[arg(long, allow_hyphen_values = true)]
+    effective_length_factor: Option<f64>,
+    /// Initial H_RF / h_RF.
+    #[arg(long, allow_hyphen_values = true)]
+    initial_height_ratio: Option<f64>,
+    /// Vibration re-machining zone over the tool diameter.
+    #[arg(long, allow_hyphen_values = true)]
+    zone_per_diameter: Option<f64>,
+    /// Peripheral: finishing width of cut; face: finishing depth of cut, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    finishing_width: Option<f64>,
+    /// Peripheral: roughing stepover over D; face: roughing depth, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    roughing_step: Option<f64>,
+    /// One cut of a height, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    cut_height: Option<f64>,
+    /// Initial number of cuts in h_RF.
+    #[arg(long)]
+    initial_cuts: Option<u32>,
+    /// Initial number of roughing steps in B_RF.
+    #[arg(long)]
+    initial_width_steps: Option<u32>,
+    /// On walls higher than 4·h: largest H_RF / h_RF.
+    #[arg(long, allow_hyphen_values = true)]
+    tall_wall_max_ratio: Option<f64>,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "json")]
+    format: Format,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum MillingArg {
+    Peripheral,
+    Face,
+}
+
+fn size_wall_command(a: SizeWallArgs) -> Result<(), Failure> {
+    use thinwall_plan::sizing::{size_wall, Milling, SizingParameters, WallDimensions};
+    let milling = match a.milling {
+        MillingArg::Peripheral => Milling::Peripheral,
+        MillingArg::Face => Milling::Face,
+    };
+    let mut p = SizingParameters::defaults(milling);
+    if let Some(d) = a.tool_diameter {
+        p.tool_diameter_mm = d;
+        if milling == Milling::Face {
+            p.cut_height_mm = 0.5 * d + 1.0;
+        }
+    }
+    let set = |slot: &mut f64, v: Option<f64>| {
+        if let Some(v) = v {
+            *slot = v;
+        }
+    };
+    set(&mut p.force_n, a.force);
+    set(&mut p.youngs_modulus_n_mm2, a.youngs_modulus);
+    set(&mut p.allowed_deflection_mm, a.allowed_deflection);
+    set(&mut p.effective_length_factor, a.effective_length_factor);
+    set(&mut p.initial_height_ratio, a.initial_height_ratio);
+    set(&mut p.zone_per_diameter, a.zone_per_diameter);
+    set(&mut p.finishing_width_mm, a.finishing_width);
+    set(&mut p.roughing_step, a.roughing_step);
+    set(&mut p.cut_height_mm, a.cut_height);
+    set(&mut p.tall_wall_max_ratio, a.tall_wall_max_ratio);
+    if let Some(n) = a.initial_cuts {
+        p.initial_cuts = n;
+    }
+    if let Some(n) = a.initial_width_steps {
+        p.initial_width_steps = n;
+    }
+    let w = WallDimensions {
+        length: a.length,
+        thickness: a.thickness,
+        height: a.height,
+    };
+    let sizes = size_wall(&w, &p).map_err(|e| Failure::Usage(e.to_string()))?;
+    write_out(&match a.format {
+        Format::Json => serde_json::to_string_pretty(&sizes).expect("sizes serialise") + "\n",
+        Format::Text => {
+            let mut s = format!(
+                "wall {} x {} x {} mm, {:?} milling: {}\n  B_RF {} mm, h_RF {} mm, H_RF {} mm, deflection {:.4} mm (allowed {})\n  iteration:\n",
+                w.length, w.thickness, w.height, sizes.milling, sizes.note, sizes.b, sizes.h, sizes.big_h,
+                sizes.deflection_mm, p.allowed_deflection_mm
+            );
+            for st in &sizes.trace {
+                s += &format!(
+                    "    B {:>6.2}  h {:>6.2}  H {:>6.2}  deflection {:.4}  {}\n",
+                    st.b, st.h, st.big_h, st.deflection_mm, st.action
+                );
+            }
+            s
+        }
+    })
 }
 
 fn plan_command(
@@ -217,6 +344,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             rules,
             format,
         } => plan_command(part, flags, rules, format),
+        Command::SizeWall(args) => size_wall_command(args),
         Command::Inspect { part, format } => {
             let (model, read) = thinwall_step::read_file(&part)?;
             let graph = AdjacencyGraph::build(&model, &model.tolerances());

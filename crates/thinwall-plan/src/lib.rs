@@ -8,10 +8,12 @@
 pub mod rules;
 pub mod scene;
 pub mod sequence;
+pub mod sizing;
 
 pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
 pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
+pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
 
 use serde::Serialize;
 use thinwall_analysis::{FeatureId, StiffnessKind};
@@ -50,9 +52,64 @@ pub struct Plan {
     pub rejected: Vec<Rejected>,
     /// A valid order, level by level.
     pub order: Vec<Vec<FeatureId>>,
+    /// Every thin wall's machining-feature sizes (webs face milled, the
+    /// others peripheral), with the recognition's force, material and
+    /// tool.
+    pub walls: Vec<WallPlan>,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,
+}
+
+/// A thin wall's sizes.
+#[derive(Clone, Debug, Serialize)]
+pub struct WallPlan {
+    pub id: FeatureId,
+    pub kind: StiffnessKind,
+    #[serde(flatten)]
+    pub sizes: Sizes,
+}
+
+/// The sizing parameters of a wall milled `milling` under the
+/// recognition's settings (force, material, deflection, tool).
+pub fn sizing_parameters(milling: Milling, cfg: &thinwall_recognize::Config) -> SizingParameters {
+    let mut p = SizingParameters::defaults(milling);
+    p.force_n = cfg.thinness.force_n;
+    p.youngs_modulus_n_mm2 = cfg.thinness.youngs_modulus_n_mm2;
+    p.allowed_deflection_mm = cfg.thinness.allowed_deflection_mm;
+    p.effective_length_factor = cfg.thinness.effective_length_factor;
+    p.tool_diameter_mm = cfg.thresholds.preferred_tool_diameter_mm;
+    if milling == Milling::Face {
+        p.cut_height_mm = 0.5 * p.tool_diameter_mm + 1.0;
+    }
+    p
+}
+
+/// Sizes for every thin wall with a length, thickness and height.
+fn wall_plans(out: &Outcome) -> Vec<WallPlan> {
+    out.recognition
+        .features
+        .iter()
+        .filter(|f| f.kind.is_wall() && f.thin == Some(true))
+        .filter_map(|f| {
+            let w = WallDimensions {
+                length: f.length?,
+                thickness: f.thickness?,
+                height: f.height?,
+            };
+            let milling = if f.kind == StiffnessKind::Web {
+                Milling::Face
+            } else {
+                Milling::Peripheral
+            };
+            let sizes = size_wall(&w, &sizing_parameters(milling, &out.request.config)).ok()?;
+            Some(WallPlan {
+                id: f.id,
+                kind: f.kind,
+                sizes,
+            })
+        })
+        .collect()
 }
 
 /// Plan the pipeline's outcome on `part` with `rules`.
@@ -81,6 +138,7 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
         sequence: seq.constraints.clone(),
         rejected: seq.rejected.clone(),
         order: seq.order.clone(),
+        walls: wall_plans(out),
         queries: seq,
     }
 }
@@ -111,6 +169,21 @@ impl Plan {
         let _ = writeln!(s, "sequence constraints: {}", self.sequence.len());
         for c in &self.sequence {
             let _ = writeln!(s, "  {}", sequence::describe(c));
+        }
+        let _ = writeln!(s, "thin walls: {}", self.walls.len());
+        for w in &self.walls {
+            let _ = writeln!(
+                s,
+                "  {:<5}{:<8}{:<11} B_RF {:>6.2}  h_RF {:>6.2}  H_RF {:>6.2}  deflection {:.4}  {}",
+                w.id,
+                w.kind,
+                format!("{:?}", w.sizes.milling).to_lowercase(),
+                w.sizes.b,
+                w.sizes.h,
+                w.sizes.big_h,
+                w.sizes.deflection_mm,
+                w.sizes.note
+            );
         }
         let _ = writeln!(s, "rejected candidates: {}", self.rejected.len());
         for r in &self.rejected {
