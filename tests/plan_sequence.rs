@@ -98,6 +98,21 @@ fn default_rules_give_an_acyclic_top_down_plan_on_every_part() {
                 );
             }
         }
+        // Every thin wall has sizes; a part with none gets none (an honest
+        // empty list, not an error).
+        let thin = p
+            .stiffness_features
+            .iter()
+            .filter(|f| f.thin == Some(true) && f.kind.is_wall())
+            .count();
+        assert!(p.walls.len() <= thin, "{name}");
+        if name.contains("thick_block") {
+            assert!(
+                p.walls.is_empty(),
+                "{name}: {:?}",
+                p.walls.iter().map(|w| w.id).collect::<Vec<_>>()
+            );
+        }
         checked += 1;
     }
     assert!(checked >= 20, "{checked} parts");

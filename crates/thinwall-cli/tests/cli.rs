@@ -400,6 +400,8 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
         "classification",
         json_of(classify_stacked().args(["--before", "0:1"])),
     ));
+    outputs.push(("plan", of(&["plan"], "recognition/rib_grid_panel.step")));
+    outputs.push(("plan", of(&["plan"], "recognition/c_frame.step")));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
         assert!(problems.is_empty(), "{problems:#?}");
@@ -513,4 +515,71 @@ fn verbose_shows_stage_times_and_every_warning() {
         .output()
         .unwrap();
     assert!(quiet.stderr.is_empty());
+}
+
+#[test]
+fn plan_and_size_wall_outputs_and_exit_codes() {
+    let part = fixture("recognition/c_frame.step");
+    let v = json_of(bin().arg("plan").arg(&part));
+    assert!(!v["sequence"].as_array().unwrap().is_empty());
+    assert!(!v["walls"].as_array().unwrap().is_empty());
+    let text = bin()
+        .args(["plan", "--format", "text"])
+        .arg(&part)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains("order (") && text.contains("rejected candidates"),
+        "{text}"
+    );
+    // A malformed rule file: exit 2, naming the file, the rule and the line.
+    let dir = std::env::temp_dir().join(format!("tw-plan-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        "[[rule]]\nname = \"x\"\npriority = 1\nfirst = [\"girder\"]\nsecond = [\"web\"]\nrelation = \"before\"\n",
+    )
+    .unwrap();
+    let out = bin()
+        .arg("plan")
+        .arg(&part)
+        .arg("--rules")
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("bad.toml:1: rule 'x'") && err.contains("girder"),
+        "{err}"
+    );
+    let out = bin().args(["plan", "/no/such.step"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    // size-wall: the contract's keys; bad sizes are usage errors.
+    let v = json_of(bin().args([
+        "size-wall",
+        "--length",
+        "120",
+        "--thickness",
+        "1",
+        "--height",
+        "72",
+    ]));
+    assert_eq!(
+        (v["B_RF"].as_f64(), v["h_RF"].as_f64(), v["H_RF"].as_f64()),
+        (Some(11.0), Some(12.0), Some(36.0))
+    );
+    assert!(v["trace"].as_array().unwrap().len() >= 3);
+    assert_eq!(v["parameters"]["allowed_deflection_mm"], 0.01);
+    for args in [
+        ["--length", "0", "--thickness", "1", "--height", "72"],
+        ["--length", "120", "--thickness", "-1", "--height", "72"],
+        ["--length", "120", "--thickness", "x", "--height", "72"],
+    ] {
+        let out = bin().arg("size-wall").args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }
