@@ -126,6 +126,28 @@ int main(int argc, char **argv) {
     }
     tw_result_free(res);
 
+    /* The plan: sequence constraints from the shipped rules. */
+    tw_plan *plan = NULL;
+    st = tw_plan_part(part, NULL, NULL, &plan);
+    failures += check(st == TW_OK && plan != NULL, "plan made");
+    if (plan) {
+        size_t ns = tw_plan_sequence_count(plan);
+        printf("sequence: %zu\n", ns);
+        for (size_t i = 0; i < ns; i++) {
+            const char *a = NULL, *b = NULL;
+            tw_relation r;
+            failures += check(tw_plan_sequence_pair(plan, i, &a, &b, &r) == TW_OK, "constraint read");
+            printf("  %s %s %s (%s)\n", a, r == TW_RELATION_BEFORE ? "before" : "with", b,
+                   tw_plan_sequence_rule(plan, i));
+        }
+        failures += check(tw_plan_sequence_pair(plan, ns, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
+                          "constraint past the end is out of range");
+        tw_plan_free(plan);
+    }
+    tw_plan *bad = NULL;
+    failures += check(tw_plan_part(part, NULL, "[[rule]]\nname = 1\n", &bad) == TW_ERR_INVALID_CONFIG && bad == NULL,
+                      "a bad rule text is an invalid config");
+
     /* Optional: classify volumes given after the part (removed in order). */
     if (argc > 2) {
         size_t nv = (size_t)(argc - 2);

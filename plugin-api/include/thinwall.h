@@ -30,6 +30,14 @@ typedef enum tw_connection_kind {
   TW_CONNECTION_CROSSING = 1,
 } tw_connection_kind;
 
+// The relation of a sequence constraint.
+typedef enum tw_relation {
+  // `before` is machined before `after`.
+  TW_RELATION_BEFORE = 0,
+  // The two are machined together.
+  TW_RELATION_SIMULTANEOUS = 1,
+} tw_relation;
+
 // What a call did. Values are never reused for another meaning.
 typedef enum tw_status {
   // Success.
@@ -80,6 +88,10 @@ typedef struct tw_options tw_options;
 
 // A part read from STEP (opaque). Immutable; safe to share between threads.
 typedef struct tw_part tw_part;
+
+// A plan (opaque). Immutable; safe to share between threads. Strings it
+// returns live as long as it does.
+typedef struct tw_plan tw_plan;
 
 // A recognition result (opaque). Immutable; safe to share between threads.
 // Strings it returns live as long as it does.
@@ -190,6 +202,39 @@ size_t tw_part_face_count(const struct tw_part *part);
 
 // Free a part. NULL is allowed.
 void tw_part_free(struct tw_part *part);
+
+// Plan the part: recognition with `opt` (NULL for the defaults), then the
+// sequence with `rules_toml` (a rule file's text, docs/PLANNING.md; NULL
+// for the shipped rules). A bad rule text is `TW_ERR_INVALID_CONFIG`, its
+// message naming the rule and the line. On success `*out` owns a plan to
+// free with `tw_plan_free`; on failure `*out` is NULL.
+enum tw_status tw_plan_part(const struct tw_part *part,
+                            const struct tw_options *opt,
+                            const char *rules_toml,
+                            struct tw_plan **out);
+
+// Free a plan. NULL is allowed.
+void tw_plan_free(struct tw_plan *plan);
+
+// The plan as JSON (`thinwall/plan/1`, as the CLI prints it).
+// `*out_json` is a new string to free with `tw_string_free`.
+enum tw_status tw_plan_to_json(const struct tw_plan *plan, char **out_json);
+
+// Number of sequence constraints in force (0 for NULL).
+size_t tw_plan_sequence_count(const struct tw_plan *plan);
+
+// Constraint `i`: the feature ids (valid while `plan` lives) and the
+// relation. Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the
+// count.
+enum tw_status tw_plan_sequence_pair(const struct tw_plan *plan,
+                                     size_t i,
+                                     const char **before,
+                                     const char **after,
+                                     enum tw_relation *relation);
+
+// The rule that gave constraint `i` (valid while `plan` lives); NULL out
+// of range.
+const char *tw_plan_sequence_rule(const struct tw_plan *plan, size_t i);
 
 // Recognize stiffness features and their connections. `opt` may be NULL
 // for the defaults. On success `*out` owns a result to free with

@@ -12,12 +12,14 @@ mod classify;
 mod error;
 mod options;
 mod part;
+mod plan;
 mod result;
 
 pub use classify::*;
 pub use error::{tw_last_error_message, tw_status};
 pub use options::*;
 pub use part::*;
+pub use plan::*;
 pub use result::*;
 
 use std::ffi::{c_char, CStr};

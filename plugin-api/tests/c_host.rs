@@ -146,6 +146,10 @@ fn c_host_compiles_runs_and_reads_results() {
         "{stdout}"
     );
     assert!(
+        stdout.contains("sequence: ") && stdout.contains("(flange-before-its-wall)"),
+        "plan printed: {stdout}"
+    );
+    assert!(
         stdout.contains(" x ") && stdout.contains(" -> "),
         "connections printed: {stdout}"
     );

@@ -1,0 +1,147 @@
+//! `tw_plan`: the stiffness-feature sequence of a part (issue 13), with
+//! accessors for its constraints and the same JSON as `thinwall plan`.
+
+use crate::error::{
+    construct, count, cstring, free, guard, json_into, null, pipeline_failure, string_at, tw_status,
+};
+use crate::options::tw_options;
+use crate::part::tw_part;
+use std::ffi::{c_char, CStr, CString};
+use thinwall_plan::{Plan, Relation, RuleSet};
+
+/// A plan (opaque). Immutable; safe to share between threads. Strings it
+/// returns live as long as it does.
+pub struct tw_plan {
+    plan: Plan,
+    /// Per constraint: the feature machined first (or with the other), the
+    /// other, the relation.
+    pairs: Vec<(CString, CString, tw_relation)>,
+    /// Per constraint: the rule that gave it.
+    rules: Vec<CString>,
+}
+
+/// The relation of a sequence constraint.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum tw_relation {
+    /// `before` is machined before `after`.
+    TW_RELATION_BEFORE = 0,
+    /// The two are machined together.
+    TW_RELATION_SIMULTANEOUS = 1,
+}
+
+/// Plan the part: recognition with `opt` (NULL for the defaults), then the
+/// sequence with `rules_toml` (a rule file's text, docs/PLANNING.md; NULL
+/// for the shipped rules). A bad rule text is `TW_ERR_INVALID_CONFIG`, its
+/// message naming the rule and the line. On success `*out` owns a plan to
+/// free with `tw_plan_free`; on failure `*out` is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_part(
+    part: *const tw_part,
+    opt: *const tw_options,
+    rules_toml: *const c_char,
+    out: *mut *mut tw_plan,
+) -> tw_status {
+    construct(out, || {
+        if part.is_null() {
+            return Err(null("part"));
+        }
+        let rules = if rules_toml.is_null() {
+            RuleSet::default_rules()
+        } else {
+            let text = CStr::from_ptr(rules_toml).to_str().map_err(|_| {
+                (
+                    tw_status::TW_ERR_INVALID_ARGUMENT,
+                    "rules_toml is not UTF-8".to_string(),
+                )
+            })?;
+            RuleSet::from_toml(text, "rules")
+                .map_err(|e| (tw_status::TW_ERR_INVALID_CONFIG, e.to_string()))?
+        };
+        let defaults = tw_options::default();
+        let o = if opt.is_null() { &defaults } else { &*opt };
+        let p = &*part;
+        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &o.request)
+            .map_err(pipeline_failure)?;
+        let plan = thinwall_plan::plan(&p.name, &p.part, &outcome, &rules);
+        let pairs = plan
+            .sequence
+            .iter()
+            .map(|c| {
+                let r = match c.relation {
+                    Relation::Before => tw_relation::TW_RELATION_BEFORE,
+                    Relation::Simultaneous => tw_relation::TW_RELATION_SIMULTANEOUS,
+                };
+                (
+                    cstring(&c.before.to_string()),
+                    cstring(&c.after.to_string()),
+                    r,
+                )
+            })
+            .collect();
+        let rules = plan.sequence.iter().map(|c| cstring(&c.rule)).collect();
+        Ok(tw_plan { plan, pairs, rules })
+    })
+}
+
+/// Free a plan. NULL is allowed.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_free(plan: *mut tw_plan) {
+    free(plan)
+}
+
+/// The plan as JSON (`thinwall/plan/1`, as the CLI prints it).
+/// `*out_json` is a new string to free with `tw_string_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_to_json(
+    plan: *const tw_plan,
+    out_json: *mut *mut c_char,
+) -> tw_status {
+    json_into(plan, out_json, |p| p.plan.to_json())
+}
+
+/// Number of sequence constraints in force (0 for NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_sequence_count(plan: *const tw_plan) -> usize {
+    count(plan, |p| p.pairs.len())
+}
+
+/// Constraint `i`: the feature ids (valid while `plan` lives) and the
+/// relation. Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the
+/// count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_sequence_pair(
+    plan: *const tw_plan,
+    i: usize,
+    before: *mut *const c_char,
+    after: *mut *const c_char,
+    relation: *mut tw_relation,
+) -> tw_status {
+    guard(|| {
+        if plan.is_null() {
+            return Err(null("plan"));
+        }
+        let p = &*plan;
+        let (b, a, r) = p.pairs.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("constraint {i} out of range ({} in force)", p.pairs.len()),
+        ))?;
+        if !before.is_null() {
+            *before = b.as_ptr();
+        }
+        if !after.is_null() {
+            *after = a.as_ptr();
+        }
+        if !relation.is_null() {
+            *relation = *r;
+        }
+        Ok(())
+    })
+}
+
+/// The rule that gave constraint `i` (valid while `plan` lives); NULL out
+/// of range.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_sequence_rule(plan: *const tw_plan, i: usize) -> *const c_char {
+    string_at(plan, |p| p.rules.get(i))
+}
