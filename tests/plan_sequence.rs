@@ -174,6 +174,21 @@ fn the_higher_rule_wins_and_swapping_priorities_flips_it() {
 }
 
 #[test]
+fn goes_first_second_is_the_same_as_swapping_the_kinds() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/recognition/rib_grid_panel.step");
+    let swapped = RuleSet::from_toml(
+        "[[rule]]\nname = \"w\"\npriority = 1\nfirst = [\"web\"]\nsecond = [\"flange\"]\nconnection = \"second_on_first\"\nrelation = \"before\"\ngoes_first = \"second\"\n",
+        "s.toml",
+    )
+    .unwrap();
+    let p = plan_file(&path, &swapped);
+    let q = plan_file(&path, &opposite_rules(2, 1));
+    let pairs = |p: &Plan| p.sequence.iter().map(|c| (c.before, c.after)).collect::<Vec<_>>();
+    assert_eq!(pairs(&p), pairs(&q));
+    assert!(p.sequence.iter().all(|c| c.before.kind == StiffnessKind::Flange));
+}
+
+#[test]
 fn redundancy_and_a_would_be_cycle_are_rejected_with_their_chains() {
     let rules = RuleSet::default_rules();
     let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/recognition");

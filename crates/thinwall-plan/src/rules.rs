@@ -19,6 +19,15 @@ pub enum Relation {
     Simultaneous,
 }
 
+/// Which of the two goes first in a `before` rule.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GoesFirst {
+    #[default]
+    First,
+    Second,
+}
+
 /// How the two features must be connected (DOMAIN.md §3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -76,6 +85,7 @@ struct RawRule {
     orientation_tolerance_deg: Option<f64>,
     max_in_row: Option<usize>,
     relation: Relation,
+    goes_first: Option<GoesFirst>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -104,6 +114,8 @@ pub struct Rule {
     /// of the same orientation.
     pub max_in_row: Option<usize>,
     pub relation: Relation,
+    /// With `before`: which of the two goes first (`first` by default).
+    pub goes_first: GoesFirst,
     /// Line of the rule in its file.
     pub line: usize,
 }
@@ -275,6 +287,9 @@ fn check(raw: RawRule, line: usize) -> Result<Rule, (String, String)> {
         }
         _ => {}
     }
+    if raw.goes_first.is_some() && raw.relation == Relation::Simultaneous {
+        return fail("`goes_first` means nothing for a simultaneous rule".into());
+    }
     if on_wall && raw.height == HeightCondition::Level {
         return fail("a feature on or in another is never level with it and connected so (height = \"level\" with a base-leaf connection)".into());
     }
@@ -298,6 +313,7 @@ fn check(raw: RawRule, line: usize) -> Result<Rule, (String, String)> {
         orientation_tolerance_deg: orient_tol,
         max_in_row: raw.max_in_row,
         relation: raw.relation,
+        goes_first: raw.goes_first.unwrap_or_default(),
         line,
     })
 }

@@ -11,7 +11,7 @@
 //! `b`'s.
 
 use crate::rules::{
-    ConnectionCondition, HeightCondition, OrientationCondition, Relation, Rule, RuleSet,
+    ConnectionCondition, GoesFirst, HeightCondition, OrientationCondition, Relation, Rule, RuleSet,
 };
 use crate::scene::{Fact, Scene};
 use petgraph::algo::{astar, has_path_connecting, toposort};
@@ -137,10 +137,14 @@ fn phase_one<'r>(scene: &Scene, rules: &'r RuleSet) -> Vec<Candidate<'r>> {
                 if rule.relation == Relation::Simultaneous && twin {
                     continue;
                 }
+                let (first, second) = match (rule.relation, rule.goes_first) {
+                    (Relation::Before, GoesFirst::Second) => (j, i),
+                    _ => (i, j),
+                };
                 found.push(Candidate {
                     rule,
-                    first: i,
-                    second: j,
+                    first,
+                    second,
                 });
             }
         }
