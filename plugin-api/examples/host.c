@@ -127,8 +127,8 @@ int main(int argc, char **argv) {
     tw_result_free(res);
 
     /* The plan: sequence constraints from the shipped rules. */
-    tw_plan *plan = NULL;
-    st = tw_plan_part(part, NULL, NULL, &plan);
+    tw_plan_result *plan = NULL;
+    st = tw_plan(part, NULL, NULL, &plan);
     failures += check(st == TW_OK && plan != NULL, "plan made");
     if (plan) {
         size_t ns = tw_plan_sequence_count(plan);
@@ -144,8 +144,8 @@ int main(int argc, char **argv) {
                           "constraint past the end is out of range");
         tw_plan_free(plan);
     }
-    tw_plan *bad = NULL;
-    failures += check(tw_plan_part(part, NULL, "[[rule]]\nname = 1\n", &bad) == TW_ERR_INVALID_CONFIG && bad == NULL,
+    tw_plan_result *bad = NULL;
+    failures += check(tw_plan(part, NULL, "[[rule]]\nname = 1\n", &bad) == TW_ERR_INVALID_CONFIG && bad == NULL,
                       "a bad rule text is an invalid config");
 
     /* Optional: classify volumes given after the part (removed in order). */

@@ -91,7 +91,7 @@ typedef struct tw_part tw_part;
 
 // A plan (opaque). Immutable; safe to share between threads. Strings it
 // returns live as long as it does.
-typedef struct tw_plan tw_plan;
+typedef struct tw_plan_result tw_plan_result;
 
 // A recognition result (opaque). Immutable; safe to share between threads.
 // Strings it returns live as long as it does.
@@ -208,25 +208,25 @@ void tw_part_free(struct tw_part *part);
 // for the shipped rules). A bad rule text is `TW_ERR_INVALID_CONFIG`, its
 // message naming the rule and the line. On success `*out` owns a plan to
 // free with `tw_plan_free`; on failure `*out` is NULL.
-enum tw_status tw_plan_part(const struct tw_part *part,
-                            const struct tw_options *opt,
-                            const char *rules_toml,
-                            struct tw_plan **out);
+enum tw_status tw_plan(const struct tw_part *part,
+                       const struct tw_options *opt,
+                       const char *rules_toml,
+                       struct tw_plan_result **out);
 
 // Free a plan. NULL is allowed.
-void tw_plan_free(struct tw_plan *plan);
+void tw_plan_free(struct tw_plan_result *plan);
 
 // The plan as JSON (`thinwall/plan/1`, as the CLI prints it).
 // `*out_json` is a new string to free with `tw_string_free`.
-enum tw_status tw_plan_to_json(const struct tw_plan *plan, char **out_json);
+enum tw_status tw_plan_to_json(const struct tw_plan_result *plan, char **out_json);
 
 // Number of sequence constraints in force (0 for NULL).
-size_t tw_plan_sequence_count(const struct tw_plan *plan);
+size_t tw_plan_sequence_count(const struct tw_plan_result *plan);
 
 // Constraint `i`: the feature ids (valid while `plan` lives) and the
 // relation. Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the
 // count.
-enum tw_status tw_plan_sequence_pair(const struct tw_plan *plan,
+enum tw_status tw_plan_sequence_pair(const struct tw_plan_result *plan,
                                      size_t i,
                                      const char **before,
                                      const char **after,
@@ -234,7 +234,7 @@ enum tw_status tw_plan_sequence_pair(const struct tw_plan *plan,
 
 // The rule that gave constraint `i` (valid while `plan` lives); NULL out
 // of range.
-const char *tw_plan_sequence_rule(const struct tw_plan *plan, size_t i);
+const char *tw_plan_sequence_rule(const struct tw_plan_result *plan, size_t i);
 
 // Recognize stiffness features and their connections. `opt` may be NULL
 // for the defaults. On success `*out` owns a result to free with

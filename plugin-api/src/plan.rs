@@ -11,7 +11,7 @@ use thinwall_plan::{Plan, Relation, RuleSet};
 
 /// A plan (opaque). Immutable; safe to share between threads. Strings it
 /// returns live as long as it does.
-pub struct tw_plan {
+pub struct tw_plan_result {
     plan: Plan,
     /// Per constraint: the feature machined first (or with the other), the
     /// other, the relation.
@@ -36,11 +36,11 @@ pub enum tw_relation {
 /// message naming the rule and the line. On success `*out` owns a plan to
 /// free with `tw_plan_free`; on failure `*out` is NULL.
 #[no_mangle]
-pub unsafe extern "C" fn tw_plan_part(
+pub unsafe extern "C" fn tw_plan(
     part: *const tw_part,
     opt: *const tw_options,
     rules_toml: *const c_char,
-    out: *mut *mut tw_plan,
+    out: *mut *mut tw_plan_result,
 ) -> tw_status {
     construct(out, || {
         if part.is_null() {
@@ -80,13 +80,13 @@ pub unsafe extern "C" fn tw_plan_part(
             })
             .collect();
         let rules = plan.sequence.iter().map(|c| cstring(&c.rule)).collect();
-        Ok(tw_plan { plan, pairs, rules })
+        Ok(tw_plan_result { plan, pairs, rules })
     })
 }
 
 /// Free a plan. NULL is allowed.
 #[no_mangle]
-pub unsafe extern "C" fn tw_plan_free(plan: *mut tw_plan) {
+pub unsafe extern "C" fn tw_plan_free(plan: *mut tw_plan_result) {
     free(plan)
 }
 
@@ -94,7 +94,7 @@ pub unsafe extern "C" fn tw_plan_free(plan: *mut tw_plan) {
 /// `*out_json` is a new string to free with `tw_string_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_plan_to_json(
-    plan: *const tw_plan,
+    plan: *const tw_plan_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
     json_into(plan, out_json, |p| p.plan.to_json())
@@ -102,7 +102,7 @@ pub unsafe extern "C" fn tw_plan_to_json(
 
 /// Number of sequence constraints in force (0 for NULL).
 #[no_mangle]
-pub unsafe extern "C" fn tw_plan_sequence_count(plan: *const tw_plan) -> usize {
+pub unsafe extern "C" fn tw_plan_sequence_count(plan: *const tw_plan_result) -> usize {
     count(plan, |p| p.pairs.len())
 }
 
@@ -111,7 +111,7 @@ pub unsafe extern "C" fn tw_plan_sequence_count(plan: *const tw_plan) -> usize {
 /// count.
 #[no_mangle]
 pub unsafe extern "C" fn tw_plan_sequence_pair(
-    plan: *const tw_plan,
+    plan: *const tw_plan_result,
     i: usize,
     before: *mut *const c_char,
     after: *mut *const c_char,
@@ -142,6 +142,9 @@ pub unsafe extern "C" fn tw_plan_sequence_pair(
 /// The rule that gave constraint `i` (valid while `plan` lives); NULL out
 /// of range.
 #[no_mangle]
-pub unsafe extern "C" fn tw_plan_sequence_rule(plan: *const tw_plan, i: usize) -> *const c_char {
+pub unsafe extern "C" fn tw_plan_sequence_rule(
+    plan: *const tw_plan_result,
+    i: usize,
+) -> *const c_char {
     string_at(plan, |p| p.rules.get(i))
 }
