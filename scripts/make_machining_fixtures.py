@@ -28,6 +28,10 @@ def main():
     write(casting, os.path.join(out, "boss_plate_casting.step"))
     # A blank 5 mm larger on every side, 2 below and 3 above.
     write(box(-5, -5, -2, 105, 65, 33), os.path.join(out, "boss_plate_blank.step"))
+    # Fokker test walls: a 120 x 1 rib, 48 and 72 high, on a 10 mm plate.
+    for height in (48, 72):
+        rib = fuse(box(0, 0, 0, 160, 60, 10), box(20, 29.5, 10, 140, 30.5, 10 + height))
+        write(rib, os.path.join(out, f"rib_{height}_on_plate.step"))
 
 
 if __name__ == "__main__":

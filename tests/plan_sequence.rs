@@ -257,3 +257,135 @@ fn a_turned_part_and_set_up_get_the_same_plan() {
         assert_eq!(a.order, b.order, "{name}");
     }
 }
+
+/// The number of a layer id (`V12` → 12).
+fn layer_number(id: &str) -> usize {
+    id[1..].parse().unwrap()
+}
+
+#[test]
+fn step_layers_follow_size_wall_on_the_fokker_ribs() {
+    let rules = RuleSet::default_rules();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/machining");
+    for (height, big) in [(48.0, 48.0), (72.0, 36.0)] {
+        let p = plan_file(&dir.join(format!("rib_{height}_on_plate.step")), &rules);
+        let sizes = thinwall_plan::size_wall(
+            &thinwall_plan::WallDimensions {
+                length: 120.0,
+                thickness: 1.0,
+                height,
+            },
+            &thinwall_plan::SizingParameters::defaults(thinwall_plan::Milling::Peripheral),
+        )
+        .unwrap();
+        assert_eq!(sizes.big_h, big);
+        let layers = &p.machining_features;
+        let large: Vec<f64> = layers
+            .iter()
+            .filter(|l| l.size_class == thinwall_plan::steps::SizeClass::Large)
+            .map(|l| l.height)
+            .collect();
+        let small: Vec<f64> = layers
+            .iter()
+            .filter(|l| l.size_class == thinwall_plan::steps::SizeClass::Small)
+            .map(|l| l.height)
+            .collect();
+        assert!(
+            large.iter().all(|&h| (h - sizes.big_h).abs() < 1e-6),
+            "{large:?}"
+        );
+        assert!(
+            small.iter().all(|&h| (h - sizes.h).abs() < 1e-6),
+            "{small:?}"
+        );
+        assert!((large.iter().sum::<f64>() - height).abs() < 1e-6);
+        assert!((small.iter().sum::<f64>() - height).abs() < 1e-6);
+        assert!(layers
+            .iter()
+            .all(|l| (l.width - sizes.b).abs() < 1e-9 && (l.length - 120.0).abs() < 1e-6));
+        // The large layer first, each small layer only once the large one
+        // beside it is down to its depth (fig. 4.1).
+        assert_eq!(layers[0].size_class, thinwall_plan::steps::SizeClass::Large);
+        for (i, l) in layers.iter().enumerate() {
+            if l.size_class == thinwall_plan::steps::SizeClass::Small {
+                let deepest_large = layers[..i]
+                    .iter()
+                    .filter(|x| x.size_class == thinwall_plan::steps::SizeClass::Large)
+                    .map(|x| x.from_foot[0])
+                    .fold(f64::INFINITY, f64::min);
+                assert!(l.from_foot[0] >= deepest_large - 1e-9, "{l:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn every_sized_wall_is_covered_on_both_sides_in_a_valid_order() {
+    let rules = RuleSet::default_rules();
+    for path in parts() {
+        let p = plan_file(&path, &rules);
+        let name = path.display().to_string();
+        for w in p
+            .walls
+            .iter()
+            .filter(|w| w.sizes.thin && w.kind != StiffnessKind::Web)
+        {
+            let height = w.sizes.wall.height;
+            for side in 0..2u8 {
+                let covered: f64 = p
+                    .machining_features
+                    .iter()
+                    .filter(|l| l.owner == w.id && l.side == side)
+                    .map(|l| l.height)
+                    .sum();
+                assert!(
+                    (covered - height).abs() < 1e-3 * height.max(1.0),
+                    "{name}: {} side {side}: {covered} of {height}",
+                    w.id
+                );
+            }
+        }
+        for c in &p.feature_sequence {
+            assert!(
+                layer_number(&c.before) < layer_number(&c.after),
+                "{name}: {c:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_turned_part_gets_the_same_layers() {
+    let rules = RuleSet::default_rules();
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fixtures/recognition/flange_cutouts.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (r, t) = common::rigid_motion(9);
+    let (turned, _) = common::turned_step(&text, &r, &t);
+    let up = r * nalgebra::Vector3::z();
+    let a = plan_text(&text, [0.0, 0.0, 1.0], &rules);
+    let b = plan_text(&turned, [up.x, up.y, up.z], &rules);
+    assert!(!a.machining_features.is_empty());
+    let key = |p: &Plan| -> Vec<String> {
+        p.machining_features
+            .iter()
+            .map(|l| {
+                format!(
+                    "{} {} {} {:?} {} {:.6} {:.6} {:.6} {:.6} z {:.6}",
+                    l.id,
+                    l.owner,
+                    l.side,
+                    l.size_class,
+                    l.step,
+                    l.from_foot[0],
+                    l.from_foot[1],
+                    l.width,
+                    l.length,
+                    l.z_range[1] - l.z_range[0]
+                )
+            })
+            .collect()
+    };
+    assert_eq!(key(&a), key(&b));
+    assert_eq!(a.feature_sequence, b.feature_sequence);
+}

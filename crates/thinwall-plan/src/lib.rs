@@ -9,6 +9,7 @@ pub mod rules;
 pub mod scene;
 pub mod sequence;
 pub mod sizing;
+pub mod steps;
 
 pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
@@ -56,9 +57,52 @@ pub struct Plan {
     /// others peripheral), with the recognition's force, material and
     /// tool.
     pub walls: Vec<WallPlan>,
+    /// The step approach's layers beside every peripherally milled thin
+    /// wall, in a valid order (issue 14, first part: boxes, no solids or
+    /// interference yet).
+    pub machining_features: Vec<steps::Layer>,
+    /// Between layers: each wall's steps in order, and a wall's last step
+    /// before the next wall's first where the stiffness sequence says so.
+    pub feature_sequence: Vec<LayerConstraint>,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,
+}
+
+/// A `before` relation between two layers and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LayerConstraint {
+    pub before: String,
+    pub after: String,
+    pub why: String,
+}
+
+/// Layer constraints: consecutive steps of one wall, and for every
+/// stiffness constraint `A before B` the last step of A before the first
+/// of B.
+fn layer_constraints(layers: &[steps::Layer], seq: &[Constraint]) -> Vec<LayerConstraint> {
+    let mut out = Vec::new();
+    for w in layers.windows(2) {
+        if w[0].owner == w[1].owner {
+            out.push(LayerConstraint {
+                before: w[0].id.clone(),
+                after: w[1].id.clone(),
+                why: format!("{} step approach", w[0].owner),
+            });
+        }
+    }
+    for c in seq.iter().filter(|c| c.relation == Relation::Before) {
+        let last = layers.iter().rev().find(|l| l.owner == c.before);
+        let first = layers.iter().find(|l| l.owner == c.after);
+        if let (Some(a), Some(b)) = (last, first) {
+            out.push(LayerConstraint {
+                before: a.id.clone(),
+                after: b.id.clone(),
+                why: sequence::describe(c),
+            });
+        }
+    }
+    out
 }
 
 /// A thin wall's sizes.
@@ -116,6 +160,9 @@ fn wall_plans(out: &Outcome) -> Vec<WallPlan> {
 pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
+    let walls = wall_plans(out);
+    let machining_features = steps::layers(out, &scene, &seq, &walls);
+    let feature_sequence = layer_constraints(&machining_features, &seq.constraints);
     Plan {
         schema: PLAN_SCHEMA.to_string(),
         thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -138,7 +185,9 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
         sequence: seq.constraints.clone(),
         rejected: seq.rejected.clone(),
         order: seq.order.clone(),
-        walls: wall_plans(out),
+        walls,
+        machining_features,
+        feature_sequence,
         queries: seq,
     }
 }
@@ -183,6 +232,23 @@ impl Plan {
                 w.sizes.big_h,
                 w.sizes.deflection_mm,
                 w.sizes.note
+            );
+        }
+        let _ = writeln!(s, "step-approach layers: {}", self.machining_features.len());
+        for l in &self.machining_features {
+            let _ = writeln!(
+                s,
+                "  {:<5}{:<5} step {:>2}  side {}  {:<5}  {:>7.2} .. {:>7.2} above the foot  ({:.2} x {:.2} x {:.2})",
+                l.id,
+                l.owner,
+                l.step,
+                l.side,
+                format!("{:?}", l.size_class).to_lowercase(),
+                l.from_foot[0],
+                l.from_foot[1],
+                l.length,
+                l.width,
+                l.height
             );
         }
         let _ = writeln!(s, "rejected candidates: {}", self.rejected.len());

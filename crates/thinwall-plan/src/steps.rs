@@ -1,0 +1,206 @@
+//! The step approach per thin wall (Popma §4.1.1, fig. 4.1; DOMAIN.md
+//! §5): the material beside a peripherally milled wall (rib, flange,
+//! wall) split along its height into layers, large ones (`H_RF`) on one
+//! side and small ones (`h_RF`) on the other, each `B_RF` wide, taken
+//! alternately so the wall is always supported below the cut: the first
+//! large layer, then the small layers down to its depth, then the next
+//! large layer, and so on to the foot.
+//!
+//! Which side gets the large layers (§5.2): the side facing up for a wall
+//! lying flat; otherwise the side with more stiffness features standing on
+//! it; on a tie, the side facing more up, then side 0.
+//!
+//! This is the first part of issue 14: layers as boxes in the wall's
+//! frame, their heights in the set-up, owners and the order within each
+//! wall and across walls. Solids, interference, bulk features and
+//! classification are still to come. Webs (face milling) get no layers
+//! yet.
+
+use crate::scene::Scene;
+use crate::sequence::Sequence;
+use crate::WallPlan;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_geom::{Point3, Vector3};
+use thinwall_pipeline::Outcome;
+
+/// Large or small layer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SizeClass {
+    Large,
+    Small,
+}
+
+/// One layer of a wall's step approach.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Layer {
+    /// `V1`, `V2`, … in plan order.
+    pub id: String,
+    /// The wall it helps create.
+    pub owner: FeatureId,
+    /// Which side of the owner (0 or 1, as the recognition's `sides`).
+    pub side: u8,
+    pub size_class: SizeClass,
+    /// Its place in its wall's sequence (1 = first), as fig. 4.1 numbers it.
+    pub step: usize,
+    /// Heights above the wall's foot along its height direction, mm.
+    pub from_foot: [f64; 2],
+    /// Lowest and highest point along the set-up's up, mm.
+    pub z_range: [f64; 2],
+    /// Width beside the wall, height, length, mm.
+    pub width: f64,
+    pub height: f64,
+    pub length: f64,
+    /// Its eight corners, mm.
+    pub corners: Vec<[f64; 3]>,
+}
+
+/// Layers of every sized thin wall, in an order that respects each wall's
+/// step sequence and the stiffness-feature sequence (a wall that comes
+/// later never starts before one that comes earlier ends).
+pub fn layers(out: &Outcome, scene: &Scene, seq: &Sequence, walls: &[WallPlan]) -> Vec<Layer> {
+    let up = Vector3::new(out.setup.up[0], out.setup.up[1], out.setup.up[2]).normalize();
+    let mut per_wall: BTreeMap<FeatureId, Vec<Layer>> = BTreeMap::new();
+    for w in walls
+        .iter()
+        .filter(|w| w.sizes.thin && w.kind != StiffnessKind::Web)
+    {
+        let Some(f) = out.recognition.feature(w.id) else {
+            continue;
+        };
+        let Some(g) = &f.geometry else { continue };
+        let side = large_side(out, scene, w.id, g, &up);
+        per_wall.insert(w.id, wall_layers(w, g, side, &up));
+    }
+    // Walls in the plan's order (level by level), then each wall's steps.
+    let mut ordered = Vec::new();
+    for level in &seq.order {
+        for id in level {
+            if let Some(ls) = per_wall.remove(id) {
+                ordered.extend(ls);
+            }
+        }
+    }
+    for (i, l) in ordered.iter_mut().enumerate() {
+        l.id = format!("V{}", i + 1);
+    }
+    ordered
+}
+
+/// The side (0 or 1) of the large layers (module docs).
+fn large_side(
+    out: &Outcome,
+    scene: &Scene,
+    id: FeatureId,
+    g: &thinwall_recognize::WallGeometry,
+    up: &Vector3,
+) -> u8 {
+    let n0 = g.frame.z;
+    if n0.dot(up).abs() > 1.0 - 1e-6 {
+        return if n0.dot(up) > 0.0 { 0 } else { 1 };
+    }
+    let mid = g.frame.origin - n0 * (0.5 * g.thickness);
+    let mut count = [0usize; 2];
+    for f in &out.recognition.features {
+        if scene.base.get(&f.id) != Some(&id) {
+            continue;
+        }
+        let Some(c) = f.geometry.as_ref().map(|h| h.frame.origin) else {
+            continue;
+        };
+        let s = (c - mid).dot(&n0);
+        count[usize::from(s < 0.0)] += 1;
+    }
+    match count[0].cmp(&count[1]) {
+        std::cmp::Ordering::Greater => 0,
+        std::cmp::Ordering::Less => 1,
+        std::cmp::Ordering::Equal if n0.dot(up) < -1e-9 => 1,
+        std::cmp::Ordering::Equal => 0,
+    }
+}
+
+/// A wall's layers in its own step order.
+fn wall_layers(
+    w: &WallPlan,
+    g: &thinwall_recognize::WallGeometry,
+    large: u8,
+    up: &Vector3,
+) -> Vec<Layer> {
+    let (b, h, big_h) = (w.sizes.b, w.sizes.h, w.sizes.big_h);
+    let hd = g.height_direction;
+    let ld = g.frame.z.cross(&hd).normalize();
+    // The region's extent along the height and length directions.
+    let outline = g.outline();
+    let along = |d: &Vector3| {
+        outline
+            .iter()
+            .map(|p| (p - g.frame.origin).dot(d))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            })
+    };
+    let ((_, top), (l0, l1)) = (along(&hd), along(&ld));
+    // The recognised height (foot to free edge), down from the free edge:
+    // the region may stop short of the foot where a fillet meets the base.
+    let wall_h = w.sizes.wall.height;
+    let foot = top - wall_h;
+    let mut out = Vec::new();
+    let mut step = 0;
+    let mut make = |side: u8, class: SizeClass, from: f64, to: f64| {
+        step += 1;
+        // Side 0 lies on frame.z's side of the wall, side 1 beyond the far face.
+        let (n0, n1) = if side == 0 {
+            (0.0, b)
+        } else {
+            (-g.thickness - b, -g.thickness)
+        };
+        let corner = |hh: f64, l: f64, n: f64| -> Point3 {
+            g.frame.origin + hd * (foot + hh) + ld * l + g.frame.z * n
+        };
+        let corners: Vec<Point3> = [from, to]
+            .iter()
+            .flat_map(|&hh| {
+                [l0, l1]
+                    .into_iter()
+                    .flat_map(move |l| [n0, n1].into_iter().map(move |n| (hh, l, n)))
+            })
+            .map(|(hh, l, n)| corner(hh, l, n))
+            .collect();
+        let zs: Vec<f64> = corners.iter().map(|p| p.coords.dot(up)).collect();
+        Layer {
+            id: String::new(),
+            owner: w.id,
+            side,
+            size_class: class,
+            step,
+            from_foot: [from, to],
+            z_range: [
+                zs.iter().copied().fold(f64::INFINITY, f64::min),
+                zs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            ],
+            width: b,
+            height: to - from,
+            length: l1 - l0,
+            corners: corners.iter().map(|p| [p.x, p.y, p.z]).collect(),
+        }
+    };
+    let small = 1 - large;
+    // From the top: a large layer, then the small ones down to its depth.
+    let mut large_bottom = wall_h;
+    let mut small_bottom = wall_h;
+    while large_bottom > 1e-9 {
+        let to = large_bottom;
+        let from = (large_bottom - big_h).max(0.0);
+        out.push(make(large, SizeClass::Large, from, to));
+        large_bottom = from;
+        while small_bottom > large_bottom + 1e-9 {
+            let to = small_bottom;
+            let from = (small_bottom - h).max(large_bottom);
+            out.push(make(small, SizeClass::Small, from, to));
+            small_bottom = from;
+        }
+    }
+    out
+}
