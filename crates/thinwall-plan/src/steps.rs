@@ -159,15 +159,14 @@ fn wall_layers(
         let corner = |hh: f64, l: f64, n: f64| -> Point3 {
             g.frame.origin + hd * (foot + hh) + ld * l + g.frame.z * n
         };
-        let corners: Vec<Point3> = [from, to]
-            .iter()
-            .flat_map(|&hh| {
-                [l0, l1]
-                    .into_iter()
-                    .flat_map(move |l| [n0, n1].into_iter().map(move |n| (hh, l, n)))
-            })
-            .map(|(hh, l, n)| corner(hh, l, n))
-            .collect();
+        let mut corners: Vec<Point3> = Vec::with_capacity(8);
+        for hh in [from, to] {
+            for l in [l0, l1] {
+                for n in [n0, n1] {
+                    corners.push(corner(hh, l, n));
+                }
+            }
+        }
         let zs: Vec<f64> = corners.iter().map(|p| p.coords.dot(up)).collect();
         Layer {
             id: String::new(),
