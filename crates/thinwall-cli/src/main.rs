@@ -61,6 +61,9 @@ enum Command {
         /// A TOML file of sequence rules (default: the shipped five).
         #[arg(long)]
         rules: Option<PathBuf>,
+        /// Write each step-approach layer as a STEP solid (`V1.step`, …) here.
+        #[arg(long)]
+        volumes_dir: Option<PathBuf>,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
@@ -240,6 +243,7 @@ fn plan_command(
     part: PathBuf,
     flags: RecognizeFlags,
     rules: Option<PathBuf>,
+    volumes_dir: Option<PathBuf>,
     format: Format,
 ) -> Result<(), Failure> {
     let rules = match &rules {
@@ -256,6 +260,15 @@ fn plan_command(
     let outcome = thinwall_pipeline::run(&model, None, &request)
         .map_err(|e| Failure::from(e).in_file(&part))?;
     let plan = thinwall_plan::plan(&part.display().to_string(), &model, &outcome, &rules);
+    if let Some(dir) = &volumes_dir {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
+        for l in &plan.machining_features {
+            let path = dir.join(format!("{}.step", l.id));
+            std::fs::write(&path, thinwall_plan::volumes::layer_step(l))
+                .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+        }
+    }
     write_out(&match format {
         Format::Text => plan.to_text(),
         Format::Json => plan.to_json(),
@@ -342,8 +355,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             part,
             flags,
             rules,
+            volumes_dir,
             format,
-        } => plan_command(part, flags, rules, format),
+        } => plan_command(part, flags, rules, volumes_dir, format),
         Command::SizeWall(args) => size_wall_command(args),
         Command::Inspect { part, format } => {
             let (model, read) = thinwall_step::read_file(&part)?;

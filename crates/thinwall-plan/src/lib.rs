@@ -10,6 +10,7 @@ pub mod scene;
 pub mod sequence;
 pub mod sizing;
 pub mod steps;
+pub mod volumes;
 
 pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
