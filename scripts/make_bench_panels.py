@@ -10,7 +10,10 @@ usage: python3 scripts/make_bench_panels.py [OUT_DIR] [K ...]   (default K: 14 4
 import os, sys, time
 from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
-from OCP.TopTools import TopTools_ListOfShape
+try:  # OpenCascade 7.x bindings
+    from OCP.TopTools import TopTools_ListOfShape
+except ImportError:  # 8.x moved the shape list
+    from OCP.collections import List_TopoDS_Shape as TopTools_ListOfShape
 from OCP.gp import gp_Pnt
 from OCP.STEPControl import STEPControl_Writer, STEPControl_AsIs
 from OCP.TopExp import TopExp_Explorer
