@@ -275,7 +275,7 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
     for m in features {
         let _ = writeln!(
             s,
-            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}",
+            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}{}{}",
             m.id,
             m.kind,
             m.profile,
@@ -286,7 +286,12 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
             m.faces.len(),
             m.largest_tool_diameter
                 .map(|d| format!("  tool <= {d:.2}"))
-                .unwrap_or_default()
+                .unwrap_or_default(),
+            m.catalog.map(|c| format!("  [{c}]")).unwrap_or_default(),
+            match m.reachable {
+                Some(false) => "  not reachable from up",
+                _ => "",
+            }
         );
     }
 }
