@@ -14,14 +14,14 @@ const STOCK: u32 = 24;
 /// A face of a feature with no catalogue name.
 const UNNAMED: u32 = 25;
 
-/// The class (0–24) our features give each face, by STEP entity id.
+/// The class (0–24) our features give each face, by STEP entity id; a
+/// face of a feature with no catalogue name is `UNNAMED`.
 fn predicted(features: &[MachiningFeature]) -> HashMap<u64, u32> {
     let mut by_face = HashMap::new();
     for m in features {
-        if let Some(c) = m.catalog {
-            for &f in &m.faces {
-                by_face.insert(f, c.id());
-            }
+        let class = m.catalog.map_or(UNNAMED, |c| c.id());
+        for &f in &m.faces {
+            by_face.insert(f, class);
         }
     }
     by_face
@@ -37,6 +37,28 @@ fn labels(path: &std::path::Path) -> HashMap<u64, u32> {
         .iter()
         .map(|(k, c)| (k.parse().unwrap(), c.as_u64().unwrap() as u32))
         .collect()
+}
+
+/// The features whose faces are not all of the class they give.
+fn print_wrong(f: &std::path::Path, feats: &[MachiningFeature], truth: &HashMap<u64, u32>) {
+    for m in feats {
+        let t: Vec<u32> = m.faces.iter().map(|x| truth[x]).collect();
+        let c = m.catalog.map_or(UNNAMED, |c| c.id());
+        if t.iter().all(|&x| x == c) {
+            continue;
+        }
+        println!(
+            "{} {} {:?} {} {:?} {:?} faces {:?} truth {t:?} open {}",
+            f.file_stem().unwrap().to_string_lossy(),
+            m.id,
+            m.kind,
+            m.through,
+            m.profile,
+            m.catalog,
+            m.faces,
+            m.open_to.len()
+        );
+    }
 }
 
 fn class_name(c: u32) -> &'static str {
@@ -81,40 +103,18 @@ fn score(turn: bool) -> Score {
             .unwrap_or_else(|e| panic!("{}: {e}", f.display()));
         let feats = recognize(&PartAnalysis::new(&part, Setup::default()));
         let got = predicted(&feats);
-        // TW_DEBUG=<file name part> [TW_TURN=1]: print the wrong features.
+        // TW_DEBUG=<file name part> [TW_TURN=1]: print the wrong features
+        // (for work on the catalogue; silent otherwise).
         if std::env::var("TW_DEBUG").is_ok_and(|d| f.to_string_lossy().contains(&d))
             && std::env::var("TW_TURN").is_ok() == turn
         {
-            for m in &feats {
-                let t: Vec<u32> = m.faces.iter().map(|x| truth[x]).collect();
-                let c = m.catalog.map_or(UNNAMED, |c| c.id());
-                if t.iter().all(|&x| x == c) {
-                    continue;
-                }
-                print!("{} ", f.file_stem().unwrap().to_string_lossy());
-                println!(
-                    "{} {:?} {} {:?} {:?} faces {:?} truth {:?} open {}",
-                    m.id,
-                    m.kind,
-                    m.through,
-                    m.profile,
-                    m.catalog,
-                    m.faces,
-                    t,
-                    m.open_to.len()
-                );
-            }
+            print_wrong(f, &feats, &truth);
         }
         let before = s.right;
         let mut given = HashMap::new();
         for face in &part.faces {
             let t = truth[&face.step_id];
             let p = got.get(&face.step_id).copied().unwrap_or(STOCK);
-            let p = if p == STOCK && feats.iter().any(|m| m.faces.contains(&face.step_id)) {
-                UNNAMED
-            } else {
-                p
-            };
             given.insert(face.step_id, p);
             *s.confusion.entry((t, p)).or_default() += 1;
             s.total += 1;

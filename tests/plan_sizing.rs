@@ -57,38 +57,33 @@ fn smaller(now: (f64, f64), before: (f64, f64)) -> bool {
     now.0 <= before.0 && now.1 <= before.1 && (now.0 < before.0 || now.1 < before.1)
 }
 
+/// Along a series of ever stiffer walls: `h` never shrinks, and the
+/// heights are never smaller in both.
+fn assert_never_smaller(walls: impl Iterator<Item = WallDimensions>) {
+    let p = peripheral();
+    let mut last: Option<(f64, f64)> = None;
+    for w in walls {
+        let s = size_wall(&w, &p).unwrap();
+        if let Some(before) = last {
+            assert!(s.h >= before.0, "{w:?}: {s:?}");
+            assert!(!smaller((s.h, s.big_h), before), "{w:?}: {s:?}");
+        }
+        last = Some((s.h, s.big_h));
+    }
+}
+
 #[test]
 fn a_thicker_or_longer_wall_never_gets_smaller_features() {
-    let p = peripheral();
     for height in [20.0, 36.0, 48.0, 60.0, 72.0, 100.0] {
         for length in [30.0, 60.0, 120.0, 240.0] {
-            let mut last: Option<(f64, f64)> = None;
-            for k in 1..=12 {
-                let t = 0.25 * f64::from(k);
-                let s = size_wall(&wall(length, t, height), &p).unwrap();
-                if let Some(before) = last {
-                    assert!(s.h >= before.0, "{length} x {t} x {height}: {s:?}");
-                    assert!(
-                        !smaller((s.h, s.big_h), before),
-                        "{length} x {t} x {height}: {s:?}"
-                    );
-                }
-                last = Some((s.h, s.big_h));
-            }
+            assert_never_smaller((1..=12).map(|k| wall(length, 0.25 * f64::from(k), height)));
         }
         for t in [0.5, 1.0, 2.0] {
-            let mut last: Option<(f64, f64)> = None;
-            for length in [20.0, 40.0, 80.0, 160.0, 320.0] {
-                let s = size_wall(&wall(length, t, height), &p).unwrap();
-                if let Some(before) = last {
-                    assert!(s.h >= before.0, "{length} x {t} x {height}: {s:?}");
-                    assert!(
-                        !smaller((s.h, s.big_h), before),
-                        "{length} x {t} x {height}: {s:?}"
-                    );
-                }
-                last = Some((s.h, s.big_h));
-            }
+            assert_never_smaller(
+                [20.0, 40.0, 80.0, 160.0, 320.0]
+                    .into_iter()
+                    .map(|l| wall(l, t, height)),
+            );
         }
     }
 }

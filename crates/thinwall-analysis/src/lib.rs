@@ -301,7 +301,7 @@ impl<'a> PartAnalysis<'a> {
     /// cylinder comes out a little under 360, by its sampling).
     pub fn cylinder_sweep_deg(&self, f: FaceId) -> Option<f64> {
         let c = self.cylinder(f)?;
-        let u = c.axis.cross(&any_perpendicular(&c.axis)).normalize();
+        let u = thinwall_geom::frame::any_perpendicular(&c.axis);
         let v = c.axis.cross(&u);
         let mut angles: Vec<f64> = self
             .boundary_points(f)
@@ -436,14 +436,5 @@ impl<'a> PartAnalysis<'a> {
         let mut v: Vec<u64> = faces.iter().map(|&f| self.part.face(f).step_id).collect();
         v.sort();
         v
-    }
-}
-
-/// A unit vector not parallel to `v`.
-fn any_perpendicular(v: &Vector3) -> Vector3 {
-    if v.x.abs() < 0.9 {
-        Vector3::x()
-    } else {
-        Vector3::y()
     }
 }

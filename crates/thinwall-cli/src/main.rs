@@ -222,20 +222,7 @@ fn size_wall_command(a: SizeWallArgs) -> Result<(), Failure> {
     let sizes = size_wall(&w, &p).map_err(|e| Failure::Usage(e.to_string()))?;
     write_out(&match a.format {
         Format::Json => serde_json::to_string_pretty(&sizes).expect("sizes serialise") + "\n",
-        Format::Text => {
-            let mut s = format!(
-                "wall {} x {} x {} mm, {:?} milling: {}\n  B_RF {} mm, h_RF {} mm, H_RF {} mm, deflection {:.4} mm (allowed {})\n  iteration:\n",
-                w.length, w.thickness, w.height, sizes.milling, sizes.note, sizes.b, sizes.h, sizes.big_h,
-                sizes.deflection_mm, p.allowed_deflection_mm
-            );
-            for st in &sizes.trace {
-                s += &format!(
-                    "    B {:>6.2}  h {:>6.2}  H {:>6.2}  deflection {:.4}  {}\n",
-                    st.b, st.h, st.big_h, st.deflection_mm, st.action
-                );
-            }
-            s
-        }
+        Format::Text => sizes.to_text(),
     })
 }
 

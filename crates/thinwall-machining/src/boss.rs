@@ -3,8 +3,8 @@
 //! boss is material left standing: the feature is the wall to machine
 //! round it, from its cap down to its foot.
 
-use crate::{MachiningFeature, Stock};
-use thinwall_analysis::{Cylinder, MachiningId, MachiningKind, PartAnalysis, Profile};
+use crate::MachiningFeature;
+use thinwall_analysis::{Cylinder, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_graph::Convexity;
 
@@ -45,7 +45,7 @@ fn is_groove_core(a: &PartAnalysis, group: &[FaceId]) -> bool {
 
 /// The boss feature of a group: down its axis from the cap to the foot
 /// (the faces it meets along concave edges), its height and diameter.
-pub(crate) fn boss_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> MachiningFeature {
+pub(crate) fn boss_feature(a: &PartAnalysis, group: &[FaceId]) -> MachiningFeature {
     let c: Cylinder = a.cylinder(group[0]).expect("a boss group holds cylinders");
     let feet: Vec<FaceId> = group
         .iter()
@@ -66,26 +66,12 @@ pub(crate) fn boss_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) ->
         .filter_map(|&f| a.cylinder(f))
         .map(|c| c.radius)
         .fold(0.0, f64::max);
-    let _ = stock;
     MachiningFeature {
-        id: MachiningId::default(),
-        kind: MachiningKind::Boss,
-        body: a.part().face(group[0]).body.0,
-        through: false,
-        profile: Profile::Circular,
-        catalog: None,
-        direction: [dir.x, dir.y, dir.z],
-        faces: a.step_ids(group),
-        bottom_faces: vec![],
-        side_faces: a.step_ids(group),
-        open_to: vec![],
         depth: hi - lo,
         length: 2.0 * radius,
         width: 2.0 * radius,
         centre: Some([centre.x, centre.y, centre.z]),
         radii: vec![radius],
-        largest_tool_diameter: None,
-        reachable: None,
-        related: vec![],
+        ..MachiningFeature::on_faces(a, MachiningKind::Boss, Profile::Circular, group, &dir)
     }
 }

@@ -2,21 +2,22 @@
 //! depressions are grouped (a bevel on an inside edge would otherwise join
 //! the features on either side of it into one).
 //!
-//! A planar face is a chamfer when its normal bisects the normals of two
-//! of its (non-parallel) planar neighbours, a symmetric bevel, and it is
-//! narrower than both; a cone is a chamfer when it joins a plane square to
+//! A planar face is a chamfer when it is one strip (one loop, at least
+//! three times longer than wide), its normal bisects the normals of two of
+//! its non-parallel planar neighbours met with the same convexity (a
+//! symmetric bevel), it is narrower than half the wider of the two, and it
+//! does not close with them alone a face it meets (a triangular step's
+//! floor); a cone is a chamfer when it joins a plane square to
 //! its axis and a coaxial cylinder and is shorter along the axis than the
 //! cylinder's radius (a longer cone is a countersink, part of its hole).
 
-use crate::Stock;
+use crate::{MachiningFeature, Stock};
 use thinwall_analysis::polygon::min_rect_sides;
-use thinwall_analysis::{Catalog, MachiningId, MachiningKind, PartAnalysis, Profile};
+use thinwall_analysis::{Catalog, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Surface, Vector3};
 use thinwall_graph::Convexity;
-
-use crate::MachiningFeature;
 
 /// A bevel's normal bisects its neighbours' within this angle, degrees.
 const BISECT_DEG: f64 = 0.5;
@@ -114,8 +115,7 @@ pub(crate) fn chamfer_feature(
     // A lone planar bevel: its own long and short sides. A chain or a
     // conical bevel: its longest extent along the stock's axes (a ring's
     // diameter, not its developed length) and its widest strip.
-    let planar = group.len() == 1 && a.polygon(group[0]).is_some();
-    let sides = planar
+    let sides = (group.len() == 1)
         .then(|| a.polygon(group[0]).and_then(|p| min_rect_sides(&p)))
         .flatten();
     let (length, width) = sides.unwrap_or_else(|| {
@@ -135,24 +135,10 @@ pub(crate) fn chamfer_feature(
     });
     let (lo, hi) = a.extent(group, &dir);
     MachiningFeature {
-        id: MachiningId::default(),
-        kind: MachiningKind::Chamfer,
-        body: a.part().face(group[0]).body.0,
-        through: false,
-        profile: Profile::Slanted,
         catalog: Some(Catalog::Chamfer),
-        direction: [dir.x, dir.y, dir.z],
-        faces: a.step_ids(group),
-        bottom_faces: vec![],
-        side_faces: a.step_ids(group),
-        open_to: vec![],
         depth: if hi.is_finite() { hi - lo } else { 0.0 },
         length: length.max(width),
         width: width.min(length),
-        centre: None,
-        radii: vec![],
-        largest_tool_diameter: None,
-        reachable: None,
-        related: vec![],
+        ..MachiningFeature::on_faces(a, MachiningKind::Chamfer, Profile::Slanted, group, &dir)
     }
 }

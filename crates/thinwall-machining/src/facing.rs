@@ -3,7 +3,7 @@
 //! one feature per block plane.
 
 use crate::{MachiningFeature, Stock, StockSpec};
-use thinwall_analysis::{MachiningId, MachiningKind, PartAnalysis, Profile};
+use thinwall_analysis::{MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_geom::Vector3;
 
@@ -47,24 +47,12 @@ pub(crate) fn face_feature(
 ) -> MachiningFeature {
     let (length, width) = a.sizes_across(faces, n);
     MachiningFeature {
-        id: MachiningId::default(),
-        kind: MachiningKind::Face,
-        body: a.part().face(faces[0]).body.0,
-        through: false,
-        profile: Profile::Free,
-        catalog: None,
-        direction: [-n.x, -n.y, -n.z],
-        faces: a.step_ids(faces),
         bottom_faces: a.step_ids(faces),
         side_faces: vec![],
         open_to: vec![[n.x, n.y, n.z]],
         depth,
         length: length.max(width),
         width: width.min(length),
-        centre: None,
-        radii: vec![],
-        largest_tool_diameter: None,
-        reachable: None,
-        related: vec![],
+        ..MachiningFeature::on_faces(a, MachiningKind::Face, Profile::Free, faces, &-n)
     }
 }

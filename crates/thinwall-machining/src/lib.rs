@@ -100,6 +100,40 @@ pub struct MachiningFeature {
     pub related: Vec<FeatureId>,
 }
 
+impl MachiningFeature {
+    /// A feature of `kind` and `profile` on `faces`, entered along `dir`:
+    /// every face a side face, no sizes yet (the builders fill them).
+    pub(crate) fn on_faces(
+        a: &PartAnalysis,
+        kind: MachiningKind,
+        profile: Profile,
+        faces: &[FaceId],
+        dir: &Vector3,
+    ) -> Self {
+        Self {
+            id: MachiningId::default(),
+            kind,
+            body: a.part().face(faces[0]).body.0,
+            through: false,
+            profile,
+            catalog: None,
+            direction: [dir.x, dir.y, dir.z],
+            faces: a.step_ids(faces),
+            bottom_faces: vec![],
+            side_faces: a.step_ids(faces),
+            open_to: vec![],
+            depth: 0.0,
+            length: 0.0,
+            width: 0.0,
+            centre: None,
+            radii: vec![],
+            largest_tool_diameter: None,
+            reachable: None,
+            related: vec![],
+        }
+    }
+}
+
 /// Whether two unit normals point the same way.
 fn same_direction(a: &Vector3, b: &Vector3) -> bool {
     a.dot(b) > 1.0 - UNIT_PARALLEL_EPS
@@ -216,7 +250,7 @@ fn cut_features(
         .filter(|f| is_left(*f) && !taken.contains(f))
         .collect();
     for group in boss::boss_groups(a, &candidates) {
-        out.push(boss::boss_feature(a, block, &group));
+        out.push(boss::boss_feature(a, &group));
         taken.extend(group);
     }
     // Depressions: concave-connected groups (hole halves across their
@@ -334,30 +368,18 @@ fn blend_feature(a: &PartAnalysis, stock: &Stock, group: &[FaceId]) -> Machining
     let length = [x, y, z, dir].iter().map(along).fold(0.0, f64::max);
     let area: f64 = group.iter().map(|&f| a.props(f).area).sum();
     let arc = if length > 0.0 { area / length } else { 0.0 };
+    let profile = if convex {
+        Profile::Round
+    } else {
+        Profile::Fillet
+    };
     MachiningFeature {
-        id: MachiningId::default(),
-        kind: MachiningKind::Fillet,
-        body: a.part().face(group[0]).body.0,
-        through: false,
-        profile: if convex {
-            Profile::Round
-        } else {
-            Profile::Fillet
-        },
         catalog: Some(Catalog::Round),
-        direction: [dir.x, dir.y, dir.z],
-        faces: a.step_ids(group),
-        bottom_faces: vec![],
-        side_faces: a.step_ids(group),
-        open_to: vec![],
         depth: radii_v.first().copied().unwrap_or(0.0),
         length,
         width: arc.min(length),
-        centre: None,
         radii: radii_v,
-        largest_tool_diameter: None,
-        reachable: None,
-        related: vec![],
+        ..MachiningFeature::on_faces(a, MachiningKind::Fillet, profile, group, &dir)
     }
 }
 

@@ -122,11 +122,12 @@ fn patterns_in(family: &[&Hole], tol: f64) -> Vec<HolePattern> {
             diameter: left[members[0]].m.length,
             layout,
         });
-        let mut k = 0;
-        left.retain(|_| {
-            k += 1;
-            !members.contains(&(k - 1))
-        });
+        left = left
+            .into_iter()
+            .enumerate()
+            .filter(|(k, _)| !members.contains(k))
+            .map(|(_, h)| h)
+            .collect();
     }
     out
 }

@@ -43,7 +43,7 @@ impl Stock {
             Some(u) => axes_about(a, u),
             None => dominant_axes(a),
         };
-        let world = axes == [Vector3::x(), Vector3::y(), Vector3::z()];
+        let world = axes == WORLD;
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         let all: Vec<FaceId> = a.part().face_ids().collect();
         for k in 0..3 {
@@ -138,17 +138,8 @@ fn canonical(v: Vector3) -> Vector3 {
 
 /// The part's dominant orthogonal planar directions (module docs).
 fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
-    let world = [Vector3::x(), Vector3::y(), Vector3::z()];
     let cos = FEATURE_PARALLEL_DEG.to_radians().cos();
-    let mut clusters: Vec<(Vector3, f64)> = Vec::new();
-    for f in a.part().face_ids() {
-        let Some(n) = a.props(f).normal else { continue };
-        let area = a.props(f).area;
-        match clusters.iter_mut().find(|(c, _)| c.dot(&n).abs() > cos) {
-            Some(c) => c.1 += area,
-            None => clusters.push((canonical(n), area)),
-        }
-    }
+    let clusters = normal_clusters(a, |_| true);
     let sin = FRAME_ORTHOGONAL_DEG.to_radians().sin();
     let area_along = |d: &Vector3| -> f64 {
         clusters
@@ -178,22 +169,50 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
                 .max_by(|x, y| x.1.total_cmp(&y.1))
                 .map(|c| c.0)
             else {
-                return world;
+                return WORLD;
             };
             (d1, across(a, &d1))
         }
     };
-    let axes = [d1, d2, canonical(d1.cross(&d2).normalize())];
-    // Axes that are the world's (in any order and sense) are the world's.
+    snap_to_world([d1, d2, canonical(d1.cross(&d2).normalize())])
+}
+
+const WORLD: [Vector3; 3] = [
+    Vector3::new(1.0, 0.0, 0.0),
+    Vector3::new(0.0, 1.0, 0.0),
+    Vector3::new(0.0, 0.0, 1.0),
+];
+
+/// Axes that are the world's (in any order and sense, within the snap
+/// angle) are the world's, exactly.
+fn snap_to_world(axes: [Vector3; 3]) -> [Vector3; 3] {
     let snap = WORLD_SNAP_DEG.to_radians().cos();
-    let snapped: Vec<Vector3> = axes
+    if axes
         .iter()
-        .filter_map(|ax| world.iter().find(|w| ax.dot(w).abs() > snap).copied())
-        .collect();
-    if snapped.len() == 3 {
-        return world;
+        .all(|ax| WORLD.iter().any(|w| ax.dot(w).abs() > snap))
+    {
+        WORLD
+    } else {
+        axes
     }
-    axes
+}
+
+/// Planar normal directions (canonical sense) of the faces `keep` admits,
+/// merged within the feature-parallel angle, with the area each carries.
+fn normal_clusters(a: &PartAnalysis, keep: impl Fn(&Vector3) -> bool) -> Vec<(Vector3, f64)> {
+    let cos = FEATURE_PARALLEL_DEG.to_radians().cos();
+    let mut clusters: Vec<(Vector3, f64)> = Vec::new();
+    for f in a.part().face_ids() {
+        let Some(n) = a.props(f).normal.filter(|n| keep(n)) else {
+            continue;
+        };
+        let area = a.props(f).area;
+        match clusters.iter_mut().find(|(c, _)| c.dot(&n).abs() > cos) {
+            Some(c) => c.1 += area,
+            None => clusters.push((canonical(n), area)),
+        }
+    }
+    clusters
 }
 
 /// Axes with `up` as one: up, the planar direction square to it carrying
@@ -202,34 +221,12 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
 /// the world's.
 fn axes_about(a: &PartAnalysis, up: Vector3) -> [Vector3; 3] {
     let sin = FRAME_ORTHOGONAL_DEG.to_radians().sin();
-    let cos = FEATURE_PARALLEL_DEG.to_radians().cos();
-    let mut clusters: Vec<(Vector3, f64)> = Vec::new();
-    for f in a.part().face_ids() {
-        let Some(n) = a.props(f).normal else { continue };
-        if n.dot(&up).abs() >= sin {
-            continue;
-        }
-        let area = a.props(f).area;
-        match clusters.iter_mut().find(|(c, _)| c.dot(&n).abs() > cos) {
-            Some(c) => c.1 += area,
-            None => clusters.push((canonical(n), area)),
-        }
-    }
-    let d2 = clusters
+    let d2 = normal_clusters(a, |n| n.dot(&up).abs() < sin)
         .iter()
         .max_by(|x, y| x.1.total_cmp(&y.1))
         .map_or_else(|| across(a, &up), |c| c.0);
     let d2 = canonical((d2 - up * d2.dot(&up)).normalize());
-    let axes = [up, d2, canonical(up.cross(&d2).normalize())];
-    let world = [Vector3::x(), Vector3::y(), Vector3::z()];
-    let snap = WORLD_SNAP_DEG.to_radians().cos();
-    if axes
-        .iter()
-        .all(|ax| world.iter().any(|w| ax.dot(w).abs() > snap))
-    {
-        return world;
-    }
-    axes
+    snap_to_world([up, d2, canonical(up.cross(&d2).normalize())])
 }
 
 /// The long side of the part's minimum rectangle seen along `d1`.

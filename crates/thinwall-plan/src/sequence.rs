@@ -70,6 +70,9 @@ pub struct Sequence {
     ids: Vec<FeatureId>,
     #[serde(skip)]
     groups: Vec<usize>,
+    /// `before` constraints by feature index (first, second, constraint).
+    #[serde(skip)]
+    befores: Vec<(usize, usize, usize)>,
 }
 
 /// A candidate of phase 1.
@@ -112,13 +115,15 @@ pub fn sequence(scene: &Scene, rules: &RuleSet) -> Sequence {
         }
     }
     let order = state.levels(&ids);
-    let groups = (0..ids.len()).map(|i| state.groups.find(i)).collect();
+    let groups = state.reps();
+    let befores = state.befores().collect();
     Sequence {
         constraints: state.constraints.into_iter().map(|c| c.1).collect(),
         rejected,
         order,
         ids,
         groups,
+        befores,
     }
 }
 
@@ -230,37 +235,22 @@ impl State {
         }
     }
 
-    /// The group graph: one node per group, `before` edges weighted by
-    /// their constraint's index.
-    fn graph(&self, n: usize) -> (DiGraph<usize, usize>, BTreeMap<usize, NodeIndex>) {
-        let mut g = DiGraph::new();
-        let mut node = BTreeMap::new();
-        for i in 0..n {
-            let r = self.groups.find(i);
-            node.entry(r).or_insert_with(|| g.add_node(r));
-        }
-        for (k, ((a, b), c)) in self.constraints.iter().enumerate() {
-            if c.relation == Relation::Before {
-                let (ra, rb) = (self.groups.find(*a), self.groups.find(*b));
-                g.add_edge(node[&ra], node[&rb], k);
-            }
-        }
-        (g, node)
+    /// Each feature's group (its representative).
+    fn reps(&self) -> Vec<usize> {
+        (0..self.n).map(|i| self.groups.find(i)).collect()
     }
 
-    /// The constraints along a path of groups from `a`'s to `b`'s.
-    fn chain(&self, a: usize, b: usize) -> Option<Vec<usize>> {
-        let (g, node) = self.graph(self.n);
-        let (from, to) = (node[&self.groups.find(a)], node[&self.groups.find(b)]);
-        if from == to || !has_path_connecting(&g, from, to, None) {
-            return None;
-        }
-        let (_, path) = astar(&g, from, |x| x == to, |_| 1, |_| 0)?;
-        Some(
-            path.windows(2)
-                .filter_map(|w| g.find_edge(w[0], w[1]).map(|e| g[e]))
-                .collect(),
-        )
+    /// The `before` constraints: first, second, constraint index.
+    fn befores(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        self.constraints
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, c))| c.relation == Relation::Before)
+            .map(|(k, ((a, b), _))| (*a, *b, k))
+    }
+
+    fn graph(&self) -> GroupGraph {
+        GroupGraph::new(&self.reps(), self.befores())
     }
 
     /// The simultaneous constraints holding `a`'s group together.
@@ -279,20 +269,26 @@ impl State {
     /// Whether enforcing `first relation second` is sound; if not, why and
     /// through which constraints.
     fn check(&self, a: usize, b: usize, relation: Relation) -> Result<(), (Rejection, Vec<usize>)> {
-        let same = self.groups.find(a) == self.groups.find(b);
+        let (ra, rb) = (self.groups.find(a), self.groups.find(b));
+        if ra == rb {
+            let reason = match relation {
+                Relation::Before => Rejection::Conflict,
+                Relation::Simultaneous => Rejection::Redundant,
+            };
+            return Err((reason, self.together(a)));
+        }
+        let g = self.graph();
         match relation {
-            Relation::Before if same => Err((Rejection::Conflict, self.together(a))),
             Relation::Before => {
-                if let Some(chain) = self.chain(a, b) {
+                if let Some(chain) = g.chain(ra, rb) {
                     return Err((Rejection::Redundant, chain));
                 }
-                match self.chain(b, a) {
+                match g.chain(rb, ra) {
                     Some(chain) => Err((Rejection::Cycle, chain)),
                     None => Ok(()),
                 }
             }
-            Relation::Simultaneous if same => Err((Rejection::Redundant, self.together(a))),
-            Relation::Simultaneous => match self.chain(a, b).or_else(|| self.chain(b, a)) {
+            Relation::Simultaneous => match g.chain(ra, rb).or_else(|| g.chain(rb, ra)) {
                 Some(chain) => Err((Rejection::Conflict, chain)),
                 None => Ok(()),
             },
@@ -309,7 +305,7 @@ impl State {
     /// Groups level by level: a group's level is one more than the highest
     /// level of the groups that must precede it.
     fn levels(&self, ids: &[FeatureId]) -> Vec<Vec<FeatureId>> {
-        let (g, node) = self.graph(ids.len());
+        let GroupGraph { g, node } = self.graph();
         let sorted = toposort(&g, None).expect("phase 2 never closes a cycle");
         let mut level: BTreeMap<NodeIndex, usize> = BTreeMap::new();
         for &v in &sorted {
@@ -330,6 +326,56 @@ impl State {
         }
         out
     }
+}
+
+/// Groups of simultaneous features as nodes (by representative), `before`
+/// constraints between them as edges weighted by the constraint's index.
+struct GroupGraph {
+    g: DiGraph<usize, usize>,
+    node: BTreeMap<usize, NodeIndex>,
+}
+
+impl GroupGraph {
+    /// `reps[i]` is feature `i`'s group; `befores` are (first, second,
+    /// constraint index) by feature.
+    fn new(reps: &[usize], befores: impl Iterator<Item = (usize, usize, usize)>) -> Self {
+        let mut g = DiGraph::new();
+        let mut node = BTreeMap::new();
+        for &r in reps {
+            node.entry(r).or_insert_with(|| g.add_node(r));
+        }
+        for (a, b, k) in befores {
+            g.add_edge(node[&reps[a]], node[&reps[b]], k);
+        }
+        Self { g, node }
+    }
+
+    /// The constraints along a path from group `a` to group `b`, if any.
+    fn chain(&self, a: usize, b: usize) -> Option<Vec<usize>> {
+        let (from, to) = (self.node[&a], self.node[&b]);
+        if from == to || !has_path_connecting(&self.g, from, to, None) {
+            return None;
+        }
+        let (_, path) = astar(&self.g, from, |x| x == to, |_| 1, |_| 0)?;
+        Some(
+            path.windows(2)
+                .filter_map(|w| self.g.find_edge(w[0], w[1]).map(|e| self.g[e]))
+                .collect(),
+        )
+    }
+}
+
+/// The nodes a breadth-first search from `start` reaches, `start` too.
+fn reachable<G>(g: G, start: G::NodeId) -> Vec<G::NodeId>
+where
+    G: petgraph::visit::IntoNeighbors + petgraph::visit::Visitable,
+{
+    let mut bfs = petgraph::visit::Bfs::new(g, start);
+    let mut out = Vec::new();
+    while let Some(v) = bfs.next(g) {
+        out.push(v);
+    }
+    out
 }
 
 /// A constraint in words.
@@ -396,36 +442,23 @@ impl Sequence {
         let Some(i) = self.index(id) else {
             return vec![];
         };
-        let group = |f: FeatureId| self.index(f).map(|k| self.groups[k]);
-        let mut g: DiGraph<usize, ()> = DiGraph::new();
-        let mut node: BTreeMap<usize, NodeIndex> = BTreeMap::new();
-        for &r in &self.groups {
-            node.entry(r).or_insert_with(|| g.add_node(r));
-        }
-        for c in self
-            .constraints
-            .iter()
-            .filter(|c| c.relation == Relation::Before)
-        {
-            let (Some(a), Some(b)) = (group(c.before), group(c.after)) else {
-                continue;
-            };
-            let (a, b) = if before { (b, a) } else { (a, b) };
-            g.update_edge(node[&a], node[&b], ());
-        }
+        let GroupGraph { g, node } = GroupGraph::new(&self.groups, self.befores.iter().copied());
         let start = node[&self.groups[i]];
-        let reached: Vec<usize> = if indirect {
-            let mut bfs = petgraph::visit::Bfs::new(&g, start);
-            let mut seen = Vec::new();
-            while let Some(v) = bfs.next(&g) {
-                if v != start {
-                    seen.push(g[v]);
-                }
-            }
-            seen
+        let direction = if before {
+            petgraph::Direction::Incoming
         } else {
-            g.neighbors(start).map(|v| g[v]).collect()
+            petgraph::Direction::Outgoing
         };
+        let nodes: Vec<NodeIndex> = match (indirect, before) {
+            (true, true) => reachable(petgraph::visit::Reversed(&g), start),
+            (true, false) => reachable(&g, start),
+            (false, _) => g.neighbors_directed(start, direction).collect(),
+        };
+        let reached: Vec<usize> = nodes
+            .into_iter()
+            .filter(|&v| v != start)
+            .map(|v| g[v])
+            .collect();
         let mut out: Vec<FeatureId> = (0..self.ids.len())
             .filter(|&k| reached.contains(&self.groups[k]))
             .map(|k| self.ids[k])

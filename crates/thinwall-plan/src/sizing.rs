@@ -197,6 +197,34 @@ pub struct Sizes {
     pub trace: Vec<Step>,
 }
 
+impl Sizes {
+    /// The sizes and the iteration, for a planner to read.
+    pub fn to_text(&self) -> String {
+        use std::fmt::Write;
+        let w = &self.wall;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "wall {} x {} x {} mm, {:?} milling: {}",
+            w.length, w.thickness, w.height, self.milling, self.note
+        );
+        let _ = writeln!(
+            s,
+            "  B_RF {} mm, h_RF {} mm, H_RF {} mm, deflection {:.4} mm (allowed {})",
+            self.b, self.h, self.big_h, self.deflection_mm, self.parameters.allowed_deflection_mm
+        );
+        let _ = writeln!(s, "  iteration:");
+        for st in &self.trace {
+            let _ = writeln!(
+                s,
+                "    B {:>6.2}  h {:>6.2}  H {:>6.2}  deflection {:.4}  {}",
+                st.b, st.h, st.big_h, st.deflection_mm, st.action
+            );
+        }
+        s
+    }
+}
+
 /// Sizes that cannot be computed.
 #[derive(Debug, Error, PartialEq)]
 #[non_exhaustive]
@@ -301,11 +329,8 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
         return Ok(finish(w, p, width(steps), cut, cut, true, note, trace));
     }
     let initial_h = round_height(f64::from(p.initial_cuts) * cut).min(round_height(w.height));
-    let reset_big = |h: f64| {
-        round_height((p.initial_height_ratio * h / h).floor() * h)
-            .min(w.height)
-            .max(h)
-    };
+    // H: the initial whole multiple of h, within the wall.
+    let reset_big = |h: f64| (p.initial_height_ratio.floor() * h).min(w.height).max(h);
     let mut h = initial_h;
     let mut big_h = reset_big(h);
     let mut d = log(width(steps), h, big_h, "initial: rules of thumb");

@@ -22,6 +22,7 @@ use crate::WallPlan;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
 
@@ -98,7 +99,7 @@ fn large_side(
     up: &Vector3,
 ) -> u8 {
     let n0 = g.frame.z;
-    if n0.dot(up).abs() > 1.0 - 1e-6 {
+    if n0.dot(up).abs() > 1.0 - NEAR_PARALLEL_EPS {
         return if n0.dot(up) > 0.0 { 0 } else { 1 };
     }
     let mid = g.frame.origin - n0 * (0.5 * g.thickness);
