@@ -279,7 +279,7 @@ fn step_layers_follow_size_wall_on_the_fokker_ribs() {
         )
         .unwrap();
         assert_eq!(sizes.big_h, big);
-        let layers = &p.machining_features;
+        let layers = &p.layers;
         let large: Vec<f64> = layers
             .iter()
             .filter(|l| l.size_class == thinwall_plan::steps::SizeClass::Large)
@@ -333,7 +333,7 @@ fn every_sized_wall_is_covered_on_both_sides_in_a_valid_order() {
             let height = w.sizes.wall.height;
             for side in 0..2u8 {
                 let covered: f64 = p
-                    .machining_features
+                    .layers
                     .iter()
                     .filter(|l| l.owner == w.id && l.side == side)
                     .map(|l| l.height)
@@ -345,7 +345,7 @@ fn every_sized_wall_is_covered_on_both_sides_in_a_valid_order() {
                 );
             }
         }
-        for c in &p.feature_sequence {
+        for c in &p.layer_sequence {
             assert!(
                 layer_number(&c.before) < layer_number(&c.after),
                 "{name}: {c:?}"
@@ -365,9 +365,9 @@ fn a_turned_part_gets_the_same_layers() {
     let up = r * nalgebra::Vector3::z();
     let a = plan_text(&text, [0.0, 0.0, 1.0], &rules);
     let b = plan_text(&turned, [up.x, up.y, up.z], &rules);
-    assert!(!a.machining_features.is_empty());
+    assert!(!a.layers.is_empty());
     let key = |p: &Plan| -> Vec<String> {
-        p.machining_features
+        p.layers
             .iter()
             .map(|l| {
                 format!(
@@ -387,5 +387,5 @@ fn a_turned_part_gets_the_same_layers() {
             .collect()
     };
     assert_eq!(key(&a), key(&b));
-    assert_eq!(a.feature_sequence, b.feature_sequence);
+    assert_eq!(a.layer_sequence, b.layer_sequence);
 }

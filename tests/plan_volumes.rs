@@ -27,7 +27,7 @@ fn layers_read_back(text: &str, up: [f64; 3]) -> usize {
     };
     let out = thinwall_pipeline::run(&part, None, &req).unwrap();
     let p = plan("part.step", &part, &out, &RuleSet::default_rules());
-    for l in &p.machining_features {
+    for l in &p.layers {
         let step = volumes::layer_step(l);
         let (solid, _) = thinwall_step::read_bytes(step.as_bytes(), "layer.step")
             .unwrap_or_else(|e| panic!("{}: {e}", l.id));
@@ -42,7 +42,7 @@ fn layers_read_back(text: &str, up: [f64; 3]) -> usize {
             l.id
         );
     }
-    p.machining_features.len()
+    p.layers.len()
 }
 
 #[test]

@@ -250,7 +250,7 @@ fn plan_command(
     if let Some(dir) = &volumes_dir {
         std::fs::create_dir_all(dir)
             .map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
-        for l in &plan.machining_features {
+        for l in &plan.layers {
             let path = dir.join(format!("{}.step", l.id));
             std::fs::write(&path, thinwall_plan::volumes::layer_step(l))
                 .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;

@@ -34,7 +34,7 @@ mod options;
 mod patterns;
 mod shape;
 mod solid;
-mod stock;
+pub mod stock;
 
 pub use options::{MachiningError, Options, StockSpec};
 pub use patterns::{hole_patterns, HolePattern, Layout};

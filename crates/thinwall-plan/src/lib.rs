@@ -5,12 +5,17 @@
 //! rules, the algorithm and every decision taken where the thesis is
 //! silent.
 
+pub mod feature_order;
+pub mod features;
+pub mod removal;
 pub mod rules;
 pub mod scene;
 pub mod sequence;
 pub mod sizing;
 pub mod steps;
+mod touch;
 pub mod volumes;
+mod whole;
 
 pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
@@ -59,15 +64,47 @@ pub struct Plan {
     /// tool.
     pub walls: Vec<WallPlan>,
     /// The step approach's layers beside every peripherally milled thin
-    /// wall, in a valid order (issue 14, first part: boxes, no solids or
-    /// interference yet).
-    pub machining_features: Vec<steps::Layer>,
+    /// wall as designed (boxes), in plan order.
+    pub layers: Vec<steps::Layer>,
     /// Between layers: each wall's steps in order, and a wall's last step
     /// before the next wall's first where the stiffness sequence says so.
-    pub feature_sequence: Vec<LayerConstraint>,
+    pub layer_sequence: Vec<LayerConstraint>,
+    /// The whole removal: stock − part, exactly, and how it was cut.
+    pub removal: RemovalSummary,
+    /// The removal frame: origin, x, y and z (= up); feature solids are
+    /// given in it.
+    pub frame: [[f64; 3]; 4],
+    /// Every bit of stock − part in one feature: the layers as they remain
+    /// after interference, bulk, and what another set-up must reach.
+    pub machining_features: Vec<features::RemovalFeature>,
+    /// Relations between machining features and one order respecting them.
+    pub feature_sequence: feature_order::FeatureSequence,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,
+}
+
+/// The removal's figures, or why there is none.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct RemovalSummary {
+    /// `block` (the set-up's bounding block), `block + offset`, or `solid`.
+    pub stock: String,
+    pub stock_volume_mm3: f64,
+    pub part_volume_mm3: f64,
+    /// Σ of the machining features' volumes, mm³.
+    pub removed_volume_mm3: f64,
+    /// Cells of the decomposition.
+    pub cells: usize,
+    /// Total of the boolean slivers left out (each under 1e-12 of the
+    /// stock), mm³.
+    pub slivers_mm3: f64,
+    /// Why the removal could not be decomposed (no machining features
+    /// then).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unavailable: Option<String>,
+    /// Layers left out of the removal (not prisms along up), with why.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
 }
 
 /// A `before` relation between two layers and why.
@@ -162,8 +199,10 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
     let walls = wall_plans(out);
-    let machining_features = steps::layers(out, &scene, &seq, &walls);
-    let feature_sequence = layer_constraints(&machining_features, &seq.constraints);
+    let layers = steps::layers(out, &scene, &seq, &walls);
+    let layer_sequence = layer_constraints(&layers, &seq.constraints);
+    let (removal, machining_features, frame) = whole::removal_plan(part, out, &layers);
+    let feature_sequence = feature_order::order(&machining_features, &layer_sequence);
     Plan {
         schema: PLAN_SCHEMA.to_string(),
         thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -187,6 +226,10 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
         rejected: seq.rejected.clone(),
         order: seq.order.clone(),
         walls,
+        layers,
+        layer_sequence,
+        removal,
+        frame,
         machining_features,
         feature_sequence,
         queries: seq,
@@ -194,6 +237,96 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
 }
 
 impl Plan {
+    /// The removal and its features, in order, then per wall.
+    fn removal_text(&self, s: &mut String) {
+        use std::fmt::Write;
+        let r = &self.removal;
+        if let Some(why) = &r.unavailable {
+            let _ = writeln!(s, "removal plan: not available ({why})");
+            return;
+        }
+        let _ = writeln!(
+            s,
+            "removal: stock ({}) {:.1} mm³ − part {:.1} mm³ = {:.1} mm³ in {} machining features ({} cells)",
+            r.stock,
+            r.stock_volume_mm3,
+            r.part_volume_mm3,
+            r.removed_volume_mm3,
+            self.machining_features.len(),
+            r.cells
+        );
+        for n in &r.notes {
+            let _ = writeln!(s, "  note: {n}");
+        }
+        let by_id: std::collections::HashMap<&str, &features::RemovalFeature> = self
+            .machining_features
+            .iter()
+            .map(|f| (f.id.as_str(), f))
+            .collect();
+        let _ = writeln!(s, "machining features in order:");
+        for (k, id) in self.feature_sequence.order.iter().enumerate() {
+            let Some(f) = by_id.get(id.as_str()) else {
+                continue;
+            };
+            let owner = f.owner.map(|o| o.to_string()).unwrap_or_else(|| "-".into());
+            let place = match (f.side, f.step) {
+                (Some(side), Some(step)) => format!("side {side} step {step}"),
+                _ => String::new(),
+            };
+            let reach = match (f.reachable, f.access) {
+                (true, _) => String::new(),
+                (false, Some(d)) => format!(
+                    "  another set-up, from ({:.3}, {:.3}, {:.3})",
+                    d[0], d[1], d[2]
+                ),
+                (false, None) => "  another set-up".to_string(),
+            };
+            let _ = writeln!(
+                s,
+                "  {:>3}. {:<5}{:<12}{:<5} {:<16}{:>8.2} .. {:>8.2}  {:>12.1} mm³  {} faces{}",
+                k + 1,
+                f.id,
+                f.size_class.name(),
+                owner,
+                place,
+                f.z_range[0],
+                f.z_range[1],
+                f.volume_mm3,
+                f.faces.len(),
+                reach
+            );
+            for c in &f.changes {
+                let _ = writeln!(s, "         {c}");
+            }
+        }
+        let _ = writeln!(s, "per wall, in order:");
+        for w in &self.walls {
+            let ids: Vec<&str> = self
+                .feature_sequence
+                .order
+                .iter()
+                .filter(|id| {
+                    by_id
+                        .get(id.as_str())
+                        .is_some_and(|f| f.owner == Some(w.id))
+                })
+                .map(String::as_str)
+                .collect();
+            if !ids.is_empty() {
+                let _ = writeln!(s, "  {:<5}{}", w.id, ids.join(" "));
+            }
+        }
+        if !self.feature_sequence.dropped.is_empty() {
+            let _ = writeln!(
+                s,
+                "relations dropped (they would contradict height or a step approach):"
+            );
+            for d in &self.feature_sequence.dropped {
+                let _ = writeln!(s, "  {} before {}: {}", d.before, d.after, d.why);
+            }
+        }
+    }
+
     /// Pretty JSON.
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).expect("a plan serialises")
@@ -235,8 +368,8 @@ impl Plan {
                 w.sizes.note
             );
         }
-        let _ = writeln!(s, "step-approach layers: {}", self.machining_features.len());
-        for l in &self.machining_features {
+        let _ = writeln!(s, "step-approach layers as designed: {}", self.layers.len());
+        for l in &self.layers {
             let _ = writeln!(
                 s,
                 "  {:<5}{:<5} step {:>2}  side {}  {:<5}  {:>7.2} .. {:>7.2} above the foot  ({:.2} x {:.2} x {:.2})",
@@ -252,6 +385,7 @@ impl Plan {
                 l.height
             );
         }
+        self.removal_text(&mut s);
         let _ = writeln!(s, "rejected candidates: {}", self.rejected.len());
         for r in &self.rejected {
             let _ = writeln!(s, "  [{:?}] {}", r.reason, r.explanation);

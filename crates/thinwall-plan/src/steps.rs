@@ -50,6 +50,10 @@ pub struct Layer {
     pub from_foot: [f64; 2],
     /// Lowest and highest point along the set-up's up, mm.
     pub z_range: [f64; 2],
+    /// Its bottom and top along up on the wall's height axis (where the
+    /// removal plan cuts; a layer beside a drafted wall is a sheared box
+    /// whose corners lie a little above and below these), mm.
+    pub cut_heights: [f64; 2],
     /// Width beside the wall, height, length, mm.
     pub width: f64,
     pub height: f64,
@@ -169,6 +173,7 @@ fn wall_layers(
             }
         }
         let zs: Vec<f64> = corners.iter().map(|p| p.coords.dot(up)).collect();
+        let axis_z = |hh: f64| (g.frame.origin + hd * (foot + hh)).coords.dot(up);
         Layer {
             id: String::new(),
             owner: w.id,
@@ -180,6 +185,7 @@ fn wall_layers(
                 zs.iter().copied().fold(f64::INFINITY, f64::min),
                 zs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
             ],
+            cut_heights: [axis_z(from), axis_z(to)],
             width: b,
             height: to - from,
             length: l1 - l0,

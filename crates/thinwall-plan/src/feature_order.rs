@@ -1,0 +1,163 @@
+//! Relations between the plan's machining features and one order that
+//! respects them all.
+//!
+//! Three kinds of `before`, added in this order:
+//! 1. **above**: within one column of the decomposition, what lies above
+//!    comes out first (the tool enters from up);
+//! 2. **step approach**: a wall's layers in their fig. 4.1 order;
+//! 3. **wall order**: the stiffness-feature sequence (a wall's last layer
+//!    before the next wall's first). Such a relation is dropped, with the
+//!    reason, where it would contradict 1 or 2 (a cycle).
+//!
+//! The order is a topological sort that takes, among the features free to
+//! go, the one of this set-up before another set-up's, then the highest,
+//! then the first designed.
+
+use crate::features::RemovalFeature;
+use crate::removal::Bound;
+use crate::LayerConstraint;
+use petgraph::algo::has_path_connecting;
+use petgraph::graph::{DiGraph, NodeIndex};
+use serde::Serialize;
+use std::cmp::Reverse;
+use std::collections::{BTreeSet, BinaryHeap, HashMap};
+
+/// `before` comes out before `after`, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FeatureRelation {
+    pub before: String,
+    pub after: String,
+    pub why: String,
+}
+
+/// The relations in force, those dropped, and the order.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct FeatureSequence {
+    pub relations: Vec<FeatureRelation>,
+    pub dropped: Vec<FeatureRelation>,
+    pub order: Vec<String>,
+}
+
+/// Relations and order of `features` (vanished layers already removed),
+/// given the layer relations of the step approach and the wall order.
+pub fn order(features: &[RemovalFeature], layer_rel: &[LayerConstraint]) -> FeatureSequence {
+    let index: HashMap<&str, usize> = features
+        .iter()
+        .enumerate()
+        .map(|(i, f)| (f.id.as_str(), i))
+        .collect();
+    let mut g: DiGraph<usize, ()> = DiGraph::new();
+    let nodes: Vec<NodeIndex> = (0..features.len()).map(|i| g.add_node(i)).collect();
+    let mut seq = FeatureSequence::default();
+    let mut seen = BTreeSet::new();
+    let mut add = |g: &mut DiGraph<usize, ()>, a: usize, b: usize, why: String| {
+        if a == b || !seen.insert((a, b)) {
+            return;
+        }
+        let rel = FeatureRelation {
+            before: features[a].id.clone(),
+            after: features[b].id.clone(),
+            why,
+        };
+        // A relation closing a cycle is dropped. For the hard ones (height
+        // and step approach, which agree) this does not happen; the graph
+        // stays acyclic all the same.
+        if has_path_connecting(&*g, nodes[b], nodes[a], None) {
+            seq.dropped.push(rel);
+            return;
+        }
+        g.add_edge(nodes[a], nodes[b], ());
+        seq.relations.push(rel);
+    };
+    // 1. above: the feature whose piece begins where another's ends lies
+    // above it.
+    let mut at_top: HashMap<(usize, BoundKey), usize> = HashMap::new();
+    for (i, f) in features.iter().enumerate() {
+        for p in &f.pieces {
+            at_top.insert((p.cell, BoundKey::of(&p.upper)), i);
+        }
+    }
+    let mut above = BTreeSet::new();
+    for (i, f) in features.iter().enumerate() {
+        for p in &f.pieces {
+            if let Some(&below) = at_top.get(&(p.cell, BoundKey::of(&p.lower))) {
+                if below != i {
+                    above.insert((i, below));
+                }
+            }
+        }
+    }
+    for (a, b) in above {
+        add(
+            &mut g,
+            a,
+            b,
+            format!("{} lies above {}", features[a].id, features[b].id),
+        );
+    }
+    // 2 and 3: the layers' relations, by the layer ids that remain.
+    for r in layer_rel {
+        let (Some(&a), Some(&b)) = (index.get(r.before.as_str()), index.get(r.after.as_str()))
+        else {
+            continue;
+        };
+        add(&mut g, a, b, r.why.clone());
+    }
+    seq.order = topo(features, &g, &nodes);
+    seq
+}
+
+/// Kahn's algorithm with the module's tie-break.
+fn topo(features: &[RemovalFeature], g: &DiGraph<usize, ()>, nodes: &[NodeIndex]) -> Vec<String> {
+    let key = |i: usize| {
+        let f = &features[i];
+        (!f.reachable, Reverse(ordered(f.z_range[1])), i)
+    };
+    let mut indeg: Vec<usize> = nodes
+        .iter()
+        .map(|&n| {
+            g.neighbors_directed(n, petgraph::Direction::Incoming)
+                .count()
+        })
+        .collect();
+    let mut ready: BinaryHeap<Reverse<(bool, Reverse<i64>, usize)>> = (0..features.len())
+        .filter(|&i| indeg[i] == 0)
+        .map(|i| Reverse(key(i)))
+        .collect();
+    let mut out = Vec::with_capacity(features.len());
+    while let Some(Reverse((_, _, i))) = ready.pop() {
+        out.push(features[i].id.clone());
+        for n in g.neighbors_directed(nodes[i], petgraph::Direction::Outgoing) {
+            let j = g[n];
+            indeg[j] -= 1;
+            if indeg[j] == 0 {
+                ready.push(Reverse(key(j)));
+            }
+        }
+    }
+    out
+}
+
+/// A height as a sortable integer (tenths of a micrometre: equal heights
+/// compare equal whatever the rounding of a pose).
+fn ordered(z: f64) -> i64 {
+    (z * 1e4).round() as i64
+}
+
+/// A bound as a hash key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum BoundKey {
+    Flat(u64),
+    Part(usize),
+    Stock(usize),
+}
+
+impl BoundKey {
+    fn of(b: &Bound) -> Self {
+        match *b {
+            Bound::Flat(z) => BoundKey::Flat(z.to_bits()),
+            Bound::Part(i) => BoundKey::Part(i),
+            Bound::Stock(i) => BoundKey::Stock(i),
+        }
+    }
+}

@@ -1,0 +1,476 @@
+//! The whole removal plan (issue 14): every bit of stock − part belongs to
+//! one machining feature. The step-approach layers of the thin walls
+//! (`steps`) claim what lies in their boxes, in plan order (an earlier
+//! feature keeps an overlap: the owners' sequence priority, §5.4); what
+//! is left is bulk, owned by the wall it lies on; what the set-up cannot
+//! reach (nothing of it open to up) is a feature for another set-up.
+//!
+//! The blocks of the decomposition (`removal`) are cut at the layers'
+//! heights, so a layer is exactly the removal inside its box: the part is
+//! never in a feature, features never overlap, and they add up to stock −
+//! part. A cut that would pass through a curved bound (a foot fillet)
+//! moves to that bound's end, so a curved piece stays whole (in the layer
+//! below).
+
+use crate::removal::pieces::Height;
+use crate::removal::{Bound, Removal};
+use crate::steps::{Layer, SizeClass};
+use serde::Serialize;
+use std::collections::{BTreeMap, HashMap};
+use thinwall_analysis::FeatureId;
+use thinwall_pipeline::Outcome;
+
+/// A piece under this fraction of the stock's volume is a sliver of the
+/// 2-D booleans (edges that coincide up to rounding), not material.
+pub const SLIVER: f64 = 1e-9;
+
+/// A bulk or other-set-up feature under this fraction of the stock's
+/// volume (a skim of a hundredth of a millimetre left by a drafted wall's
+/// top) joins the feature above or below it in its column.
+pub const MERGE: f64 = 1e-6;
+
+/// What a machining feature is in the plan.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FeatureClass {
+    /// A step-approach layer, `H_RF` tall.
+    Large,
+    /// A step-approach layer, `h_RF` tall.
+    Small,
+    /// The rest reachable from up (pocket cores, above the walls, around
+    /// the part).
+    Bulk,
+    /// Nothing of it is open to up: another set-up or 5 axes.
+    OtherSetup,
+}
+
+impl FeatureClass {
+    pub fn name(self) -> &'static str {
+        match self {
+            FeatureClass::Large => "large",
+            FeatureClass::Small => "small",
+            FeatureClass::Bulk => "bulk",
+            FeatureClass::OtherSetup => "other_setup",
+        }
+    }
+}
+
+/// One piece of a feature: part of a cell of the decomposition between two
+/// bounds.
+#[derive(Clone, Debug)]
+pub struct Piece {
+    pub cell: usize,
+    pub region: geo::MultiPolygon<f64>,
+    pub lower: Bound,
+    pub upper: Bound,
+    /// Nominal heights of the two ends, mm.
+    pub z: [f64; 2],
+    pub volume: f64,
+    /// The block it was cut from: its bounds say what it lies on and under.
+    pub block: [Bound; 2],
+}
+
+/// A machining feature of the plan.
+#[derive(Clone, Debug, Serialize)]
+pub struct RemovalFeature {
+    /// `V…` for layers (their step-approach id), `B…` bulk, `X…` other
+    /// set-up.
+    pub id: String,
+    /// The stiffness feature it belongs to (none: around the part).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub owner: Option<FeatureId>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub side: Option<u8>,
+    /// Layers: its place in its wall's step approach (fig. 4.1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<usize>,
+    pub size_class: FeatureClass,
+    /// Lowest and highest point along the set-up's up, mm.
+    pub z_range: [f64; 2],
+    /// mm³.
+    pub volume_mm3: f64,
+    /// Layers: the volume of the designed box, before the part and earlier
+    /// features took their share, mm³.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub box_volume_mm3: Option<f64>,
+    /// `step_id`s of the part faces it touches.
+    pub faces: Vec<u64>,
+    /// Whether the set-up's tool reaches it from up.
+    pub reachable: bool,
+    /// Other set-up: the direction to reach it from (unit), where known.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<[f64; 3]>,
+    /// What interference did to it, and why.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub changes: Vec<String>,
+    /// Its pieces (in memory, while the decomposition is alive).
+    #[serde(skip)]
+    pub pieces: Vec<Piece>,
+    /// Its solids: each a region of the set-up plane between two heights.
+    pub solids: Vec<FeatureSolid>,
+}
+
+/// A solid of a feature: a polygon of the set-up plane (in the plan's
+/// `frame`) between a lower and an upper height (planes or half
+/// cylinders).
+#[derive(Clone, Debug, Serialize)]
+pub struct FeatureSolid {
+    /// The outer ring (counter-clockwise seen from up), then the holes; in
+    /// the frame's x, y, mm.
+    pub rings: Vec<Vec<[f64; 2]>>,
+    pub lower: Height,
+    pub upper: Height,
+    pub volume_mm3: f64,
+}
+
+/// Assign every removal block to a feature. `layers` in plan order and
+/// `layer_band[i]`, the index of layer i's band in the decomposition (none
+/// for a layer that is not a prism along up).
+pub fn assign(
+    out: &Outcome,
+    r: &Removal,
+    layers: &[Layer],
+    layer_band: &[Option<usize>],
+    band_area: &[f64],
+    tol: f64,
+) -> (Vec<RemovalFeature>, f64) {
+    let owners = face_owners(out);
+    // Slivers of the booleans (under 1e-9 of the stock each): left out,
+    // their total reported.
+    let negligible = SLIVER * r.stock_volume;
+    let mut dropped = 0.0;
+    let mut by_layer: Vec<Vec<Piece>> = vec![Vec::new(); layers.len()];
+    let mut rest: BTreeMap<BulkKey, Vec<Piece>> = BTreeMap::new();
+    for b in &r.blocks {
+        let bands = &r.cell_bands[b.cell];
+        let covering: Vec<usize> = (0..layers.len())
+            .filter(|&i| layer_band[i].is_some_and(|k| bands.contains(&k)))
+            .collect();
+        for piece in split(r, b, covering.iter().map(|&i| layers[i].cut_heights), tol) {
+            if piece.volume.abs() <= negligible {
+                dropped += piece.volume;
+                continue;
+            }
+            let mid = 0.5 * (piece.z[0] + piece.z[1]);
+            let owner = covering.iter().copied().find(|&i| {
+                let z = layers[i].cut_heights;
+                b.reachable && mid >= z[0] - tol && mid <= z[1] + tol
+            });
+            match owner {
+                Some(i) => by_layer[i].push(piece),
+                None => rest
+                    .entry((
+                        b.reachable,
+                        [key(r, &b.lower), key(r, &b.upper)],
+                        [key(r, &piece.lower), key(r, &piece.upper)],
+                    ))
+                    .or_default()
+                    .push(piece),
+            }
+        }
+    }
+    let mut feats = Vec::new();
+    for (li, (l, pieces)) in layers.iter().zip(by_layer).enumerate() {
+        let volume: f64 = pieces.iter().map(|p| p.volume).sum();
+        // The box as the plan cuts it: its band times its cut heights.
+        let box_volume = band_area[li] * (l.cut_heights[1] - l.cut_heights[0]);
+        let mut changes = Vec::new();
+        if pieces.is_empty() {
+            changes.push(
+                "vanished: nothing to remove in its box (outside the stock, or the part and earlier features fill it)"
+                    .to_string(),
+            );
+        } else if (box_volume - volume).abs() > 1e-6 * box_volume {
+            changes.push(format!(
+                "{:.1} mm³ of its {:.1} mm³ box is part material or an earlier feature's",
+                box_volume - volume,
+                box_volume
+            ));
+        }
+        feats.push(RemovalFeature {
+            id: l.id.clone(),
+            owner: Some(l.owner),
+            side: Some(l.side),
+            step: Some(l.step),
+            size_class: match l.size_class {
+                SizeClass::Large => FeatureClass::Large,
+                SizeClass::Small => FeatureClass::Small,
+            },
+            z_range: z_range(&pieces, l.cut_heights),
+            volume_mm3: volume,
+            box_volume_mm3: Some(box_volume),
+            faces: Vec::new(),
+            reachable: true,
+            access: None,
+            changes,
+            pieces,
+            solids: Vec::new(),
+        });
+    }
+    let (mut nb, mut nx) = (0, 0);
+    // Bulk from the top down, then the other set-up's.
+    let mut groups: Vec<(BulkKey, Vec<Piece>)> = rest.into_iter().collect();
+    // Tops compared in tenths of a micrometre: equal heights stay in key
+    // order whatever the rounding of a pose.
+    let top = |p: &Vec<Piece>| {
+        let z = p.iter().map(|q| q.z[1]).fold(f64::NEG_INFINITY, f64::max);
+        (z * 1e4).round() as i64
+    };
+    groups.sort_by(|a, b| b.0 .0.cmp(&a.0 .0).then_with(|| top(&b.1).cmp(&top(&a.1))));
+    for ((reachable, [lo, hi], _), pieces) in groups {
+        let owner = [lo, hi].iter().find_map(|k| match k {
+            Key::Part(step) => owners.get(step).copied(),
+            _ => None,
+        });
+        let id = if reachable {
+            nb += 1;
+            format!("B{nb}")
+        } else {
+            nx += 1;
+            format!("X{nx}")
+        };
+        let access = (!reachable).then(|| access_of(r, &pieces)).flatten();
+        feats.push(RemovalFeature {
+            id,
+            owner,
+            side: None,
+            step: None,
+            size_class: if reachable {
+                FeatureClass::Bulk
+            } else {
+                FeatureClass::OtherSetup
+            },
+            z_range: z_range(&pieces, [0.0, 0.0]),
+            volume_mm3: pieces.iter().map(|p| p.volume).sum(),
+            box_volume_mm3: None,
+            faces: Vec::new(),
+            reachable,
+            access,
+            changes: Vec::new(),
+            pieces,
+            solids: Vec::new(),
+        });
+    }
+    absorb_crumbs(&mut feats, MERGE * r.stock_volume);
+    feats.retain(|f| !f.pieces.is_empty() || f.step.is_some());
+    renumber(&mut feats);
+    for f in &mut feats {
+        f.faces = crate::touch::faces_touched(r, &f.pieces, tol);
+        f.solids = solids(r, &f.pieces);
+    }
+    (feats, dropped)
+}
+
+/// Bulk pieces group by reachability, the block's bounds (what they lie
+/// on and under) and their own ends.
+type BulkKey = (bool, [Key; 2], [Key; 2]);
+
+/// A bound as a grouping key: a part face, a stock face, or a height in
+/// nanometres.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Key {
+    Part(u64),
+    Stock(u64),
+    Flat(i64),
+}
+
+fn key(r: &Removal, b: &Bound) -> Key {
+    match *b {
+        Bound::Part(i) => Key::Part(r.part_step_id(i)),
+        Bound::Stock(i) => Key::Stock(r.stock_pieces[i].face.index() as u64),
+        Bound::Flat(z) => Key::Flat((z * 1e6).round() as i64),
+    }
+}
+
+fn z_range(pieces: &[Piece], empty: [f64; 2]) -> [f64; 2] {
+    if pieces.is_empty() {
+        return empty;
+    }
+    pieces
+        .iter()
+        .fold([f64::INFINITY, f64::NEG_INFINITY], |z, p| {
+            [z[0].min(p.z[0]), z[1].max(p.z[1])]
+        })
+}
+
+/// Stiffness feature per face: walls first (their sides, tops and ends),
+/// then the rest.
+fn face_owners(out: &Outcome) -> HashMap<u64, FeatureId> {
+    let mut m = HashMap::new();
+    for pass in [true, false] {
+        for f in out
+            .recognition
+            .features
+            .iter()
+            .filter(|f| f.kind.is_wall() == pass)
+        {
+            let tops = f.top_end_faces.iter().flatten();
+            for s in f.faces.iter().chain(tops) {
+                m.entry(*s).or_insert(f.id);
+            }
+        }
+    }
+    m
+}
+
+/// A block cut at the given heights (`removal::slab`), as pieces with
+/// their lowest and highest points.
+fn split(
+    r: &Removal,
+    b: &crate::removal::Block,
+    ranges: impl Iterator<Item = [f64; 2]>,
+    tol: f64,
+) -> Vec<Piece> {
+    let mut cuts: Vec<f64> = ranges.flat_map(|z| z.into_iter()).collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup_by(|a, b| (*a - *b).abs() <= tol);
+    crate::removal::slab::cut(r, b, &cuts, tol)
+        .into_iter()
+        .map(|s| {
+            let z = [
+                r.height_range(&s.lower, &s.region)[0],
+                r.height_range(&s.upper, &s.region)[1],
+            ];
+            Piece {
+                cell: b.cell,
+                region: s.region,
+                lower: s.lower,
+                upper: s.upper,
+                z,
+                volume: s.volume,
+                block: [b.lower, b.upper],
+            }
+        })
+        .collect()
+}
+
+/// The way into a region the set-up does not reach: along the axis of a
+/// cylinder bounding it (a hole through an upright wall), or from below
+/// when it opens on the stock's bottom.
+fn access_of(r: &Removal, pieces: &[Piece]) -> Option<[f64; 3]> {
+    for p in pieces {
+        for b in [p.lower, p.upper] {
+            if let Some(d) = r.cylinder_axis(&b) {
+                return Some([d.x, d.y, d.z]);
+            }
+        }
+    }
+    let bottom = r.stock_bottom();
+    if pieces.iter().all(|p| p.lower == Bound::Flat(bottom)) {
+        let d = -r.frame.z;
+        return Some([d.x, d.y, d.z]);
+    }
+    None
+}
+
+/// A feature's pieces merged into solids: pieces between the same two
+/// bounds are one region (their cells' union), one solid per polygon.
+fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
+    use geo::{BooleanOps, MultiPolygon, Orient};
+    let mut groups: Vec<([Bound; 2], Vec<usize>)> = Vec::new();
+    for (i, p) in pieces.iter().enumerate() {
+        match groups.iter_mut().find(|g| g.0 == [p.lower, p.upper]) {
+            Some(g) => g.1.push(i),
+            None => groups.push(([p.lower, p.upper], vec![i])),
+        }
+    }
+    let mut out = Vec::new();
+    for ([lo, hi], members) in groups {
+        let mut region = MultiPolygon::new(vec![]);
+        for &i in &members {
+            let cell = &pieces[i].region;
+            region = if region.0.is_empty() {
+                cell.clone()
+            } else {
+                region.union(cell)
+            };
+        }
+        let (lower, upper) = (r.height_of(&lo), r.height_of(&hi));
+        let sliver = SLIVER * r.stock_volume.cbrt().powi(2);
+        for poly in region.0 {
+            // Unions of cells cut by separate booleans leave slivers and
+            // hairline holes where shared edges differ by rounding.
+            if crate::removal::flux::area(&poly) <= sliver {
+                continue;
+            }
+            let (ext, holes) = poly.into_inner();
+            let holes = holes
+                .into_iter()
+                .filter(|h| {
+                    crate::removal::flux::area(&geo::Polygon::new(h.clone(), vec![])) > sliver
+                })
+                .collect();
+            let poly = geo::Polygon::new(ext, holes).orient(geo::orient::Direction::Default);
+            let volume_mm3 = crate::removal::flux::flux(&upper, &poly)
+                - crate::removal::flux::flux(&lower, &poly);
+            let ring = |ls: &geo::LineString<f64>| {
+                let mut v: Vec<[f64; 2]> = ls.0.iter().map(|c| [c.x, c.y]).collect();
+                v.pop();
+                v
+            };
+            let mut rings = vec![ring(poly.exterior())];
+            rings.extend(poly.interiors().iter().map(ring));
+            out.push(FeatureSolid {
+                rings,
+                lower,
+                upper,
+                volume_mm3,
+            });
+        }
+    }
+    out
+}
+
+/// Tiny bulk features join a neighbour in their column (the feature whose
+/// piece ends where theirs begins, or begins where theirs ends).
+fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
+    for i in 0..feats.len() {
+        let f = &feats[i];
+        if f.step.is_some() || f.volume_mm3 >= limit || f.pieces.is_empty() {
+            continue;
+        }
+        let mut keep = Vec::new();
+        for p in std::mem::take(&mut feats[i].pieces) {
+            let host = (0..feats.len()).find(|&j| {
+                j != i
+                    && feats[j].volume_mm3 >= limit
+                    && feats[j].reachable == feats[i].reachable
+                    && feats[j]
+                        .pieces
+                        .iter()
+                        .any(|q| q.cell == p.cell && (q.upper == p.lower || q.lower == p.upper))
+            });
+            match host {
+                Some(j) => {
+                    feats[j].volume_mm3 += p.volume;
+                    feats[j].z_range = [
+                        feats[j].z_range[0].min(p.z[0]),
+                        feats[j].z_range[1].max(p.z[1]),
+                    ];
+                    feats[j].pieces.push(p);
+                }
+                None => keep.push(p),
+            }
+        }
+        feats[i].volume_mm3 = keep.iter().map(|p| p.volume).sum();
+        feats[i].pieces = keep;
+    }
+}
+
+/// Bulk and other-set-up ids numbered again in order after merging.
+fn renumber(feats: &mut [RemovalFeature]) {
+    let (mut nb, mut nx) = (0, 0);
+    for f in feats.iter_mut() {
+        match f.size_class {
+            FeatureClass::Bulk => {
+                nb += 1;
+                f.id = format!("B{nb}");
+            }
+            FeatureClass::OtherSetup => {
+                nx += 1;
+                f.id = format!("X{nx}");
+            }
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,507 @@
+//! The material to remove, exactly: stock minus part, cut into vertical
+//! blocks over the cells of the arrangement of the part's projections on
+//! the set-up plane (a vertical decomposition).
+//!
+//! Every face that is not vertical is a graph `z = h(x, y)` over its
+//! projection ([`pieces`]); over one cell of the arrangement ([`cells`]) a
+//! vertical line meets the same pieces in the same order, so the material
+//! over a cell is a list of intervals between pieces, and the removal is
+//! the stock's intervals minus those. A block's volume is the difference
+//! of two fluxes `∫∫ h dA` over its cell ([`flux`]), exact for planes and
+//! closed-form for cylinders and cones: the blocks add up to
+//! volume(stock) − volume(part) to rounding, with no overlap and no gap by
+//! construction. Projections of curved edges are sampled so that areas are
+//! kept ([`sample`]).
+//!
+//! A block is reachable from up when nothing of the part lies above it.
+
+pub mod cells;
+pub mod flux;
+pub mod pieces;
+pub mod sample;
+pub mod slab;
+
+use cells::{arrange, Cover};
+use geo::{Coord, MultiPolygon, Rect};
+use pieces::{Facing, Piece};
+use thinwall_analysis::PartAnalysis;
+use thinwall_brep::Part;
+use thinwall_geom::{Frame, Vector3};
+use thiserror::Error;
+
+/// Why the removal cannot be decomposed.
+#[derive(Clone, Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum RemovalError {
+    #[error("face #{step_id} is {reason}")]
+    UnsupportedFace { step_id: u64, reason: String },
+    #[error("the stock does not contain the part over {area_mm2:.3} mm² of its footprint")]
+    StockTooSmall { area_mm2: f64 },
+}
+
+impl RemovalError {
+    pub fn code(&self) -> &'static str {
+        match self {
+            RemovalError::UnsupportedFace { .. } => "unsupported_face",
+            RemovalError::StockTooSmall { .. } => "stock_too_small",
+        }
+    }
+}
+
+/// The stock to remove from.
+pub enum StockShape<'a> {
+    /// A block in the removal frame: `lo`, `hi` corners.
+    Block { lo: [f64; 3], hi: [f64; 3] },
+    /// A given solid (a blank, a casting envelope).
+    Solid(&'a Part),
+}
+
+/// A block's lower or upper end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Bound {
+    /// A horizontal plane of the block stock, mm.
+    Flat(f64),
+    /// A piece of the part.
+    Part(usize),
+    /// A piece of the stock solid.
+    Stock(usize),
+}
+
+/// Material to remove over one cell, between two bounds.
+#[derive(Clone, Debug)]
+pub struct Block {
+    pub cell: usize,
+    pub lower: Bound,
+    pub upper: Bound,
+    /// Nothing of the part lies above it.
+    pub reachable: bool,
+    pub volume: f64,
+}
+
+/// The decomposition.
+pub struct Removal {
+    /// z = the set-up's up.
+    pub frame: Frame,
+    pub part_pieces: Vec<Piece>,
+    pub stock_pieces: Vec<Piece>,
+    pub cells: Vec<cells::Cell>,
+    /// Per cell, the indices into the band list it lies in.
+    pub cell_bands: Vec<Vec<usize>>,
+    pub blocks: Vec<Block>,
+    pub stock_volume: f64,
+    pub part_volume: f64,
+    /// The part's vertical faces, for which faces a block touches.
+    pub vertical: Vec<pieces::Vertical>,
+    /// The block stock's bottom (none for a given solid), mm.
+    bottom: Option<f64>,
+    /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
+    /// booleans where edges coincide up to rounding), left out, mm³.
+    pub sliver_volume: f64,
+}
+
+/// A cell whose mean width (2·area / perimeter) is under this fraction of
+/// the part's size is a sliver of the 2-D booleans: the booleans round to
+/// a grid of about 1e-9 of their inputs' extent, so their decisions there
+/// are noise.
+pub const SLIVER_WIDTH: f64 = 1e-6;
+
+fn mean_width(p: &geo::Polygon<f64>) -> f64 {
+    use geo::{Euclidean, Length};
+    let perimeter: f64 = std::iter::once(p.exterior())
+        .chain(p.interiors())
+        .map(|r| r.length::<Euclidean>())
+        .sum();
+    if perimeter > 0.0 {
+        2.0 * flux::area(p) / perimeter
+    } else {
+        0.0
+    }
+}
+
+/// The removal frame of a set-up: z is up, x and y the stock's other two
+/// axes (the longer first), right-handed.
+pub fn frame_of(a: &PartAnalysis, up: Vector3) -> (Frame, [f64; 3], [f64; 3]) {
+    let stock = thinwall_machining::stock::Stock::of(a, Some(up));
+    let k_up = (0..3)
+        .max_by(|&i, &j| {
+            stock.axes[i]
+                .dot(&up)
+                .abs()
+                .total_cmp(&stock.axes[j].dot(&up).abs())
+        })
+        .unwrap_or(2);
+    let range = |k: usize| (-stock.plane_offset(2 * k), stock.plane_offset(2 * k + 1));
+    let others: Vec<usize> = (0..3).filter(|&k| k != k_up).collect();
+    let ext = |k: usize| range(k).1 - range(k).0;
+    let (mut i, mut j) = (others[0], others[1]);
+    if ext(j) > ext(i) + 1e-9 * ext(i).max(1.0) {
+        std::mem::swap(&mut i, &mut j);
+    }
+    let x = stock.axes[i];
+    let mut y = stock.axes[j];
+    let mut flip_y = false;
+    if x.cross(&y).dot(&up) < 0.0 {
+        y = -y;
+        flip_y = true;
+    }
+    let frame = Frame {
+        origin: thinwall_geom::Point3::origin(),
+        x,
+        y,
+        z: up,
+    };
+    let (xlo, xhi) = range(i);
+    let (mut ylo, mut yhi) = range(j);
+    if flip_y {
+        (ylo, yhi) = (-yhi, -ylo);
+    }
+    let (mut zlo, mut zhi) = range(k_up);
+    if stock.axes[k_up].dot(&up) < 0.0 {
+        (zlo, zhi) = (-zhi, -zlo);
+    }
+    (frame, [xlo, ylo, zlo], [xhi, yhi, zhi])
+}
+
+impl Bound {
+    fn height<'a>(&self, part: &'a [Piece], stock: &'a [Piece]) -> Option<&'a pieces::Height> {
+        match *self {
+            Bound::Flat(_) => None,
+            Bound::Part(i) => Some(&part[i].height),
+            Bound::Stock(i) => Some(&stock[i].height),
+        }
+    }
+}
+
+impl Removal {
+    /// Decompose `stock − part` in `frame`, cutting cells also along every
+    /// band (regions the planner wants features to follow).
+    pub fn new(
+        part: &Part,
+        frame: Frame,
+        stock: &StockShape,
+        bands: &[MultiPolygon<f64>],
+        size: f64,
+    ) -> Result<Self, RemovalError> {
+        let part_pieces = pieces::pieces(part, &frame)?;
+        let stock_pieces = match stock {
+            StockShape::Solid(s) => pieces::pieces(s, &frame)?,
+            StockShape::Block { .. } => vec![],
+        };
+        let start = match stock {
+            StockShape::Block { lo, hi } => {
+                Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] })
+            }
+            StockShape::Solid(_) => {
+                let mut r = [
+                    f64::INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::NEG_INFINITY,
+                ];
+                for p in part_pieces.iter().chain(&stock_pieces) {
+                    r = [
+                        r[0].min(p.bbox.min().x),
+                        r[1].min(p.bbox.min().y),
+                        r[2].max(p.bbox.max().x),
+                        r[3].max(p.bbox.max().y),
+                    ];
+                }
+                let pad = 1e-3 * size;
+                Rect::new(
+                    Coord {
+                        x: r[0] - pad,
+                        y: r[1] - pad,
+                    },
+                    Coord {
+                        x: r[2] + pad,
+                        y: r[3] + pad,
+                    },
+                )
+            }
+        };
+        let band_boxes: Vec<Rect<f64>> = bands
+            .iter()
+            .map(|b| {
+                geo::BoundingRect::bounding_rect(b).unwrap_or(Rect::new(
+                    Coord { x: 0.0, y: 0.0 },
+                    Coord { x: 0.0, y: 0.0 },
+                ))
+            })
+            .collect();
+        let mut covers: Vec<Cover> = Vec::new();
+        for p in part_pieces.iter().chain(&stock_pieces) {
+            covers.push(Cover {
+                region: &p.region,
+                bbox: p.bbox,
+            });
+        }
+        for (b, bb) in bands.iter().zip(&band_boxes) {
+            covers.push(Cover {
+                region: b,
+                bbox: *bb,
+            });
+        }
+        let min_area = (1e-7 * size).powi(2);
+        let cells = arrange(start.to_polygon(), &covers, min_area);
+        let np = part_pieces.len();
+        let ns = stock_pieces.len();
+        let mut cell_bands = Vec::with_capacity(cells.len());
+        let mut blocks = Vec::new();
+        let mut missing = 0.0;
+        let mut sliver_volume = 0.0;
+        for (ci, c) in cells.iter().enumerate() {
+            cell_bands.push(
+                c.covers
+                    .iter()
+                    .filter(|&&k| k >= np + ns)
+                    .map(|&k| k - np - ns)
+                    .collect(),
+            );
+            let pt = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
+            let at = |pc: &Piece| pc.height.at(pt.x(), pt.y());
+            let part_cross: Vec<(f64, Facing, Bound)> = c
+                .covers
+                .iter()
+                .filter(|&&k| k < np)
+                .map(|&k| (at(&part_pieces[k]), part_pieces[k].facing, Bound::Part(k)))
+                .collect();
+            let stock_cross: Vec<(f64, Facing, Bound)> = match stock {
+                StockShape::Block { lo, hi } => vec![
+                    (lo[2], Facing::Down, Bound::Flat(lo[2])),
+                    (hi[2], Facing::Up, Bound::Flat(hi[2])),
+                ],
+                StockShape::Solid(_) => c
+                    .covers
+                    .iter()
+                    .filter(|&&k| k >= np && k < np + ns)
+                    .map(|&k| {
+                        (
+                            at(&stock_pieces[k - np]),
+                            stock_pieces[k - np].facing,
+                            Bound::Stock(k - np),
+                        )
+                    })
+                    .collect(),
+            };
+            let solid = intervals(part_cross);
+            let stock_iv = intervals(stock_cross);
+            // Part material outside the stock: the stock is too small.
+            for (lo, hi) in &solid {
+                let inside: f64 = stock_iv
+                    .iter()
+                    .map(|(a, b)| (hi.0.min(b.0) - lo.0.max(a.0)).max(0.0))
+                    .sum();
+                if hi.0 - lo.0 - inside > 1e-6 * size {
+                    missing += c.area;
+                }
+            }
+            let top = stock_iv.last().map(|iv| iv.1 .0);
+            let sliver = mean_width(&c.poly) < SLIVER_WIDTH * size;
+            for (lo, hi) in subtract(&stock_iv, &solid) {
+                let vol = |b: &Bound, z: f64| match b.height(&part_pieces, &stock_pieces) {
+                    None => z * c.area,
+                    Some(h) => flux::flux(h, &c.poly),
+                };
+                let volume = vol(&hi.1, hi.0) - vol(&lo.1, lo.0);
+                if sliver {
+                    sliver_volume += volume;
+                    continue;
+                }
+                blocks.push(Block {
+                    cell: ci,
+                    lower: lo.1,
+                    upper: hi.1,
+                    reachable: Some(hi.0) == top,
+                    volume,
+                });
+            }
+        }
+        if missing > min_area.max(1e-6 * size * size) {
+            return Err(RemovalError::StockTooSmall { area_mm2: missing });
+        }
+        let part_volume = signed_volume(&part_pieces);
+        let stock_volume = match stock {
+            StockShape::Block { lo, hi } => (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]),
+            StockShape::Solid(_) => signed_volume(&stock_pieces),
+        };
+        let vertical = pieces::vertical_faces(part, &frame);
+        let bottom = match stock {
+            StockShape::Block { lo, .. } => Some(lo[2]),
+            StockShape::Solid(_) => None,
+        };
+        Ok(Self {
+            sliver_volume,
+            vertical,
+            bottom,
+            frame,
+            part_pieces,
+            stock_pieces,
+            cells,
+            cell_bands,
+            blocks,
+            stock_volume,
+            part_volume,
+        })
+    }
+
+    /// The lowest and highest height of a bound over a region, mm.
+    pub fn height_range(&self, b: &Bound, region: &MultiPolygon<f64>) -> [f64; 2] {
+        let h = self.height_of(b);
+        let mut z = [f64::INFINITY, f64::NEG_INFINITY];
+        for p in &region.0 {
+            for c in p.exterior().0.iter() {
+                let v = h.at(c.x, c.y);
+                z = [z[0].min(v), z[1].max(v)];
+            }
+        }
+        if let pieces::Height::Cylinder { sign, .. } = h {
+            // A half cylinder's crest may lie inside the region.
+            let crest = self.bound_range(b)[usize::from(sign > 0.0)];
+            if region.0.iter().any(|p| {
+                let (lo, hi) = p.exterior().0.iter().fold(
+                    (f64::INFINITY, f64::NEG_INFINITY),
+                    |(lo, hi), c| {
+                        let u = h.across(c.x, c.y);
+                        (lo.min(u), hi.max(u))
+                    },
+                );
+                lo <= 0.0 && hi >= 0.0
+            }) {
+                z = [z[0].min(crest), z[1].max(crest)];
+            }
+        }
+        z
+    }
+
+    /// A bound's height function (a flat bound is a horizontal plane).
+    pub fn height_of(&self, b: &Bound) -> pieces::Height {
+        match *b {
+            Bound::Flat(z) => pieces::Height::plane(z, 0.0, 0.0),
+            Bound::Part(i) => self.part_pieces[i].height,
+            Bound::Stock(i) => self.stock_pieces[i].height,
+        }
+    }
+
+    /// The `step_id` of part piece `i`'s face.
+    pub fn part_step_id(&self, i: usize) -> u64 {
+        self.part_pieces[i].step_id
+    }
+
+    /// The block stock's bottom height, mm (NaN for a given solid).
+    pub fn stock_bottom(&self) -> f64 {
+        self.bottom.unwrap_or(f64::NAN)
+    }
+
+    /// The axis (world, unit) of a bound that is a half cylinder.
+    pub fn cylinder_axis(&self, b: &Bound) -> Option<Vector3> {
+        let Bound::Part(i) = *b else { return None };
+        match self.part_pieces[i].height {
+            pieces::Height::Cylinder { a, .. } => {
+                Some(self.frame.vector_to_world(&Vector3::new(a[0], a[1], 0.0)))
+            }
+            _ => None,
+        }
+    }
+
+    /// Sum of the blocks' volumes, mm³.
+    pub fn removed_volume(&self) -> f64 {
+        self.blocks.iter().map(|b| b.volume).sum()
+    }
+
+    /// The lowest and highest height of a bound over a cell, mm.
+    pub fn bound_range(&self, b: &Bound) -> [f64; 2] {
+        match *b {
+            Bound::Flat(z) => [z, z],
+            Bound::Part(i) => self.part_pieces[i].z_range,
+            Bound::Stock(i) => self.stock_pieces[i].z_range,
+        }
+    }
+
+    /// Volume of the block's cell between `lo` and `hi`, each a bound or a
+    /// flat cut, mm³.
+    pub fn volume_between(&self, cell: usize, lo: &Bound, hi: &Bound) -> f64 {
+        let c = &self.cells[cell];
+        let v = |b: &Bound| match *b {
+            Bound::Flat(z) => z * c.area,
+            Bound::Part(i) => flux::flux(&self.part_pieces[i].height, &c.poly),
+            Bound::Stock(i) => flux::flux(&self.stock_pieces[i].height, &c.poly),
+        };
+        v(hi) - v(lo)
+    }
+}
+
+/// A solid's volume from its pieces: Σ ±∫∫ h (divergence theorem with
+/// the field (0, 0, z)).
+pub fn signed_volume(pieces: &[Piece]) -> f64 {
+    pieces
+        .iter()
+        .map(|p| {
+            let f: f64 = p
+                .region
+                .0
+                .iter()
+                .map(|poly| flux::flux(&p.height, poly))
+                .sum();
+            match p.facing {
+                Facing::Up => f,
+                Facing::Down => -f,
+            }
+        })
+        .sum()
+}
+
+type End = (f64, Bound);
+
+/// Material intervals along a vertical line from the faces it crosses:
+/// entering through a face facing down, leaving through one facing up.
+fn intervals(mut cross: Vec<(f64, Facing, Bound)>) -> Vec<(End, End)> {
+    cross.sort_by(|a, b| {
+        a.0.total_cmp(&b.0)
+            .then_with(|| (a.1 == Facing::Down).cmp(&(b.1 == Facing::Down)))
+    });
+    let mut out = Vec::new();
+    let mut depth = 0i32;
+    let mut start: Option<End> = None;
+    for (z, facing, b) in cross {
+        match facing {
+            Facing::Down => {
+                if depth == 0 {
+                    start = Some((z, b));
+                }
+                depth += 1;
+            }
+            Facing::Up => {
+                if depth == 1 {
+                    if let Some(s) = start.take() {
+                        out.push((s, (z, b)));
+                    }
+                }
+                depth = (depth - 1).max(0);
+            }
+        }
+    }
+    out
+}
+
+/// `a − b` for sorted, disjoint interval lists.
+fn subtract(a: &[(End, End)], b: &[(End, End)]) -> Vec<(End, End)> {
+    let mut out = Vec::new();
+    for &(lo, hi) in a {
+        let mut cur = lo;
+        for &(blo, bhi) in b {
+            if bhi.0 <= cur.0 || blo.0 >= hi.0 {
+                continue;
+            }
+            if blo.0 > cur.0 {
+                out.push((cur, blo));
+            }
+            if bhi.0 > cur.0 {
+                cur = bhi;
+            }
+        }
+        if hi.0 > cur.0 {
+            out.push((cur, hi));
+        }
+    }
+    out
+}

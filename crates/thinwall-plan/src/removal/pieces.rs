@@ -1,0 +1,586 @@
+//! The part seen from the set-up's up: every face that is not vertical,
+//! cut where needed into pieces that are graphs `z = h(x, y)` over their
+//! projection, each facing up (material below) or down (material above).
+//!
+//! Supported: planes at any angle, cylinders whose axis is square to up
+//! (foot fillets, holes through upright walls; cut at their silhouettes),
+//! cones about an axis along up (countersinks, drafted bosses). Vertical
+//! faces (planes along up, cylinders about an axis along up) project to
+//! curves and carry no volume. Any other surface makes the removal plan
+//! unavailable, with the face named.
+
+use super::sample::face_loop_points;
+use super::RemovalError;
+use geo::{BooleanOps, Coord, LineString, MultiPolygon, Orient, Polygon, Rect};
+use thinwall_brep::{FaceId, Part};
+use thinwall_geom::{Frame, Point3, Surface};
+
+/// |n·up| below this: the face is vertical (projects to a curve).
+const VERTICAL_EPS: f64 = 1e-9;
+
+/// Which side of a piece the material is on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Facing {
+    /// Outward normal up: material below.
+    Up,
+    /// Outward normal down: material above.
+    Down,
+}
+
+/// A piece's height over the set-up plane, in the removal frame.
+///
+/// Every variant fills the same seven numbers (`pad` makes up the rest):
+/// a value built on the stack is then initialised all through, which
+/// valgrind needs to follow optimised code that reads the payload before
+/// it branches on the variant.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Height {
+    /// `z = z0 + gx·x + gy·y`.
+    Plane {
+        z0: f64,
+        gx: f64,
+        gy: f64,
+        #[serde(skip)]
+        pad: [f64; 4],
+    },
+    /// Half of a cylinder about a horizontal axis through `(ox, oy, oz)`
+    /// along `(ax, ay)`: `z = oz + sign·√(r² − u²)`, `u` across the axis.
+    Cylinder {
+        o: [f64; 3],
+        a: [f64; 2],
+        r: f64,
+        sign: f64,
+    },
+    /// A cone about a vertical axis through `(cx, cy)`: `z = z0 + k·ρ`.
+    Cone {
+        c: [f64; 2],
+        z0: f64,
+        k: f64,
+        #[serde(skip)]
+        pad: [f64; 3],
+    },
+}
+
+/// A graph piece of one face.
+#[derive(Clone, Debug)]
+pub struct Piece {
+    pub face: FaceId,
+    pub step_id: u64,
+    pub facing: Facing,
+    pub region: MultiPolygon<f64>,
+    pub height: Height,
+    pub bbox: Rect<f64>,
+    /// Lowest and highest height over the region, mm.
+    pub z_range: [f64; 2],
+}
+
+/// Every graph piece of `part` in `frame` (z = up).
+pub fn pieces(part: &Part, frame: &Frame) -> Result<Vec<Piece>, RemovalError> {
+    let mut out = Vec::new();
+    for f in part.face_ids() {
+        out.extend(face_pieces(part, f, frame)?);
+    }
+    Ok(out)
+}
+
+fn unsupported(part: &Part, f: FaceId, why: &str) -> RemovalError {
+    RemovalError::UnsupportedFace {
+        step_id: part.face(f).step_id,
+        reason: why.to_string(),
+    }
+}
+
+fn face_pieces(part: &Part, f: FaceId, frame: &Frame) -> Result<Vec<Piece>, RemovalError> {
+    let face = part.face(f);
+    let sense = if face.same_sense { 1.0 } else { -1.0 };
+    let local = |p: &Point3| frame.to_local(p);
+    match &face.surface {
+        Surface::Plane { frame: pf } => {
+            let n = frame.vector_to_local(&pf.z) * sense;
+            if n.z.abs() < VERTICAL_EPS {
+                return Ok(vec![]);
+            }
+            let o = local(&pf.origin);
+            // n·(p − o) = 0  ⇒  z = o.z − (n.x (x − o.x) + n.y (y − o.y)) / n.z
+            let (gx, gy) = (-n.x / n.z, -n.y / n.z);
+            let height = Height::plane(o.z - gx * o.x - gy * o.y, gx, gy);
+            let facing = if n.z > 0.0 { Facing::Up } else { Facing::Down };
+            let region = project(part, f, frame);
+            Ok(finish(f, face.step_id, facing, region, height))
+        }
+        Surface::Cylinder { frame: cf, radius } => {
+            let a = frame.vector_to_local(&cf.z);
+            if a.z.abs() > 1.0 - VERTICAL_EPS {
+                return Ok(vec![]);
+            }
+            if a.z.abs() > VERTICAL_EPS {
+                return Err(unsupported(part, f, "a cylinder tilted to the tool axis"));
+            }
+            cylinder_pieces(part, f, frame, cf, *radius, sense)
+        }
+        Surface::Cone { frame: cf, .. } => {
+            let a = frame.vector_to_local(&cf.z);
+            if a.z.abs() < 1.0 - VERTICAL_EPS {
+                return Err(unsupported(
+                    part,
+                    f,
+                    "a cone whose axis is not the tool axis",
+                ));
+            }
+            cone_piece(part, f, frame, &face.surface, cf, sense)
+        }
+        other => Err(unsupported(
+            part,
+            f,
+            &format!(
+                "a {} (not yet a graph over the set-up plane)",
+                other.kind_name()
+            ),
+        )),
+    }
+}
+
+/// Region, bounding box and height range of a finished piece; none when
+/// the region is empty.
+fn finish(
+    f: FaceId,
+    step_id: u64,
+    facing: Facing,
+    region: MultiPolygon<f64>,
+    height: Height,
+) -> Vec<Piece> {
+    use geo::BoundingRect;
+    let Some(bbox) = region.bounding_rect() else {
+        return vec![];
+    };
+    let mut z_range = [f64::INFINITY, f64::NEG_INFINITY];
+    for p in region.0.iter() {
+        for c in p.exterior().0.iter() {
+            let z = height.at(c.x, c.y);
+            z_range = [z_range[0].min(z), z_range[1].max(z)];
+        }
+    }
+    if let Height::Cylinder { o, sign, r, .. } = height {
+        // The crest of a half cylinder lies inside its projection when the
+        // region spans the axis.
+        let (lo, hi) = region
+            .0
+            .iter()
+            .flat_map(|p| p.exterior().0.iter())
+            .map(|c| height.u(c.x, c.y))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), u| {
+                (lo.min(u), hi.max(u))
+            });
+        if lo <= 0.0 && hi >= 0.0 {
+            let crest = o[2] + sign * r;
+            z_range = [z_range[0].min(crest), z_range[1].max(crest)];
+        }
+    }
+    vec![Piece {
+        face: f,
+        step_id,
+        facing,
+        region,
+        height,
+        bbox,
+        z_range,
+    }]
+}
+
+impl Height {
+    /// `z = z0 + gx·x + gy·y`.
+    pub fn plane(z0: f64, gx: f64, gy: f64) -> Self {
+        Height::Plane {
+            z0,
+            gx,
+            gy,
+            pad: [0.0; 4],
+        }
+    }
+
+    /// `z = z0 + k·ρ` about `(c[0], c[1])`.
+    pub fn cone(c: [f64; 2], z0: f64, k: f64) -> Self {
+        Height::Cone {
+            c,
+            z0,
+            k,
+            pad: [0.0; 3],
+        }
+    }
+
+    /// Distance across a cylinder's axis (0 for the others).
+    pub fn across(&self, x: f64, y: f64) -> f64 {
+        self.u(x, y)
+    }
+
+    fn u(&self, x: f64, y: f64) -> f64 {
+        match *self {
+            Height::Cylinder { o, a, .. } => (x - o[0]) * (-a[1]) + (y - o[1]) * a[0],
+            _ => 0.0,
+        }
+    }
+
+    /// The height at `(x, y)`, mm.
+    pub fn at(&self, x: f64, y: f64) -> f64 {
+        match *self {
+            Height::Plane { z0, gx, gy, .. } => z0 + gx * x + gy * y,
+            Height::Cylinder { o, r, sign, .. } => {
+                let u = self.u(x, y).clamp(-r, r);
+                o[2] + sign * (r * r - u * u).max(0.0).sqrt()
+            }
+            Height::Cone { c, z0, k, .. } => z0 + k * (x - c[0]).hypot(y - c[1]),
+        }
+    }
+
+    /// Whether the height is one constant (a horizontal plane).
+    pub fn flat(&self) -> Option<f64> {
+        match *self {
+            Height::Plane { z0, gx, gy, .. } if gx == 0.0 && gy == 0.0 => Some(z0),
+            Height::Plane { z0, gx, gy, .. } if gx.abs() < 1e-15 && gy.abs() < 1e-15 => Some(z0),
+            _ => None,
+        }
+    }
+}
+
+/// A face's loops projected on the frame's xy plane.
+fn project(part: &Part, f: FaceId, frame: &Frame) -> MultiPolygon<f64> {
+    let rings: Vec<LineString<f64>> = face_loop_points(part, f)
+        .iter()
+        .map(|pts| {
+            ring(pts.iter().map(|p| {
+                let l = frame.to_local(p);
+                (l.x, l.y)
+            }))
+        })
+        .collect();
+    polygon_of_rings(rings)
+}
+
+/// A closed ring from points.
+pub fn ring(pts: impl Iterator<Item = (f64, f64)>) -> LineString<f64> {
+    let mut cs: Vec<Coord<f64>> = pts.map(|(x, y)| Coord { x, y }).collect();
+    if let Some(&c) = cs.first() {
+        cs.push(c);
+    }
+    LineString::new(cs)
+}
+
+/// The region of a face's rings (even-odd: the largest ring outside, the
+/// others cut out), as a valid polygon.
+fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
+    use geo::Area;
+    let mut region = MultiPolygon::new(vec![]);
+    let mut order: Vec<(f64, LineString<f64>)> = rings
+        .into_iter()
+        .map(|r| (Polygon::new(r.clone(), vec![]).unsigned_area(), r))
+        .collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for (_, r) in order {
+        let p = MultiPolygon::new(vec![
+            Polygon::new(r, vec![]).orient(geo::orient::Direction::Default)
+        ]);
+        region = if region.0.is_empty() {
+            p
+        } else {
+            region.xor(&p)
+        };
+    }
+    region
+}
+
+/// A cylinder about a horizontal axis: its region in (θ, s) (θ about the
+/// axis from the horizontal, s along it), cut into the half facing up and
+/// the half facing down, each mapped onto the plane.
+fn cylinder_pieces(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    cf: &Frame,
+    r: f64,
+    sense: f64,
+) -> Result<Vec<Piece>, RemovalError> {
+    use std::f64::consts::{PI, TAU};
+    let o = frame.to_local(&cf.origin);
+    let a3 = frame.vector_to_local(&cf.z);
+    let a = [a3.x, a3.y];
+    let an = (a[0] * a[0] + a[1] * a[1]).sqrt();
+    let a = [a[0] / an, a[1] / an];
+    let b = [-a[1], a[0]];
+    let to_ts = |p: &Point3| {
+        let l = frame.to_local(p);
+        let (dx, dy, dz) = (l.x - o.x, l.y - o.y, l.z - o.z);
+        let s = dx * a[0] + dy * a[1];
+        let u = dx * b[0] + dy * b[1];
+        (dz.atan2(u), s)
+    };
+    let loops = face_loop_points(part, f);
+    let mut wrapped = Vec::new();
+    let mut open = Vec::new();
+    for lp in &loops {
+        let mut pts: Vec<(f64, f64)> = Vec::with_capacity(lp.len());
+        for p in lp {
+            let (mut t, s) = to_ts(p);
+            if let Some(&(prev, _)) = pts.last() {
+                while t - prev > PI {
+                    t -= TAU;
+                }
+                while t - prev < -PI {
+                    t += TAU;
+                }
+            }
+            pts.push((t, s));
+        }
+        let turn = pts.last().unwrap().0 - pts[0].0 + wrap_step(pts[0].0 - pts.last().unwrap().0);
+        if turn.abs() > PI {
+            wrapped.push(pts);
+        } else {
+            open.push(pts);
+        }
+    }
+    let region = match wrapped.len() {
+        0 => {
+            // Shift every loop next to the first one's mean angle.
+            let mean = |p: &Vec<(f64, f64)>| p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
+            let m0 = open.first().map(mean).unwrap_or(0.0);
+            let rings = open
+                .iter()
+                .map(|p| {
+                    let k = ((m0 - mean(p)) / TAU).round() * TAU;
+                    ring(p.iter().map(|q| (q.0 + k, q.1)))
+                })
+                .collect();
+            polygon_of_rings(rings)
+        }
+        2 => {
+            // A tube: the strip between the two wrapping loops, over one turn.
+            let band = |p: &Vec<(f64, f64)>| {
+                let mut q: Vec<(f64, f64)> =
+                    p.iter().map(|&(t, s)| (t.rem_euclid(TAU), s)).collect();
+                q.sort_by(|x, y| x.0.total_cmp(&y.0));
+                q
+            };
+            let (l0, l1) = (band(&wrapped[0]), band(&wrapped[1]));
+            let edge = |q: &Vec<(f64, f64)>, t: f64| {
+                // s at the seam by the nearest samples on either side.
+                let (first, last) = (q[0], q[q.len() - 1]);
+                let span = first.0 + TAU - last.0;
+                let w = if span > 0.0 { (t - last.0) / span } else { 0.5 };
+                last.1 + (first.1 - last.1) * w
+            };
+            let mut pts = vec![(0.0, edge(&l0, TAU))];
+            pts.extend(l0.iter().copied());
+            pts.push((TAU, edge(&l0, TAU)));
+            pts.push((TAU, edge(&l1, TAU)));
+            pts.extend(l1.iter().rev().copied());
+            pts.push((0.0, edge(&l1, TAU)));
+            let mut region = polygon_of_rings(vec![ring(pts.into_iter())]);
+            for p in &open {
+                let mean = p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
+                let k = ((PI - mean) / TAU).round() * TAU;
+                let hole = MultiPolygon::new(vec![Polygon::new(
+                    ring(p.iter().map(|q| (q.0 + k, q.1))),
+                    vec![],
+                )]);
+                region = region.difference(&hole);
+            }
+            region
+        }
+        _ => {
+            return Err(unsupported(
+                part,
+                f,
+                "a cylinder whose loops wind around it other than as a tube",
+            ))
+        }
+    };
+    // Facing up where sense·sin θ > 0 (the outward normal is sense·radial).
+    let (slo, shi) = s_range(&region);
+    let mut out = Vec::new();
+    for (half, sign) in [(0.0, 1.0), (PI, -1.0)] {
+        let mut clip = MultiPolygon::new(vec![]);
+        for k in -2..=2 {
+            let t0 = half + TAU * k as f64;
+            clip.0.push(
+                Rect::new(
+                    Coord {
+                        x: t0,
+                        y: slo - 1.0,
+                    },
+                    Coord {
+                        x: t0 + PI,
+                        y: shi + 1.0,
+                    },
+                )
+                .to_polygon(),
+            );
+        }
+        let part_region = region.intersection(&clip);
+        if part_region.0.is_empty() {
+            continue;
+        }
+        let map = |t: f64, s: f64| {
+            let (u, _v) = (r * t.cos(), r * t.sin());
+            (o.x + a[0] * s + b[0] * u, o.y + a[1] * s + b[1] * u)
+        };
+        let planar: MultiPolygon<f64> = MultiPolygon::new(
+            part_region
+                .0
+                .iter()
+                .map(|p| {
+                    let m = |ls: &LineString<f64>| {
+                        LineString::new(
+                            ls.0.iter()
+                                .map(|c| {
+                                    let (x, y) = map(c.x, c.y);
+                                    Coord { x, y }
+                                })
+                                .collect(),
+                        )
+                    };
+                    Polygon::new(m(p.exterior()), p.interiors().iter().map(m).collect())
+                        .orient(geo::orient::Direction::Default)
+                })
+                .collect(),
+        );
+        let facing = if sense * sign > 0.0 {
+            Facing::Up
+        } else {
+            Facing::Down
+        };
+        out.extend(finish(
+            f,
+            part.face(f).step_id,
+            facing,
+            planar,
+            Height::Cylinder {
+                o: [o.x, o.y, o.z],
+                a,
+                r,
+                sign,
+            },
+        ));
+    }
+    Ok(out)
+}
+
+/// The signed step from `d` to the nearest equivalent angle in (−π, π].
+fn wrap_step(d: f64) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    let mut d = d;
+    while d > PI {
+        d -= TAU;
+    }
+    while d <= -PI {
+        d += TAU;
+    }
+    d
+}
+
+fn s_range(region: &MultiPolygon<f64>) -> (f64, f64) {
+    region
+        .0
+        .iter()
+        .flat_map(|p| p.exterior().0.iter())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+            (lo.min(c.y), hi.max(c.y))
+        })
+}
+
+/// A cone about a vertical axis: one piece, its height linear in the
+/// distance to the axis.
+fn cone_piece(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    surface: &Surface,
+    cf: &Frame,
+    sense: f64,
+) -> Result<Vec<Piece>, RemovalError> {
+    let Surface::Cone {
+        radius, semi_angle, ..
+    } = surface
+    else {
+        unreachable!("cone_piece is called on cones")
+    };
+    let o = frame.to_local(&cf.origin);
+    let dir = frame.vector_to_local(&cf.z).z.signum();
+    let tan = semi_angle.tan();
+    if tan.abs() < 1e-12 {
+        return Err(unsupported(part, f, "a cone of zero angle"));
+    }
+    // ρ = radius + v·tan, z = o.z + dir·v.
+    let k = dir / tan;
+    let z0 = o.z - k * radius;
+    let region = project(part, f, frame);
+    // Facing from the outward normal at a boundary point.
+    let loops = face_loop_points(part, f);
+    let p = loops
+        .first()
+        .and_then(|l| l.first())
+        .ok_or_else(|| unsupported(part, f, "a cone face without a boundary"))?;
+    let n = surface
+        .normal_at(p)
+        .ok_or_else(|| unsupported(part, f, "a cone face on its apex"))?;
+    let nz = frame.vector_to_local(&n).z * sense;
+    let facing = if nz > 0.0 { Facing::Up } else { Facing::Down };
+    Ok(finish(
+        f,
+        part.face(f).step_id,
+        facing,
+        region,
+        Height::cone([o.x, o.y], z0, k),
+    ))
+}
+
+/// A vertical face seen from up: its loops' projections (curves), the
+/// heights it spans.
+#[derive(Clone, Debug)]
+pub struct Vertical {
+    pub step_id: u64,
+    pub segments: Vec<[(f64, f64); 2]>,
+    pub bbox: Rect<f64>,
+    pub z: [f64; 2],
+}
+
+/// Every face that projects to a curve (planes along up, cylinders about
+/// an axis along up).
+pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
+    let mut out = Vec::new();
+    for f in part.face_ids() {
+        let face = part.face(f);
+        let vertical = match &face.surface {
+            Surface::Plane { frame: pf } => frame.vector_to_local(&pf.z).z.abs() < VERTICAL_EPS,
+            Surface::Cylinder { frame: cf, .. } => {
+                frame.vector_to_local(&cf.z).z.abs() > 1.0 - VERTICAL_EPS
+            }
+            _ => false,
+        };
+        if !vertical {
+            continue;
+        }
+        let mut segments = Vec::new();
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for lp in face_loop_points(part, f) {
+            let pts: Vec<_> = lp.iter().map(|p| frame.to_local(p)).collect();
+            for (i, p) in pts.iter().enumerate() {
+                let q = pts[(i + 1) % pts.len()];
+                segments.push([(p.x, p.y), (q.x, q.y)]);
+                for k in 0..3 {
+                    lo[k] = lo[k].min(p[k]);
+                    hi[k] = hi[k].max(p[k]);
+                }
+            }
+        }
+        if segments.is_empty() {
+            continue;
+        }
+        out.push(Vertical {
+            step_id: face.step_id,
+            segments,
+            bbox: Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] }),
+            z: [lo[2], hi[2]],
+        });
+    }
+    out
+}

@@ -1,0 +1,136 @@
+//! The whole removal plan: the stock of the set-up, the decomposition of
+//! stock − part with the layers' bands, and the features over it.
+
+use crate::features::{assign, RemovalFeature};
+use crate::removal::{frame_of, Removal, StockShape};
+use crate::steps::Layer;
+use crate::RemovalSummary;
+use geo::{Coord, LineString, MultiPolygon, Polygon};
+use std::collections::BTreeMap;
+use thinwall_analysis::{FeatureId, PartAnalysis};
+use thinwall_brep::Part;
+use thinwall_geom::{Frame, Point3, Vector3};
+use thinwall_pipeline::Outcome;
+
+/// Heights and lengths closer than this fraction of the part's size are
+/// the same.
+const REL_TOL: f64 = 1e-9;
+
+/// The removal plan of `part` with its designed `layers` (plan order).
+pub fn removal_plan(
+    part: &Part,
+    out: &Outcome,
+    layers: &[Layer],
+) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
+    let a = PartAnalysis::new(part, out.setup.clone());
+    let up = Vector3::from(out.setup.up).normalize();
+    let (frame, mut lo, mut hi) = frame_of(&a, up);
+    let size = a.bounding_box().diagonal();
+    let tol = REL_TOL * size.max(1.0) * 1e3;
+    let m = &out.request.machining;
+    let (stock, name) = match &m.stock {
+        Some(s) => (StockShape::Solid(s), "solid".to_string()),
+        None if m.stock_offset > 0.0 => {
+            for k in 0..3 {
+                lo[k] -= m.stock_offset;
+                hi[k] += m.stock_offset;
+            }
+            (
+                StockShape::Block { lo, hi },
+                format!("block + {} mm", m.stock_offset),
+            )
+        }
+        None => (StockShape::Block { lo, hi }, "block".to_string()),
+    };
+    let frame_out = [
+        [frame.origin.x, frame.origin.y, frame.origin.z],
+        [frame.x.x, frame.x.y, frame.x.z],
+        [frame.y.x, frame.y.y, frame.y.z],
+        [frame.z.x, frame.z.y, frame.z.z],
+    ];
+    let mut notes = Vec::new();
+    let (bands, layer_band) = bands(layers, &frame, &mut notes);
+    let mut summary = RemovalSummary {
+        stock: name,
+        notes,
+        ..Default::default()
+    };
+    let r = match Removal::new(part, frame, &stock, &bands, size) {
+        Ok(r) => r,
+        Err(e) => {
+            summary.unavailable = Some(format!("removal.{}: {e}", e.code()));
+            return (summary, Vec::new(), frame_out);
+        }
+    };
+    let band_area: Vec<f64> = layer_band
+        .iter()
+        .map(|b| {
+            b.map_or(0.0, |k| {
+                bands[k].0.iter().map(crate::removal::flux::area).sum()
+            })
+        })
+        .collect();
+    let (mut feats, slivers) = assign(out, &r, layers, &layer_band, &band_area, tol);
+    for f in feats.iter().filter(|f| f.pieces.is_empty()) {
+        summary
+            .notes
+            .push(format!("{}: {}", f.id, f.changes.join("; ")));
+    }
+    feats.retain(|f| !f.pieces.is_empty());
+    summary.slivers_mm3 = slivers + r.sliver_volume;
+    summary.stock_volume_mm3 = r.stock_volume;
+    summary.part_volume_mm3 = r.part_volume;
+    summary.removed_volume_mm3 = feats.iter().map(|f| f.volume_mm3).sum();
+    summary.cells = r.cells.len();
+    (summary, feats, frame_out)
+}
+
+/// One band per wall side with layers (the layers' footprint on the
+/// set-up plane), and each layer's band. A layer whose wall does not stand
+/// along up is not a prism along up: it gets none, with a note.
+fn bands(
+    layers: &[Layer],
+    frame: &Frame,
+    notes: &mut Vec<String>,
+) -> (Vec<MultiPolygon<f64>>, Vec<Option<usize>>) {
+    let mut by_side: BTreeMap<(FeatureId, u8), usize> = BTreeMap::new();
+    let mut out = Vec::new();
+    let mut which = Vec::with_capacity(layers.len());
+    for l in layers {
+        let c: Vec<Vector3> = l
+            .corners
+            .iter()
+            .map(|p| frame.to_local(&Point3::new(p[0], p[1], p[2])))
+            .collect();
+        // Corners: height-major (0..4 at the foot side, 4..8 above).
+        let vertical = (0..4).all(|i| {
+            let d = c[i + 4] - c[i];
+            d.x.abs() + d.y.abs() <= 1e-9 * d.norm().max(1.0)
+        });
+        if !vertical {
+            notes.push(format!(
+                "{} ({} side {}): its wall does not stand along up; its material is in bulk features",
+                l.id, l.owner, l.side
+            ));
+            which.push(None);
+            continue;
+        }
+        let k = *by_side.entry((l.owner, l.side)).or_insert_with(|| {
+            let ring: Vec<Coord<f64>> = [0, 1, 3, 2, 0]
+                .iter()
+                .map(|&i| Coord {
+                    x: c[i].x,
+                    y: c[i].y,
+                })
+                .collect();
+            let poly =
+                Polygon::new(LineString::new(ring), vec![]).orient(geo::orient::Direction::Default);
+            out.push(MultiPolygon::new(vec![poly]));
+            out.len() - 1
+        });
+        which.push(Some(k));
+    }
+    (out, which)
+}
+
+use geo::Orient;
