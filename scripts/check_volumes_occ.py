@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Check exported machining-feature volumes from outside, with OpenCascade:
-each STEP file in DIR must hold one valid closed solid; prints its volume.
-Optionally compare with the plan's JSON (width x height x length).
+each STEP file in DIR must hold valid closed solids; prints their volume.
+Optionally compare with the plan's JSON: each machining feature's solids
+between planes (solids bounded by a cylinder or cone are not written yet).
 
 usage: python3 scripts/check_volumes_occ.py DIR [PLAN.json]
 Needs cadquery-ocp-novtk.
@@ -20,7 +21,10 @@ def main():
     want = {}
     if len(sys.argv) > 2:
         plan = json.load(open(sys.argv[2]))
-        want = {l["id"]: l["width"] * l["height"] * l["length"] for l in plan["machining_features"]}
+        for f in plan["machining_features"]:
+            planar = [s for s in f["solids"] if s["lower"]["kind"] == "plane" and s["upper"]["kind"] == "plane"]
+            if planar:
+                want[f["id"]] = sum(s["volume_mm3"] for s in planar)
     bad = 0
     for f in sorted(glob.glob(os.path.join(d, "*.step"))):
         r = STEPControl_Reader()

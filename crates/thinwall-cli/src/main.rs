@@ -250,10 +250,21 @@ fn plan_command(
     if let Some(dir) = &volumes_dir {
         std::fs::create_dir_all(dir)
             .map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
-        for l in &plan.layers {
-            let path = dir.join(format!("{}.step", l.id));
-            std::fs::write(&path, thinwall_plan::volumes::layer_step(l))
+        let mut skipped = 0;
+        for f in &plan.machining_features {
+            let path = dir.join(format!("{}.step", f.id));
+            let (text, missing) = thinwall_plan::volumes::feature_step(&plan, f);
+            skipped += missing;
+            if missing == f.solids.len() {
+                continue;
+            }
+            std::fs::write(&path, text)
                 .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+        }
+        if skipped > 0 {
+            eprintln!(
+                "note: {skipped} solid(s) bounded by a cylinder or cone are not written yet (their volumes are in the plan)"
+            );
         }
     }
     write_out(&match format {

@@ -39,3 +39,87 @@ pub fn layer_step(layer: &Layer) -> String {
     )
     .to_string()
 }
+
+/// A feature solid between two planes as a truck solid: its rings at the
+/// lower and the upper height, joined by vertical quads (faces attached
+/// to shared edges, so the shell is closed). `None` for a solid bounded
+/// by a cylinder or a cone (not written yet) or one whose two ends meet.
+pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+    use crate::removal::pieces::Height;
+    use truck_modeling::{Edge, Face, Shell, Vertex, Wire};
+    if !matches!(s.lower, Height::Plane { .. }) || !matches!(s.upper, Height::Plane { .. }) {
+        return None;
+    }
+    let world = |x: f64, y: f64, z: f64| {
+        let c = |k: usize| frame[0][k] + x * frame[1][k] + y * frame[2][k] + z * frame[3][k];
+        Point3::new(c(0), c(1), c(2))
+    };
+    let mut bottom_wires = Vec::new();
+    let mut top_wires = Vec::new();
+    let mut sides: Vec<Face> = Vec::new();
+    for ring in &s.rings {
+        let n = ring.len();
+        if n < 3 {
+            return None;
+        }
+        let mut vb: Vec<Vertex> = Vec::with_capacity(n);
+        let mut vt: Vec<Vertex> = Vec::with_capacity(n);
+        for p in ring {
+            let (zl, zu) = (s.lower.at(p[0], p[1]), s.upper.at(p[0], p[1]));
+            if zu - zl <= 1e-9 * zu.abs().max(1.0) {
+                return None;
+            }
+            vb.push(builder::vertex(world(p[0], p[1], zl)));
+            vt.push(builder::vertex(world(p[0], p[1], zu)));
+        }
+        let eb: Vec<Edge> = (0..n).map(|i| builder::line(&vb[i], &vb[(i + 1) % n])).collect();
+        let et: Vec<Edge> = (0..n).map(|i| builder::line(&vt[i], &vt[(i + 1) % n])).collect();
+        let ev: Vec<Edge> = (0..n).map(|i| builder::line(&vb[i], &vt[i])).collect();
+        for i in 0..n {
+            let j = (i + 1) % n;
+            let w: Wire = vec![
+                eb[i].clone(),
+                ev[j].clone(),
+                et[i].inverse(),
+                ev[i].inverse(),
+            ]
+            .into();
+            sides.push(builder::try_attach_plane(&[w]).ok()?);
+        }
+        // The bottom runs against the ring (its normal points down), the
+        // top along it.
+        let bottom: Wire = eb.iter().rev().map(|e| e.inverse()).collect();
+        let top: Wire = et.iter().cloned().collect();
+        bottom_wires.push(bottom);
+        top_wires.push(top);
+    }
+    let mut faces = vec![
+        builder::try_attach_plane(&bottom_wires).ok()?,
+        builder::try_attach_plane(&top_wires).ok()?,
+    ];
+    faces.extend(sides);
+    Solid::try_new(vec![Shell::from(faces)]).ok()
+}
+
+/// A feature's solids as one STEP text, and how many could not be written.
+pub fn feature_step(plan: &crate::Plan, f: &crate::features::RemovalFeature) -> (String, usize) {
+    use truck_stepio::out::{CompleteStepDisplay, StepHeaderDescriptor, StepModels};
+    let solids: Vec<Solid> = f
+        .solids
+        .iter()
+        .filter_map(|s| feature_solid(&plan.frame, s))
+        .collect();
+    let skipped = f.solids.len() - solids.len();
+    let compressed: Vec<_> = solids.iter().map(|s| s.compress()).collect();
+    let models: StepModels<_, _, _> = compressed.iter().collect();
+    let text = CompleteStepDisplay::new(
+        models,
+        StepHeaderDescriptor {
+            file_name: format!("{}.step", f.id),
+            organization_system: "thinwall".to_string(),
+            ..Default::default()
+        },
+    )
+    .to_string();
+    (text, skipped)
+}
