@@ -352,4 +352,3 @@ fn a_turned_part_and_set_up_give_the_same_removal_plan() {
         );
     }
 }
-

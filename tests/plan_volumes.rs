@@ -102,6 +102,8 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
             written += f.solids.len() - missing;
         }
     }
-    eprintln!("{written} solids written and read back, {skipped} bounded by curved faces not written");
+    eprintln!(
+        "{written} solids written and read back, {skipped} bounded by curved faces not written"
+    );
     assert!(written > 200, "{written}");
 }

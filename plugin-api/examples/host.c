@@ -142,6 +142,38 @@ int main(int argc, char **argv) {
         }
         failures += check(tw_plan_sequence_pair(plan, ns, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
                           "constraint past the end is out of range");
+        /* The removal plan: every machining feature, its place in the
+           order, its volume, and its solids as STEP text. */
+        size_t nf = tw_plan_feature_count(plan);
+        double total = 0.0;
+        size_t steps = 0;
+        printf("machining features: %zu\n", nf);
+        for (size_t i = 0; i < nf; i++) {
+            const char *id = NULL, *owner = NULL;
+            tw_feature_class cls;
+            size_t at = 0;
+            double vol = 0.0;
+            failures += check(tw_plan_feature(plan, i, &id, &owner, &cls, &at, &vol) == TW_OK,
+                              "feature read");
+            failures += check(at < nf, "feature has a place in the order");
+            total += vol;
+            char *step = NULL;
+            size_t skipped = 0;
+            failures += check(tw_plan_feature_step(plan, i, &step, &skipped) == TW_OK && step != NULL,
+                              "feature STEP written");
+            if (step && strstr(step, "MANIFOLD_SOLID_BREP")) {
+                steps++;
+            }
+            tw_string_free(step);
+            if (i < 3) {
+                printf("  %s owner %s class %d order %zu volume %.1f mm3\n", id, owner ? owner : "-",
+                       (int)cls, at, vol);
+            }
+        }
+        printf("removed: %.1f mm3 in %zu features, %zu with solids as STEP\n", total, nf, steps);
+        failures += check(nf > 0 && steps > 0, "the plan has machining features with solids");
+        failures += check(tw_plan_feature(plan, nf, NULL, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
+                          "feature past the end is out of range");
         tw_plan_free(plan);
     }
     tw_plan_result *bad = NULL;

@@ -30,6 +30,18 @@ typedef enum tw_connection_kind {
   TW_CONNECTION_CROSSING = 1,
 } tw_connection_kind;
 
+// What a machining feature of the plan is.
+typedef enum tw_feature_class {
+  // A step-approach layer `H_RF` tall.
+  TW_FEATURE_LARGE = 0,
+  // A step-approach layer `h_RF` tall.
+  TW_FEATURE_SMALL = 1,
+  // The rest reachable from up.
+  TW_FEATURE_BULK = 2,
+  // Not open to up: another set-up or 5 axes.
+  TW_FEATURE_OTHER_SETUP = 3,
+} tw_feature_class;
+
 // The relation of a sequence constraint.
 typedef enum tw_relation {
   // `before` is machined before `after`.
@@ -235,6 +247,31 @@ enum tw_status tw_plan_sequence_pair(const struct tw_plan_result *plan,
 // The rule that gave constraint `i` (valid while `plan` lives); NULL out
 // of range.
 const char *tw_plan_sequence_rule(const struct tw_plan_result *plan, size_t i);
+
+// Number of machining features of the removal plan (0 for NULL, and 0
+// when the removal could not be decomposed: the JSON says why).
+size_t tw_plan_feature_count(const struct tw_plan_result *plan);
+
+// Machining feature `i`: its id and its owner's (NULL when it lies
+// around the part; both valid while `plan` lives), its class, its index
+// in the plan's order (0 first) and its volume in mm³. Any out-pointer
+// may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+enum tw_status tw_plan_feature(const struct tw_plan_result *plan,
+                               size_t i,
+                               const char **id,
+                               const char **owner,
+                               enum tw_feature_class *class_,
+                               size_t *order_index,
+                               double *volume_mm3);
+
+// Machining feature `i`'s solids as STEP text (a new string to free with
+// `tw_string_free`), as `thinwall plan --volumes-dir` writes them.
+// `*not_written` (may be NULL) counts its solids bounded by a cylinder or
+// a cone, not written yet. `TW_ERR_OUT_OF_RANGE` past the count.
+enum tw_status tw_plan_feature_step(const struct tw_plan_result *plan,
+                                    size_t i,
+                                    char **out_step,
+                                    size_t *not_written);
 
 // Recognize stiffness features and their connections. `opt` may be NULL
 // for the defaults. On success `*out` owns a result to free with

@@ -18,6 +18,52 @@ pub struct tw_plan_result {
     pairs: Vec<(CString, CString, tw_relation)>,
     /// Per constraint: the rule that gave it.
     rules: Vec<CString>,
+    /// Per machining feature: id, owner (if any), class, place in the order.
+    features: Vec<FeatureEntry>,
+}
+
+struct FeatureEntry {
+    id: CString,
+    owner: Option<CString>,
+    class: tw_feature_class,
+    order: usize,
+}
+
+/// What a machining feature of the plan is.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum tw_feature_class {
+    /// A step-approach layer `H_RF` tall.
+    TW_FEATURE_LARGE = 0,
+    /// A step-approach layer `h_RF` tall.
+    TW_FEATURE_SMALL = 1,
+    /// The rest reachable from up.
+    TW_FEATURE_BULK = 2,
+    /// Not open to up: another set-up or 5 axes.
+    TW_FEATURE_OTHER_SETUP = 3,
+}
+
+fn feature_entries(plan: &Plan) -> Vec<FeatureEntry> {
+    use thinwall_plan::features::FeatureClass;
+    plan.machining_features
+        .iter()
+        .map(|f| FeatureEntry {
+            id: cstring(&f.id),
+            owner: f.owner.map(|o| cstring(&o.to_string())),
+            class: match f.size_class {
+                FeatureClass::Large => tw_feature_class::TW_FEATURE_LARGE,
+                FeatureClass::Small => tw_feature_class::TW_FEATURE_SMALL,
+                FeatureClass::Bulk => tw_feature_class::TW_FEATURE_BULK,
+                FeatureClass::OtherSetup => tw_feature_class::TW_FEATURE_OTHER_SETUP,
+            },
+            order: plan
+                .feature_sequence
+                .order
+                .iter()
+                .position(|o| *o == f.id)
+                .unwrap_or(usize::MAX),
+        })
+        .collect()
 }
 
 /// The relation of a sequence constraint.
@@ -80,7 +126,13 @@ pub unsafe extern "C" fn tw_plan(
             })
             .collect();
         let rules = plan.sequence.iter().map(|c| cstring(&c.rule)).collect();
-        Ok(tw_plan_result { plan, pairs, rules })
+        let features = feature_entries(&plan);
+        Ok(tw_plan_result {
+            plan,
+            pairs,
+            rules,
+            features,
+        })
     })
 }
 
@@ -147,4 +199,88 @@ pub unsafe extern "C" fn tw_plan_sequence_rule(
     i: usize,
 ) -> *const c_char {
     string_at(plan, |p| p.rules.get(i))
+}
+
+/// Number of machining features of the removal plan (0 for NULL, and 0
+/// when the removal could not be decomposed: the JSON says why).
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_feature_count(plan: *const tw_plan_result) -> usize {
+    count(plan, |p| p.features.len())
+}
+
+/// Machining feature `i`: its id and its owner's (NULL when it lies
+/// around the part; both valid while `plan` lives), its class, its index
+/// in the plan's order (0 first) and its volume in mm³. Any out-pointer
+/// may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_feature(
+    plan: *const tw_plan_result,
+    i: usize,
+    id: *mut *const c_char,
+    owner: *mut *const c_char,
+    class: *mut tw_feature_class,
+    order_index: *mut usize,
+    volume_mm3: *mut f64,
+) -> tw_status {
+    guard(|| {
+        if plan.is_null() {
+            return Err(null("plan"));
+        }
+        let p = &*plan;
+        let e = p.features.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("feature {i} out of range ({} features)", p.features.len()),
+        ))?;
+        if !id.is_null() {
+            *id = e.id.as_ptr();
+        }
+        if !owner.is_null() {
+            *owner = e.owner.as_ref().map_or(std::ptr::null(), |o| o.as_ptr());
+        }
+        if !class.is_null() {
+            *class = e.class;
+        }
+        if !order_index.is_null() {
+            *order_index = e.order;
+        }
+        if !volume_mm3.is_null() {
+            *volume_mm3 = p.plan.machining_features[i].volume_mm3;
+        }
+        Ok(())
+    })
+}
+
+/// Machining feature `i`'s solids as STEP text (a new string to free with
+/// `tw_string_free`), as `thinwall plan --volumes-dir` writes them.
+/// `*not_written` (may be NULL) counts its solids bounded by a cylinder or
+/// a cone, not written yet. `TW_ERR_OUT_OF_RANGE` past the count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_feature_step(
+    plan: *const tw_plan_result,
+    i: usize,
+    out_step: *mut *mut c_char,
+    not_written: *mut usize,
+) -> tw_status {
+    if !out_step.is_null() {
+        *out_step = std::ptr::null_mut();
+    }
+    guard(|| {
+        if plan.is_null() {
+            return Err(null("plan"));
+        }
+        if out_step.is_null() {
+            return Err(null("out_step"));
+        }
+        let p = &*plan;
+        let f = p.plan.machining_features.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("feature {i} out of range ({} features)", p.features.len()),
+        ))?;
+        let (text, missing) = thinwall_plan::volumes::feature_step(&p.plan, f);
+        if !not_written.is_null() {
+            *not_written = missing;
+        }
+        *out_step = cstring(&text).into_raw();
+        Ok(())
+    })
 }

@@ -72,8 +72,12 @@ pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -
             vb.push(builder::vertex(world(p[0], p[1], zl)));
             vt.push(builder::vertex(world(p[0], p[1], zu)));
         }
-        let eb: Vec<Edge> = (0..n).map(|i| builder::line(&vb[i], &vb[(i + 1) % n])).collect();
-        let et: Vec<Edge> = (0..n).map(|i| builder::line(&vt[i], &vt[(i + 1) % n])).collect();
+        let eb: Vec<Edge> = (0..n)
+            .map(|i| builder::line(&vb[i], &vb[(i + 1) % n]))
+            .collect();
+        let et: Vec<Edge> = (0..n)
+            .map(|i| builder::line(&vt[i], &vt[(i + 1) % n]))
+            .collect();
         let ev: Vec<Edge> = (0..n).map(|i| builder::line(&vb[i], &vt[i])).collect();
         for i in 0..n {
             let j = (i + 1) % n;
