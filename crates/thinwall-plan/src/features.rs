@@ -140,12 +140,23 @@ pub fn assign(
     let negligible = SLIVER * r.stock_volume;
     let mut dropped = 0.0;
     let mut by_layer: Vec<Vec<Piece>> = vec![Vec::new(); layers.len()];
+    // Layers per band, in plan order.
+    let mut by_band: Vec<Vec<usize>> = Vec::new();
+    for (i, b) in layer_band.iter().enumerate() {
+        if let Some(k) = *b {
+            if by_band.len() <= k {
+                by_band.resize(k + 1, Vec::new());
+            }
+            by_band[k].push(i);
+        }
+    }
     let mut rest: BTreeMap<BulkKey, Vec<Piece>> = BTreeMap::new();
     for b in &r.blocks {
-        let bands = &r.cell_bands[b.cell];
-        let covering: Vec<usize> = (0..layers.len())
-            .filter(|&i| layer_band[i].is_some_and(|k| bands.contains(&k)))
+        let mut covering: Vec<usize> = r.cell_bands[b.cell]
+            .iter()
+            .flat_map(|&k| by_band.get(k).into_iter().flatten().copied())
             .collect();
+        covering.sort_unstable();
         for piece in split(r, b, covering.iter().map(|&i| layers[i].cut_heights), tol) {
             if piece.volume.abs() <= negligible {
                 dropped += piece.volume;
@@ -424,6 +435,25 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
 /// Tiny bulk features join a neighbour in their column (the feature whose
 /// piece ends where theirs begins, or begins where theirs ends).
 fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
+    use std::collections::HashMap;
+    let key = |cell: usize, b: &Bound| -> (usize, u8, u64) {
+        match *b {
+            Bound::Flat(z) => (cell, 0, z.to_bits()),
+            Bound::Part(i) => (cell, 1, i as u64),
+            Bound::Stock(i) => (cell, 2, i as u64),
+        }
+    };
+    // Where the pieces of the features large enough to host end and begin.
+    let mut ends: HashMap<(usize, u8, u64), usize> = HashMap::new();
+    for (j, f) in feats.iter().enumerate() {
+        if f.volume_mm3 < limit && f.step.is_none() {
+            continue;
+        }
+        for q in &f.pieces {
+            ends.entry(key(q.cell, &q.upper)).or_insert(j);
+            ends.entry(key(q.cell, &q.lower)).or_insert(j);
+        }
+    }
     for i in 0..feats.len() {
         let f = &feats[i];
         if f.step.is_some() || f.volume_mm3 >= limit || f.pieces.is_empty() {
@@ -431,22 +461,14 @@ fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
         }
         let mut keep = Vec::new();
         for p in std::mem::take(&mut feats[i].pieces) {
-            let host = (0..feats.len()).find(|&j| {
-                j != i
-                    && feats[j].volume_mm3 >= limit
-                    && feats[j].reachable == feats[i].reachable
-                    && feats[j]
-                        .pieces
-                        .iter()
-                        .any(|q| q.cell == p.cell && (q.upper == p.lower || q.lower == p.upper))
-            });
+            let host = [key(p.cell, &p.lower), key(p.cell, &p.upper)]
+                .iter()
+                .filter_map(|k| ends.get(k).copied())
+                .find(|&j| j != i && feats[j].reachable == feats[i].reachable);
             match host {
                 Some(j) => {
                     feats[j].volume_mm3 += p.volume;
-                    feats[j].z_range = [
-                        feats[j].z_range[0].min(p.z[0]),
-                        feats[j].z_range[1].max(p.z[1]),
-                    ];
+                    feats[j].z_range = [feats[j].z_range[0].min(p.z[0]), feats[j].z_range[1].max(p.z[1])];
                     feats[j].pieces.push(p);
                 }
                 None => keep.push(p),

@@ -23,7 +23,7 @@ pub fn faces_touched(r: &Removal, pieces: &[Piece], tol: f64) -> Vec<u64> {
         for ring in rings {
             for w in ring.0.windows(2) {
                 let m = (0.5 * (w[0].x + w[1].x), 0.5 * (w[0].y + w[1].y));
-                for v in &r.vertical {
+                for v in r.vertical_near(m.0, m.1).iter().map(|&k| &r.vertical[k]) {
                     if out.contains(&v.step_id)
                         || v.z[1] < p.z[0] + tol
                         || v.z[0] > p.z[1] - tol

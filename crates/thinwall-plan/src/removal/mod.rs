@@ -92,6 +92,8 @@ pub struct Removal {
     pub part_volume: f64,
     /// The part's vertical faces, for which faces a block touches.
     pub vertical: Vec<pieces::Vertical>,
+    /// Vertical faces by grid square, to find those near a point.
+    vertical_grid: Grid,
     /// The block stock's bottom (none for a given solid), mm.
     bottom: Option<f64>,
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
@@ -325,11 +327,13 @@ impl Removal {
             StockShape::Solid(_) => signed_volume(&stock_pieces),
         };
         let vertical = pieces::vertical_faces(part, &frame);
+        let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
         let bottom = match stock {
             StockShape::Block { lo, .. } => Some(lo[2]),
             StockShape::Solid(_) => None,
         };
         Ok(Self {
+            vertical_grid,
             sliver_volume,
             vertical,
             bottom,
@@ -380,6 +384,12 @@ impl Removal {
             Bound::Part(i) => self.part_pieces[i].height,
             Bound::Stock(i) => self.stock_pieces[i].height,
         }
+    }
+
+    /// Indices of the vertical faces whose box (grown by the grid's
+    /// tolerance) may hold `(x, y)`.
+    pub fn vertical_near(&self, x: f64, y: f64) -> &[usize] {
+        self.vertical_grid.at(x, y)
     }
 
     /// The `step_id` of part piece `i`'s face.
@@ -504,4 +514,48 @@ fn subtract(a: &[(End, End)], b: &[(End, End)]) -> Vec<(End, End)> {
         }
     }
     out
+}
+
+/// A uniform grid over a rectangle, each square listing the boxes that
+/// overlap it.
+struct Grid {
+    origin: (f64, f64),
+    step: (f64, f64),
+    n: usize,
+    squares: Vec<Vec<usize>>,
+}
+
+impl Grid {
+    const SIDE: usize = 128;
+
+    fn new(area: Rect<f64>, boxes: impl Iterator<Item = Rect<f64>>, grow: f64) -> Self {
+        let n = Self::SIDE;
+        let step = (
+            (area.width() / n as f64).max(1e-12),
+            (area.height() / n as f64).max(1e-12),
+        );
+        let origin = (area.min().x, area.min().y);
+        let mut squares = vec![Vec::new(); n * n];
+        let idx = |v: f64, o: f64, s: f64| (((v - o) / s).floor().max(0.0) as usize).min(n - 1);
+        for (i, b) in boxes.enumerate() {
+            let (x0, x1) = (idx(b.min().x - grow, origin.0, step.0), idx(b.max().x + grow, origin.0, step.0));
+            let (y0, y1) = (idx(b.min().y - grow, origin.1, step.1), idx(b.max().y + grow, origin.1, step.1));
+            for gx in x0..=x1 {
+                for gy in y0..=y1 {
+                    squares[gy * n + gx].push(i);
+                }
+            }
+        }
+        Self {
+            origin,
+            step,
+            n,
+            squares,
+        }
+    }
+
+    fn at(&self, x: f64, y: f64) -> &[usize] {
+        let idx = |v: f64, o: f64, s: f64| (((v - o) / s).floor().max(0.0) as usize).min(self.n - 1);
+        &self.squares[idx(y, self.origin.1, self.step.1) * self.n + idx(x, self.origin.0, self.step.0)]
+    }
 }
