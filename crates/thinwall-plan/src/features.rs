@@ -468,7 +468,10 @@ fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
             match host {
                 Some(j) => {
                     feats[j].volume_mm3 += p.volume;
-                    feats[j].z_range = [feats[j].z_range[0].min(p.z[0]), feats[j].z_range[1].max(p.z[1])];
+                    feats[j].z_range = [
+                        feats[j].z_range[0].min(p.z[0]),
+                        feats[j].z_range[1].max(p.z[1]),
+                    ];
                     feats[j].pieces.push(p);
                 }
                 None => keep.push(p),

@@ -538,8 +538,14 @@ impl Grid {
         let mut squares = vec![Vec::new(); n * n];
         let idx = |v: f64, o: f64, s: f64| (((v - o) / s).floor().max(0.0) as usize).min(n - 1);
         for (i, b) in boxes.enumerate() {
-            let (x0, x1) = (idx(b.min().x - grow, origin.0, step.0), idx(b.max().x + grow, origin.0, step.0));
-            let (y0, y1) = (idx(b.min().y - grow, origin.1, step.1), idx(b.max().y + grow, origin.1, step.1));
+            let (x0, x1) = (
+                idx(b.min().x - grow, origin.0, step.0),
+                idx(b.max().x + grow, origin.0, step.0),
+            );
+            let (y0, y1) = (
+                idx(b.min().y - grow, origin.1, step.1),
+                idx(b.max().y + grow, origin.1, step.1),
+            );
             for gx in x0..=x1 {
                 for gy in y0..=y1 {
                     squares[gy * n + gx].push(i);
@@ -555,7 +561,9 @@ impl Grid {
     }
 
     fn at(&self, x: f64, y: f64) -> &[usize] {
-        let idx = |v: f64, o: f64, s: f64| (((v - o) / s).floor().max(0.0) as usize).min(self.n - 1);
-        &self.squares[idx(y, self.origin.1, self.step.1) * self.n + idx(x, self.origin.0, self.step.0)]
+        let idx =
+            |v: f64, o: f64, s: f64| (((v - o) / s).floor().max(0.0) as usize).min(self.n - 1);
+        &self.squares
+            [idx(y, self.origin.1, self.step.1) * self.n + idx(x, self.origin.0, self.step.0)]
     }
 }
