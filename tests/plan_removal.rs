@@ -91,7 +91,7 @@ fn planar_volume(part: &Part) -> Option<f64> {
 
 #[test]
 fn the_features_are_stock_minus_part_on_every_part() {
-    let mut checked = 0;
+    let (mut checked, mut typed, mut all) = (0, 0, 0);
     for path in parts() {
         let name = path.display().to_string();
         let (part, p) = plan_file(&path);
@@ -135,10 +135,32 @@ fn the_features_are_stock_minus_part_on_every_part() {
                 f.volume_mm3
             );
             assert!(f.z_range[0] < f.z_range[1], "{name}: {}", f.id);
+            // Every feature has a type; `unknown` only with a reason.
+            let c = f
+                .classification
+                .as_ref()
+                .unwrap_or_else(|| panic!("{name}: {} untyped", f.id));
+            assert!(
+                c.kind != thinwall_analysis::VolumeType::Unknown || c.reason.is_some(),
+                "{name}: {} unknown without a reason",
+                f.id
+            );
         }
+        typed += p
+            .machining_features
+            .iter()
+            .filter(|f| {
+                f.classification
+                    .as_ref()
+                    .is_some_and(|c| c.kind != thinwall_analysis::VolumeType::Unknown)
+            })
+            .count();
+        all += p.machining_features.len();
         checked += 1;
     }
     assert!(checked >= 25, "{checked} parts");
+    eprintln!("{typed} of {all} features typed");
+    assert!(typed * 10 >= all * 8, "{typed} of {all} typed");
 }
 
 fn poly(s: &FeatureSolid) -> MultiPolygon<f64> {

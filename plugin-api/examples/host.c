@@ -165,9 +165,11 @@ int main(int argc, char **argv) {
                 steps++;
             }
             tw_string_free(step);
+            const char *type = tw_plan_feature_type(plan, i);
+            failures += check(type != NULL && tw_plan_feature_adjacency(plan, i) != NULL, "feature typed");
             if (i < 3) {
-                printf("  %s owner %s class %d order %zu volume %.1f mm3\n", id, owner ? owner : "-",
-                       (int)cls, at, vol);
+                printf("  %s owner %s class %d order %zu volume %.1f mm3 type %s adjacency %s\n", id,
+                       owner ? owner : "-", (int)cls, at, vol, type, tw_plan_feature_adjacency(plan, i));
             }
         }
         printf("removed: %.1f mm3 in %zu features, %zu with solids as STEP\n", total, nf, steps);

@@ -273,6 +273,15 @@ enum tw_status tw_plan_feature_step(const struct tw_plan_result *plan,
                                     char **out_step,
                                     size_t *not_written);
 
+// Machining feature `i`'s type (`pocket`, `step`, …, `unknown`) as
+// `thinwall-classify` gives it in the plan's order; NULL out of range.
+// Valid while `plan` lives.
+const char *tw_plan_feature_type(const struct tw_plan_result *plan, size_t i);
+
+// Machining feature `i`'s product adjacency (`none`, `side`, `bottom`,
+// `side_and_bottom`); NULL out of range. Valid while `plan` lives.
+const char *tw_plan_feature_adjacency(const struct tw_plan_result *plan, size_t i);
+
 // Recognize stiffness features and their connections. `opt` may be NULL
 // for the defaults. On success `*out` owns a result to free with
 // `tw_result_free`; on failure `*out` is NULL.

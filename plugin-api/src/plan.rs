@@ -23,6 +23,9 @@ pub struct tw_plan_result {
 }
 
 struct FeatureEntry {
+    /// Its type and product adjacency names (`unknown`, `none` unclassified).
+    kind: CString,
+    adjacency: CString,
     id: CString,
     owner: Option<CString>,
     class: tw_feature_class,
@@ -48,6 +51,16 @@ fn feature_entries(plan: &Plan) -> Vec<FeatureEntry> {
     plan.machining_features
         .iter()
         .map(|f| FeatureEntry {
+            kind: cstring(
+                f.classification
+                    .as_ref()
+                    .map_or("unknown", |c| c.kind.name()),
+            ),
+            adjacency: cstring(
+                f.classification
+                    .as_ref()
+                    .map_or("none", |c| c.product_adjacency.name()),
+            ),
             id: cstring(&f.id),
             owner: f.owner.map(|o| cstring(&o.to_string())),
             class: match f.size_class {
@@ -283,4 +296,25 @@ pub unsafe extern "C" fn tw_plan_feature_step(
         *out_step = cstring(&text).into_raw();
         Ok(())
     })
+}
+
+/// Machining feature `i`'s type (`pocket`, `step`, …, `unknown`) as
+/// `thinwall-classify` gives it in the plan's order; NULL out of range.
+/// Valid while `plan` lives.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_feature_type(
+    plan: *const tw_plan_result,
+    i: usize,
+) -> *const c_char {
+    string_at(plan, |p| p.features.get(i).map(|e| &e.kind))
+}
+
+/// Machining feature `i`'s product adjacency (`none`, `side`, `bottom`,
+/// `side_and_bottom`); NULL out of range. Valid while `plan` lives.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_feature_adjacency(
+    plan: *const tw_plan_result,
+    i: usize,
+) -> *const c_char {
+    string_at(plan, |p| p.features.get(i).map(|e| &e.adjacency))
 }

@@ -133,10 +133,27 @@ fn prism(faces: &[FaceGeom], up: &Vector3, tol: &Tol) -> Option<Prism> {
 /// area while their height ranges overlap over more than the tolerance.
 pub fn overlaps(vol_faces: &[Vec<FaceGeom>], up: &Vector3, tol: &Tol) -> Result<(), ClassifyError> {
     let prisms: Vec<Option<Prism>> = vol_faces.iter().map(|f| prism(f, up, tol)).collect();
+    // Boxes first: two volumes apart need no polygon overlap.
+    let boxes: Vec<thinwall_geom::BoundingBox> = vol_faces
+        .iter()
+        .map(|f| {
+            let mut b = thinwall_geom::BoundingBox::empty();
+            for g in f {
+                let (lo, hi) = (g.bbox.min, g.bbox.max);
+                b.add_point(&thinwall_geom::Point3::new(lo[0], lo[1], lo[2]));
+                b.add_point(&thinwall_geom::Point3::new(hi[0], hi[1], hi[2]));
+            }
+            b
+        })
+        .collect();
+    let apart = |i: usize, j: usize| {
+        let (a, b) = (&boxes[i], &boxes[j]);
+        (0..3).any(|k| a.min[k] >= b.max[k] - tol.lin || b.min[k] >= a.max[k] - tol.lin)
+    };
     for (i, a) in prisms.iter().enumerate() {
         for (j, b) in prisms.iter().enumerate().skip(i + 1) {
             let (Some(a), Some(b)) = (a, b) else { continue };
-            if a.high.min(b.high) - a.low.max(b.low) <= tol.lin {
+            if a.high.min(b.high) - a.low.max(b.low) <= tol.lin || apart(i, j) {
                 continue;
             }
             let b_in_a = MultiPolygon::new(
@@ -153,7 +170,14 @@ pub fn overlaps(vol_faces: &[Vec<FaceGeom>], up: &Vector3, tol: &Tol) -> Result<
                     })
                     .collect(),
             );
-            if intersect(&a.profile, &b_in_a).unsigned_area() > tol.min_area {
+            // Material shared over more than the tolerance: an overlap
+            // whose mean width (area over its box's diagonal) is under the
+            // coincidence tolerance is two faces meeting up to rounding.
+            let common = intersect(&a.profile, &b_in_a);
+            let diagonal = geo::BoundingRect::bounding_rect(&common)
+                .map_or(0.0, |r| r.width().hypot(r.height()));
+            let area = common.unsigned_area();
+            if area > tol.min_area && area > tol.lin * diagonal {
                 return Err(ClassifyError::Overlap {
                     first: i,
                     second: j,

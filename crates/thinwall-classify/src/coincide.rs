@@ -17,6 +17,8 @@ pub struct FaceGeom<'a> {
     pub planar: Option<&'a PlanarFace>,
     pub cylinder: Option<Cylinder>,
     pub bbox: BoundingBox,
+    /// A point inside a planar face, found once when first asked.
+    inner: std::cell::OnceCell<Option<thinwall_geom::Point3>>,
 }
 
 impl<'a> FaceGeom<'a> {
@@ -35,9 +37,20 @@ impl<'a> FaceGeom<'a> {
                     planar: a.planar(f),
                     cylinder: a.cylinder(f),
                     bbox,
+                    inner: std::cell::OnceCell::new(),
                 }
             })
             .collect()
+    }
+
+    /// A point inside a planar face (none for other faces), computed once.
+    pub fn inner_point(&self) -> Option<thinwall_geom::Point3> {
+        *self.inner.get_or_init(|| {
+            use geo::InteriorPoint;
+            let pf = self.planar?;
+            let ip = pf.polygon_in(&pf.frame).interior_point()?;
+            Some(pf.frame.to_world(&Vector3::new(ip.x(), ip.y(), 0.0)))
+        })
     }
 
     /// Its role along the tool direction (`−up`).

@@ -17,6 +17,7 @@
 
 mod checks;
 mod coincide;
+pub(crate) mod index;
 mod profile;
 pub mod types;
 
@@ -117,23 +118,35 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
     checks::volumes(req.part, req.volumes, &analyses)?;
     let vol_faces: Vec<Vec<FaceGeom>> = analyses.iter().map(FaceGeom::all).collect();
     checks::overlaps(&vol_faces, &up, &tol)?;
+    let near = Near::new(&part_faces, &vol_faces, tol.lin);
+    let mut preds: Vec<HashSet<usize>> = vec![HashSet::new(); req.volumes.len()];
+    for &(a, b) in req.before {
+        preds[b].insert(a);
+    }
     let mut out = Vec::new();
     for (vi, vol) in req.volumes.iter().enumerate() {
-        let predecessors: HashSet<usize> = req
-            .before
-            .iter()
-            .filter(|(_, b)| *b == vi)
-            .map(|(a, _)| *a)
-            .collect();
+        let predecessors = &preds[vi];
         let faces: Vec<Judged> = vol_faces[vi]
             .iter()
-            .map(|g| judge(g, vi, &part_faces, &vol_faces, &predecessors, &up, &tol))
+            .map(|g| {
+                judge(
+                    g,
+                    vi,
+                    &near,
+                    &part_faces,
+                    &vol_faces,
+                    predecessors,
+                    &up,
+                    &tol,
+                )
+            })
             .collect();
         let ctx = profile::Context {
             vol,
             analysis: &analyses[vi],
             part: req.part,
             part_faces: &part_faces,
+            part_index: &near.part,
             up: &up,
             tol: &tol,
         };
@@ -142,10 +155,39 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
     Ok(out)
 }
 
+/// The part's and the volumes' faces indexed by their boxes.
+struct Near {
+    part: index::BoxIndex,
+    volumes: index::BoxIndex,
+    /// Per indexed volume face: (volume, face).
+    owner: Vec<(usize, usize)>,
+}
+
+impl Near {
+    fn new(part_faces: &[FaceGeom], vol_faces: &[Vec<FaceGeom>], grow: f64) -> Self {
+        let boxes: Vec<_> = part_faces.iter().map(|g| g.bbox).collect();
+        let mut owner = Vec::new();
+        let mut vboxes = Vec::new();
+        for (vi, faces) in vol_faces.iter().enumerate() {
+            for (fi, g) in faces.iter().enumerate() {
+                owner.push((vi, fi));
+                vboxes.push(g.bbox);
+            }
+        }
+        Self {
+            part: index::BoxIndex::new(&boxes, grow),
+            volumes: index::BoxIndex::new(&vboxes, grow),
+            owner,
+        }
+    }
+}
+
 /// A volume face's role, what it coincides with, and whether that closes it.
+#[allow(clippy::too_many_arguments)]
 fn judge<'g>(
     g: &'g FaceGeom<'g>,
     vi: usize,
+    near: &Near,
     part_faces: &[FaceGeom],
     vol_faces: &[Vec<FaceGeom>],
     predecessors: &HashSet<usize>,
@@ -154,25 +196,29 @@ fn judge<'g>(
 ) -> Judged<'g> {
     let mut touches = Vec::new();
     let mut closed = false;
-    for p in part_faces {
+    for p in near.part.near(&g.bbox).into_iter().map(|i| &part_faces[i]) {
         if coincide(g, p, tol) {
             touches.push(Touch::Part { step_id: p.step_id });
             closed = true;
         }
     }
-    for (wi, other) in vol_faces.iter().enumerate() {
+    for (wi, fi) in near
+        .volumes
+        .near(&g.bbox)
+        .into_iter()
+        .map(|k| near.owner[k])
+    {
         if wi == vi {
             continue;
         }
-        for h in other {
-            if coincide(g, h, tol) {
-                touches.push(Touch::Volume {
-                    index: wi,
-                    step_id: h.step_id,
-                });
-                if !predecessors.contains(&wi) {
-                    closed = true;
-                }
+        let h = &vol_faces[wi][fi];
+        if coincide(g, h, tol) {
+            touches.push(Touch::Volume {
+                index: wi,
+                step_id: h.step_id,
+            });
+            if !predecessors.contains(&wi) {
+                closed = true;
             }
         }
     }

@@ -20,6 +20,8 @@ pub struct Context<'a> {
     pub analysis: &'a PartAnalysis<'a>,
     pub part: &'a PartAnalysis<'a>,
     pub part_faces: &'a [FaceGeom<'a>],
+    /// The part's faces by their boxes.
+    pub part_index: &'a crate::index::BoxIndex,
     pub up: &'a Vector3,
     pub tol: &'a Tol,
 }
@@ -305,15 +307,24 @@ fn overlaps_material(
         return false;
     };
     let margin = ctx.tol.lin * 10.0;
-    for g in ctx.part_faces {
+    // Only faces whose box meets the volume's can reach into it.
+    let own = ctx.analysis.bounding_box();
+    for g in ctx
+        .part_index
+        .near(own)
+        .into_iter()
+        .map(|i| &ctx.part_faces[i])
+    {
+        if (0..3)
+            .any(|k| g.bbox.min[k] > own.max[k] + margin || g.bbox.max[k] < own.min[k] - margin)
+        {
+            continue;
+        }
         let mut pts = ctx.part.boundary_points(g.face).to_vec();
         // Also a point inside a planar face, for faces crossing the volume
         // without a boundary point in it (a floor the volume cuts through).
-        if let Some(pf) = g.planar {
-            use geo::InteriorPoint;
-            if let Some(ip) = pf.polygon_in(&pf.frame).interior_point() {
-                pts.push(pf.frame.to_world(&Vector3::new(ip.x(), ip.y(), 0.0)));
-            }
+        if let Some(ip) = g.inner_point() {
+            pts.push(ip);
         }
         for p in pts {
             let h = p.coords.dot(ctx.up);

@@ -108,6 +108,9 @@ pub struct RemovalFeature {
     pub pieces: Vec<Piece>,
     /// Its solids: each a region of the set-up plane between two heights.
     pub solids: Vec<FeatureSolid>,
+    /// Its type and product adjacency (`classified`).
+    #[serde(flatten)]
+    pub classification: Option<crate::classified::FeatureType>,
 }
 
 /// A solid of a feature: a polygon of the set-up plane (in the plan's
@@ -216,6 +219,7 @@ pub fn assign(
             changes,
             pieces,
             solids: Vec::new(),
+            classification: None,
         });
     }
     let (mut nb, mut nx) = (0, 0);
@@ -260,6 +264,7 @@ pub fn assign(
             changes: Vec::new(),
             pieces,
             solids: Vec::new(),
+            classification: None,
         });
     }
     absorb_crumbs(&mut feats, MERGE * r.stock_volume);

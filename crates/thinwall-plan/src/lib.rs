@@ -5,6 +5,7 @@
 //! rules, the algorithm and every decision taken where the thesis is
 //! silent.
 
+pub mod classified;
 pub mod feature_order;
 pub mod features;
 pub mod removal;
@@ -202,7 +203,15 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let layers = steps::layers(out, &scene, &seq, &walls);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let (removal, machining_features, frame) = whole::removal_plan(part, out, &layers);
+    let mut machining_features = machining_features;
     let feature_sequence = feature_order::order(&machining_features, &layer_sequence);
+    let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
+    classified::classify_features(
+        &analysis,
+        &frame,
+        &mut machining_features,
+        &feature_sequence,
+    );
     Plan {
         schema: PLAN_SCHEMA.to_string(),
         thinwall_version: env!("CARGO_PKG_VERSION").to_string(),

@@ -107,23 +107,27 @@ pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -
 
 /// A feature's solids as one STEP text, and how many could not be written.
 pub fn feature_step(plan: &crate::Plan, f: &crate::features::RemovalFeature) -> (String, usize) {
-    use truck_stepio::out::{CompleteStepDisplay, StepHeaderDescriptor, StepModels};
     let solids: Vec<Solid> = f
         .solids
         .iter()
         .filter_map(|s| feature_solid(&plan.frame, s))
         .collect();
     let skipped = f.solids.len() - solids.len();
+    (solids_step(&solids, &f.id), skipped)
+}
+
+/// Solids as one STEP text named `name`.
+pub fn solids_step(solids: &[Solid], name: &str) -> String {
+    use truck_stepio::out::{CompleteStepDisplay, StepHeaderDescriptor, StepModels};
     let compressed: Vec<_> = solids.iter().map(|s| s.compress()).collect();
     let models: StepModels<_, _, _> = compressed.iter().collect();
-    let text = CompleteStepDisplay::new(
+    CompleteStepDisplay::new(
         models,
         StepHeaderDescriptor {
-            file_name: format!("{}.step", f.id),
+            file_name: format!("{name}.step"),
             organization_system: "thinwall".to_string(),
             ..Default::default()
         },
     )
-    .to_string();
-    (text, skipped)
+    .to_string()
 }

@@ -1,0 +1,176 @@
+//! Every machining feature classified by `thinwall-classify` in the plan's
+//! order: each solid of a feature is a volume (written by truck and read
+//! back by our reader), removed after every solid it touches that comes
+//! earlier in the order. A feature takes the type and product adjacency of
+//! its largest classified solid; `types` lists the others' where they
+//! differ. A feature none of whose solids could be classified is
+//! `unknown`, with the reason.
+
+use crate::feature_order::FeatureSequence;
+use crate::features::RemovalFeature;
+use serde::Serialize;
+use std::collections::HashMap;
+use thinwall_analysis::{PartAnalysis, VolumeType};
+use thinwall_classify::{classify, ProductAdjacency, Request, Volume};
+
+/// A feature's classification.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FeatureType {
+    #[serde(rename = "type")]
+    pub kind: VolumeType,
+    pub product_adjacency: ProductAdjacency,
+    /// The types of its other solids, where they differ.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub types: Vec<VolumeType>,
+    /// Why it is `unknown`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// A solid's 3-D box in the removal frame: x, y, z lows and highs.
+fn solid_box(s: &crate::features::FeatureSolid) -> [f64; 6] {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in s.rings.iter().flatten() {
+        let (zl, zu) = (s.lower.at(p[0], p[1]), s.upper.at(p[0], p[1]));
+        for (k, v) in [(0, p[0]), (1, p[1]), (2, zl), (2, zu)] {
+            b[k] = b[k].min(v);
+            b[k + 3] = b[k + 3].max(v);
+        }
+    }
+    b
+}
+
+fn touch(a: &[f64; 6], b: &[f64; 6], tol: f64) -> bool {
+    (0..3).all(|k| a[k] <= b[k + 3] + tol && b[k] <= a[k + 3] + tol)
+}
+
+/// Classify every feature; `frame` is the plan's removal frame.
+pub fn classify_features(
+    a: &PartAnalysis,
+    frame: &[[f64; 3]; 4],
+    features: &mut [RemovalFeature],
+    seq: &FeatureSequence,
+) {
+    let order: HashMap<&str, usize> = seq
+        .order
+        .iter()
+        .enumerate()
+        .map(|(i, id)| (id.as_str(), i))
+        .collect();
+    // Every solid that can be written, as a volume.
+    let mut volumes: Vec<Volume> = Vec::new();
+    let mut owner: Vec<(usize, usize)> = Vec::new();
+    let mut boxes: Vec<[f64; 6]> = Vec::new();
+    for (fi, f) in features.iter().enumerate() {
+        for (si, s) in f.solids.iter().enumerate() {
+            let Some(solid) = crate::volumes::feature_solid(frame, s) else {
+                continue;
+            };
+            let name = format!("{}#{}", f.id, si + 1);
+            let text = crate::volumes::solids_step(&[solid], &name);
+            let Ok((part, _)) = thinwall_step::read_bytes(text.as_bytes(), &name) else {
+                continue;
+            };
+            volumes.push(Volume {
+                name,
+                part,
+                current: None,
+            });
+            owner.push((fi, si));
+            boxes.push(solid_box(s));
+        }
+    }
+    let tol = 1e-6 * a.bounding_box().diagonal().max(1.0);
+    let rank: Vec<usize> = owner
+        .iter()
+        .map(|&(fi, _)| {
+            order
+                .get(features[fi].id.as_str())
+                .copied()
+                .unwrap_or(usize::MAX)
+        })
+        .collect();
+    // Sweep along x: pairs whose boxes touch, the earlier one first.
+    let mut by_x: Vec<usize> = (0..volumes.len()).collect();
+    by_x.sort_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
+    let mut before = Vec::new();
+    for (k, &i) in by_x.iter().enumerate() {
+        for &j in &by_x[k + 1..] {
+            if boxes[j][0] > boxes[i][3] + tol {
+                break;
+            }
+            if owner[i].0 == owner[j].0 || !touch(&boxes[i], &boxes[j], tol) {
+                continue;
+            }
+            match rank[i].cmp(&rank[j]) {
+                std::cmp::Ordering::Less => before.push((i, j)),
+                std::cmp::Ordering::Greater => before.push((j, i)),
+                std::cmp::Ordering::Equal => {}
+            }
+        }
+    }
+    let result = classify(&Request {
+        part: a,
+        volumes: &volumes,
+        before: &before,
+        priority: vec![],
+    });
+    let classes = match result {
+        Ok(c) => c,
+        Err(e) => {
+            let why = format!("classify.{}: {e}", e.code());
+            for f in features.iter_mut() {
+                f.classification = Some(unknown(&why));
+            }
+            return;
+        }
+    };
+    for (fi, f) in features.iter_mut().enumerate() {
+        let mine: Vec<(usize, &thinwall_classify::Classification)> = classes
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| owner[*k].0 == fi)
+            .map(|(k, c)| (owner[k].1, c))
+            .collect();
+        let Some(&(largest, c)) = mine.iter().max_by(|x, y| {
+            f.solids[x.0]
+                .volume_mm3
+                .total_cmp(&f.solids[y.0].volume_mm3)
+        }) else {
+            f.classification = Some(unknown(
+                "its solids are bounded by a cylinder or a cone: not classified yet",
+            ));
+            continue;
+        };
+        let mut types: Vec<VolumeType> = mine
+            .iter()
+            .filter(|(si, _)| *si != largest)
+            .map(|(_, o)| o.kind)
+            .filter(|k| *k != c.kind)
+            .collect();
+        types.sort_by_key(|k| k.name());
+        types.dedup();
+        f.classification = Some(FeatureType {
+            kind: c.kind,
+            product_adjacency: c.product_adjacency,
+            types,
+            reason: c.reason.clone(),
+        });
+    }
+}
+
+fn unknown(why: &str) -> FeatureType {
+    FeatureType {
+        kind: VolumeType::Unknown,
+        product_adjacency: ProductAdjacency::None,
+        types: Vec::new(),
+        reason: Some(why.to_string()),
+    }
+}
