@@ -58,15 +58,18 @@ fn layer_solids_are_closed_boxes_of_the_layer_volume_in_any_pose() {
 }
 
 /// Every machining feature of the whole removal plan, written as STEP,
-/// reads back as closed solids of the feature's volume (solids between
-/// planes; those bounded by a cylinder or a cone are not written yet and
-/// are counted).
+/// reads back as closed solids; those between planes of the feature's
+/// volume. (Solids swept from a profile with arcs — over foot fillets,
+/// inside holes through ribs — come back with truck's rational B-spline
+/// faces, which our reader keeps without a surface: their volumes are
+/// checked from outside by `scripts/check_volumes_occ.py`. Solids over a
+/// cone are not written yet and are counted.)
 #[test]
 fn removal_features_read_back_as_closed_solids_of_their_volume() {
     let mut parts = common::step_files(&common::shared_data().join("thinwall"));
     parts.push(common::root().join("fixtures/recognition/rib_grid_panel.step"));
     parts.push(common::root().join("fixtures/recognition/drafted_2.step"));
-    let (mut written, mut skipped) = (0, 0);
+    let (mut written, mut skipped, mut curved) = (0, 0, 0);
     for path in parts {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(&path).unwrap();
@@ -80,12 +83,12 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
         for f in &p.machining_features {
             let (step, missing) = volumes::feature_step(&p, f);
             skipped += missing;
-            let want: f64 = f
+            let planar: Vec<_> = f
                 .solids
                 .iter()
-                .filter(|s| volumes::feature_solid(&p.frame, s).is_some())
-                .map(|s| s.volume_mm3)
-                .sum();
+                .filter(|s| volumes::planar_solid(&p.frame, s).is_some())
+                .collect();
+            let want: f64 = planar.iter().map(|s| s.volume_mm3).sum();
             if missing == f.solids.len() {
                 continue;
             }
@@ -93,6 +96,30 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
                 .unwrap_or_else(|e| panic!("{name} {}: {e}", f.id));
             let a = PartAnalysis::new(&solid, Setup::default());
             assert!(a.free_edges().is_empty(), "{name} {}: open", f.id);
+            assert_eq!(
+                solid.bodies.len(),
+                f.solids.len() - missing,
+                "{name} {}",
+                f.id
+            );
+            if planar.len() < f.solids.len() - missing {
+                curved += f.solids.len() - missing - planar.len();
+                written += f.solids.len() - missing;
+                continue;
+            }
+            let kinds: Vec<&str> = solid
+                .face_ids()
+                .map(|x| solid.face(x).surface.kind_name())
+                .collect();
+            assert!(
+                kinds.iter().all(|k| *k == "plane"),
+                "{name} {}: faces {kinds:?} of {:?}",
+                f.id,
+                f.solids
+                    .iter()
+                    .map(|s| (&s.lower, &s.upper))
+                    .collect::<Vec<_>>()
+            );
             let got = volume(&solid);
             assert!(
                 (got - want).abs() <= 1e-9 * p.removal.stock_volume_mm3,
@@ -102,8 +129,7 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
             written += f.solids.len() - missing;
         }
     }
-    eprintln!(
-        "{written} solids written and read back, {skipped} bounded by curved faces not written"
-    );
+    eprintln!("{written} solids written and read back closed ({curved} swept with arcs), {skipped} not written");
     assert!(written > 200, "{written}");
+    assert!(curved > 0, "no swept solid was written");
 }

@@ -40,20 +40,147 @@ pub fn layer_step(layer: &Layer) -> String {
     .to_string()
 }
 
-/// A feature solid between two planes as a truck solid: its rings at the
-/// lower and the upper height, joined by vertical quads (faces attached
-/// to shared edges, so the shell is closed). `None` for a solid bounded
-/// by a cylinder or a cone (not written yet) or one whose two ends meet.
+/// A feature solid as a truck solid: between two planes by
+/// [`planar_solid`]; bounded by a half cylinder over a rectangle along its
+/// axis by [`swept_solid`]. `None` for the rest (a cone, a cylinder over
+/// another shape: not written yet).
 pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+    use crate::removal::pieces::Height;
+    match (&s.lower, &s.upper) {
+        (Height::Plane { .. }, Height::Plane { .. }) => planar_solid(frame, s),
+        (Height::Cylinder { .. }, _) | (_, Height::Cylinder { .. }) => swept_solid(frame, s),
+        _ => None,
+    }
+}
+
+/// A point of the removal frame in world coordinates.
+fn to_world(frame: &[[f64; 3]; 4], x: f64, y: f64, z: f64) -> Point3 {
+    let c = |k: usize| frame[0][k] + x * frame[1][k] + y * frame[2][k] + z * frame[3][k];
+    Point3::new(c(0), c(1), c(2))
+}
+
+/// A solid bounded below or above by a half cylinder about a horizontal
+/// axis, over a rectangle along that axis: its profile square to the axis
+/// (arcs where a bound is the cylinder, lines where it is a plane level
+/// along the axis) swept along it. `None` where the region is not such a
+/// rectangle.
+pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+    use crate::removal::pieces::Height;
+    use truck_modeling::Wire;
+    let (o, a) = match (&s.lower, &s.upper) {
+        (Height::Cylinder { o, a, .. }, _) | (_, Height::Cylinder { o, a, .. }) => (*o, *a),
+        _ => return None,
+    };
+    if s.rings.len() != 1 {
+        return None;
+    }
+    // (u, s): across and along the axis.
+    let us = |p: &[f64; 2]| {
+        let (dx, dy) = (p[0] - o[0], p[1] - o[1]);
+        (-dx * a[1] + dy * a[0], dx * a[0] + dy * a[1])
+    };
+    let pts: Vec<(f64, f64)> = s.rings[0].iter().map(us).collect();
+    let (u0, u1, s0, s1) = pts.iter().fold(
+        (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ),
+        |m, p| (m.0.min(p.0), m.1.max(p.0), m.2.min(p.1), m.3.max(p.1)),
+    );
+    let size = (u1 - u0).max(s1 - s0);
+    let tol = 1e-7 * size.max(1.0);
+    let on_side = |p: &(f64, f64)| {
+        (p.0 - u0).abs() < tol
+            || (p.0 - u1).abs() < tol
+            || (p.1 - s0).abs() < tol
+            || (p.1 - s1).abs() < tol
+    };
+    let rect = (u1 - u0) * (s1 - s0);
+    let area: f64 = {
+        let mut sum = 0.0;
+        for i in 0..pts.len() {
+            let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+            sum += p.0 * q.1 - q.0 * p.1;
+        }
+        0.5 * sum.abs()
+    };
+    if !pts.iter().all(on_side) || (area - rect).abs() > 1e-9 * rect.max(1.0) {
+        return None;
+    }
+    // A plane bound must be level along the axis.
+    for h in [&s.lower, &s.upper] {
+        if let Height::Plane { gx, gy, .. } = h {
+            if (gx * a[0] + gy * a[1]).abs() > 1e-9 {
+                return None;
+            }
+        }
+    }
+    // Frame coordinates of a profile point at (u, z), at s = s0.
+    let at = |u: f64, z: f64| {
+        let (x, y) = (o[0] + a[0] * s0 - a[1] * u, o[1] + a[1] * s0 + a[0] * u);
+        to_world(frame, x, y, z)
+    };
+    let (zl0, zl1) = (s.lower.at_us(&o, &a, u0, s0), s.lower.at_us(&o, &a, u1, s0));
+    let (zu0, zu1) = (s.upper.at_us(&o, &a, u0, s0), s.upper.at_us(&o, &a, u1, s0));
+    let meet = |p: f64, q: f64| (p - q).abs() <= tol;
+    let v_l0 = builder::vertex(at(u0, zl0));
+    let v_l1 = builder::vertex(at(u1, zl1));
+    let v_u1 = if meet(zl1, zu1) {
+        v_l1.clone()
+    } else {
+        builder::vertex(at(u1, zu1))
+    };
+    let v_u0 = if meet(zl0, zu0) {
+        v_l0.clone()
+    } else {
+        builder::vertex(at(u0, zu0))
+    };
+    let bound_edge = |h: &Height,
+                      from: &truck_modeling::Vertex,
+                      to: &truck_modeling::Vertex,
+                      ua: f64,
+                      ub: f64| {
+        match h {
+            Height::Cylinder { .. } => {
+                let um = 0.5 * (ua + ub);
+                builder::circle_arc(from, to, at(um, h.at_us(&o, &a, um, s0)))
+            }
+            _ => builder::line(from, to),
+        }
+    };
+    let mut edges = vec![bound_edge(&s.lower, &v_l0, &v_l1, u0, u1)];
+    if !meet(zl1, zu1) {
+        edges.push(builder::line(&v_l1, &v_u1));
+    }
+    edges.push(bound_edge(&s.upper, &v_u1, &v_u0, u1, u0));
+    if !meet(zl0, zu0) {
+        edges.push(builder::line(&v_u0, &v_l0));
+    }
+    let wire: Wire = edges.into();
+    let face = builder::try_attach_plane(&[wire]).ok()?;
+    let d = frame_vector(frame, a[0] * (s1 - s0), a[1] * (s1 - s0));
+    Some(builder::tsweep(&face, d))
+}
+
+/// A vector of the removal frame's xy plane in world coordinates.
+fn frame_vector(frame: &[[f64; 3]; 4], x: f64, y: f64) -> truck_modeling::Vector3 {
+    let c = |k: usize| x * frame[1][k] + y * frame[2][k];
+    truck_modeling::Vector3::new(c(0), c(1), c(2))
+}
+
+/// A solid between two planes: its rings at the lower and the upper
+/// height, joined by vertical quads (faces attached to shared edges, so
+/// the shell is closed). `None` where its two ends meet or a bound is not
+/// a plane.
+pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
     use crate::removal::pieces::Height;
     use truck_modeling::{Edge, Face, Shell, Vertex, Wire};
     if !matches!(s.lower, Height::Plane { .. }) || !matches!(s.upper, Height::Plane { .. }) {
         return None;
     }
-    let world = |x: f64, y: f64, z: f64| {
-        let c = |k: usize| frame[0][k] + x * frame[1][k] + y * frame[2][k] + z * frame[3][k];
-        Point3::new(c(0), c(1), c(2))
-    };
+    let world = |x: f64, y: f64, z: f64| to_world(frame, x, y, z);
     let mut bottom_wires = Vec::new();
     let mut top_wires = Vec::new();
     let mut sides: Vec<Face> = Vec::new();

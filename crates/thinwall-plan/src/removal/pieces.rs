@@ -233,6 +233,12 @@ impl Height {
         }
     }
 
+    /// The height at `(u, s)` across and along a horizontal axis through
+    /// `o` along `a` (the frame's x, y of that point).
+    pub fn at_us(&self, o: &[f64; 3], a: &[f64; 2], u: f64, s: f64) -> f64 {
+        self.at(o[0] + a[0] * s - a[1] * u, o[1] + a[1] * s + a[0] * u)
+    }
+
     /// Whether the height is one constant (a horizontal plane).
     pub fn flat(&self) -> Option<f64> {
         match *self {
