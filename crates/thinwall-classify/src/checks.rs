@@ -76,16 +76,19 @@ pub fn volumes(
     let tol = 1e-3;
     let of_part = signature(part, tol);
     let sigs: Vec<_> = analyses.iter().map(|a| signature(a, tol)).collect();
+    let mut first: std::collections::HashMap<&Vec<(String, i64, [i64; 3])>, usize> =
+        std::collections::HashMap::new();
     for (i, s) in sigs.iter().enumerate() {
         if *s == of_part {
             return Err(ClassifyError::PartAsVolume { volume: i });
         }
-        if let Some(j) = sigs[..i].iter().position(|t| t == s) {
+        if let Some(&j) = first.get(s) {
             return Err(ClassifyError::Duplicate {
                 first: j,
                 second: i,
             });
         }
+        first.insert(s, i);
     }
     Ok(())
 }

@@ -320,13 +320,16 @@ fn overlaps_material(
         {
             continue;
         }
-        let mut pts = ctx.part.boundary_points(g.face).to_vec();
-        // Also a point inside a planar face, for faces crossing the volume
-        // without a boundary point in it (a floor the volume cuts through).
-        if let Some(ip) = g.inner_point() {
-            pts.push(ip);
-        }
+        // Its boundary points, and a point inside a planar face, for faces
+        // crossing the volume without a boundary point in it (a floor the
+        // volume cuts through).
+        let inner = g.inner_point();
+        let pts = ctx.part.boundary_points(g.face).iter().chain(inner.iter());
         for p in pts {
+            // Outside the volume's box: not in it.
+            if (0..3).any(|k| p[k] < own.min[k] - margin || p[k] > own.max[k] + margin) {
+                continue;
+            }
             let h = p.coords.dot(ctx.up);
             if h <= bot_h + margin || h >= top_h - margin {
                 continue;

@@ -273,15 +273,30 @@ pub fn ring(pts: impl Iterator<Item = (f64, f64)>) -> LineString<f64> {
 }
 
 /// The region of a face's rings (even-odd: the largest ring outside, the
-/// others cut out), as a valid polygon.
+/// others cut out), as a valid polygon. The common case — every other
+/// ring inside the largest and apart from each other, holes of a face —
+/// is built directly; anything else by exclusive or, ring by ring.
 fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
-    use geo::Area;
-    let mut region = MultiPolygon::new(vec![]);
+    use geo::{Area, Contains};
     let mut order: Vec<(f64, LineString<f64>)> = rings
         .into_iter()
         .map(|r| (Polygon::new(r.clone(), vec![]).unsigned_area(), r))
         .collect();
     order.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let Some((_, outer)) = order.first() else {
+        return MultiPolygon::new(vec![]);
+    };
+    let outer_poly = Polygon::new(outer.clone(), vec![]);
+    let nested = order[1..].iter().all(|(_, r)| {
+        r.0.first()
+            .is_some_and(|c| outer_poly.contains(&geo::Point::from(*c)))
+    });
+    if nested && order.len() <= 2 || nested && holes_apart(&order[1..]) {
+        let holes = order[1..].iter().map(|(_, r)| r.clone()).collect();
+        let p = Polygon::new(outer.clone(), holes).orient(geo::orient::Direction::Default);
+        return MultiPolygon::new(vec![p]);
+    }
+    let mut region = MultiPolygon::new(vec![]);
     for (_, r) in order {
         let p = MultiPolygon::new(vec![
             Polygon::new(r, vec![]).orient(geo::orient::Direction::Default)
@@ -293,6 +308,27 @@ fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
         };
     }
     region
+}
+
+/// Whether rings' boxes are pairwise apart (then no ring holds another).
+fn holes_apart(rings: &[(f64, LineString<f64>)]) -> bool {
+    use geo::BoundingRect;
+    let mut boxes: Vec<Rect<f64>> = rings
+        .iter()
+        .filter_map(|(_, r)| r.bounding_rect())
+        .collect();
+    boxes.sort_by(|a, b| a.min().x.total_cmp(&b.min().x));
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            if b.min().x > a.max().x {
+                break;
+            }
+            if b.min().y <= a.max().y && a.min().y <= b.max().y {
+                return false;
+            }
+        }
+    }
+    true
 }
 
 /// A cylinder about a horizontal axis: its region in (θ, s) (θ about the
