@@ -40,7 +40,10 @@ pub fn sequence(before: &[(usize, usize)], count: usize) -> Result<(), ClassifyE
 
 /// A face's signature for comparing solids: surface kind, area and
 /// centroid, rounded to the tolerance.
-fn signature(a: &PartAnalysis, tol: f64) -> Vec<(String, i64, [i64; 3])> {
+/// A solid's faces, rounded: kind, √area and centroid.
+type Signature = Vec<(String, i64, [i64; 3])>;
+
+fn signature(a: &PartAnalysis, tol: f64) -> Signature {
     let q = |x: f64| (x / tol).round() as i64;
     let mut v: Vec<_> = a
         .part()
@@ -76,8 +79,7 @@ pub fn volumes(
     let tol = 1e-3;
     let of_part = signature(part, tol);
     let sigs: Vec<_> = analyses.iter().map(|a| signature(a, tol)).collect();
-    let mut first: std::collections::HashMap<&Vec<(String, i64, [i64; 3])>, usize> =
-        std::collections::HashMap::new();
+    let mut first: std::collections::HashMap<&Signature, usize> = std::collections::HashMap::new();
     for (i, s) in sigs.iter().enumerate() {
         if *s == of_part {
             return Err(ClassifyError::PartAsVolume { volume: i });
