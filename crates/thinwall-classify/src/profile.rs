@@ -334,7 +334,7 @@ fn overlaps_material(
             if h <= bot_h + margin || h >= top_h - margin {
                 continue;
             }
-            let l = frame.to_local(&p);
+            let l = frame.to_local(p);
             if l.x < rect.min().x || l.x > rect.max().x || l.y < rect.min().y || l.y > rect.max().y
             {
                 continue;
