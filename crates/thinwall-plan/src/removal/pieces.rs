@@ -291,7 +291,7 @@ fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
         r.0.first()
             .is_some_and(|c| outer_poly.contains(&geo::Point::from(*c)))
     });
-    if nested && order.len() <= 2 || nested && holes_apart(&order[1..]) {
+    if nested && (order.len() <= 2 || holes_apart(&order[1..])) {
         let holes = order[1..].iter().map(|(_, r)| r.clone()).collect();
         let p = Polygon::new(outer.clone(), holes).orient(geo::orient::Direction::Default);
         return MultiPolygon::new(vec![p]);
