@@ -137,9 +137,51 @@ pub fn assign(
     band_area: &[f64],
     tol: f64,
 ) -> (Vec<RemovalFeature>, f64) {
+    let (by_layer, rest, dropped) = distribute(r, layers, layer_band, tol);
+    let mut feats: Vec<RemovalFeature> = layers
+        .iter()
+        .zip(by_layer)
+        .enumerate()
+        .map(|(li, (l, pieces))| layer_feature(l, pieces, band_area[li]))
+        .collect();
     let owners = face_owners(out);
-    // Slivers of the booleans (under 1e-9 of the stock each): left out,
-    // their total reported.
+    // Bulk from the top down, then the other set-up's. Tops compared in
+    // tenths of a micrometre: equal heights stay in key order whatever the
+    // rounding of a pose.
+    let mut groups: Vec<(BulkKey, Vec<Piece>)> = rest.into_iter().collect();
+    let top = |p: &Vec<Piece>| {
+        let z = p.iter().map(|q| q.z[1]).fold(f64::NEG_INFINITY, f64::max);
+        (z * 1e4).round() as i64
+    };
+    groups.sort_by(|a, b| b.0 .0.cmp(&a.0 .0).then_with(|| top(&b.1).cmp(&top(&a.1))));
+    for ((reachable, [lo, hi], _), pieces) in groups {
+        let owner = [lo, hi].iter().find_map(|k| match k {
+            Key::Part(step) => owners.get(step).copied(),
+            _ => None,
+        });
+        feats.push(rest_feature(r, reachable, owner, pieces));
+    }
+    absorb_crumbs(&mut feats, MERGE * r.stock_volume);
+    feats.retain(|f| !f.pieces.is_empty() || f.step.is_some());
+    renumber(&mut feats);
+    for f in &mut feats {
+        f.faces = crate::touch::faces_touched(r, &f.pieces, tol);
+        f.solids = solids(r, &f.pieces);
+    }
+    (feats, dropped)
+}
+
+/// Every block cut at the heights of the layers over it, each piece given
+/// to the first of those layers (plan order) that holds it, the rest
+/// grouped for bulk and other set-up features; with the total of the
+/// slivers left out (pieces under [`SLIVER`] of the stock).
+#[allow(clippy::type_complexity)]
+fn distribute(
+    r: &Removal,
+    layers: &[Layer],
+    layer_band: &[Option<usize>],
+    tol: f64,
+) -> (Vec<Vec<Piece>>, BTreeMap<BulkKey, Vec<Piece>>, f64) {
     let negligible = SLIVER * r.stock_volume;
     let mut dropped = 0.0;
     let mut by_layer: Vec<Vec<Piece>> = vec![Vec::new(); layers.len()];
@@ -183,98 +225,78 @@ pub fn assign(
             }
         }
     }
-    let mut feats = Vec::new();
-    for (li, (l, pieces)) in layers.iter().zip(by_layer).enumerate() {
-        let volume: f64 = pieces.iter().map(|p| p.volume).sum();
-        // The box as the plan cuts it: its band times its cut heights.
-        let box_volume = band_area[li] * (l.cut_heights[1] - l.cut_heights[0]);
-        let mut changes = Vec::new();
-        if pieces.is_empty() {
-            changes.push(
-                "vanished: nothing to remove in its box (outside the stock, or the part and earlier features fill it)"
-                    .to_string(),
-            );
-        } else if (box_volume - volume).abs() > 1e-6 * box_volume {
-            changes.push(format!(
-                "{:.1} mm³ of its {:.1} mm³ box is part material or an earlier feature's",
-                box_volume - volume,
-                box_volume
-            ));
-        }
-        feats.push(RemovalFeature {
-            id: l.id.clone(),
-            owner: Some(l.owner),
-            side: Some(l.side),
-            step: Some(l.step),
-            size_class: match l.size_class {
-                SizeClass::Large => FeatureClass::Large,
-                SizeClass::Small => FeatureClass::Small,
-            },
-            z_range: z_range(&pieces, l.cut_heights),
-            volume_mm3: volume,
-            box_volume_mm3: Some(box_volume),
-            faces: Vec::new(),
-            reachable: true,
-            access: None,
-            changes,
-            pieces,
-            solids: Vec::new(),
-            classification: None,
-        });
+    (by_layer, rest, dropped)
+}
+
+/// A layer as a feature: its pieces, and what interference did to its box
+/// (`band_area` × its cut heights).
+fn layer_feature(l: &Layer, pieces: Vec<Piece>, band_area: f64) -> RemovalFeature {
+    let volume: f64 = pieces.iter().map(|p| p.volume).sum();
+    let box_volume = band_area * (l.cut_heights[1] - l.cut_heights[0]);
+    let mut changes = Vec::new();
+    if pieces.is_empty() {
+        changes.push(
+            "vanished: nothing to remove in its box (outside the stock, or the part and earlier features fill it)"
+                .to_string(),
+        );
+    } else if (box_volume - volume).abs() > 1e-6 * box_volume {
+        changes.push(format!(
+            "{:.1} mm³ of its {:.1} mm³ box is part material or an earlier feature's",
+            box_volume - volume,
+            box_volume
+        ));
     }
-    let (mut nb, mut nx) = (0, 0);
-    // Bulk from the top down, then the other set-up's.
-    let mut groups: Vec<(BulkKey, Vec<Piece>)> = rest.into_iter().collect();
-    // Tops compared in tenths of a micrometre: equal heights stay in key
-    // order whatever the rounding of a pose.
-    let top = |p: &Vec<Piece>| {
-        let z = p.iter().map(|q| q.z[1]).fold(f64::NEG_INFINITY, f64::max);
-        (z * 1e4).round() as i64
-    };
-    groups.sort_by(|a, b| b.0 .0.cmp(&a.0 .0).then_with(|| top(&b.1).cmp(&top(&a.1))));
-    for ((reachable, [lo, hi], _), pieces) in groups {
-        let owner = [lo, hi].iter().find_map(|k| match k {
-            Key::Part(step) => owners.get(step).copied(),
-            _ => None,
-        });
-        let id = if reachable {
-            nb += 1;
-            format!("B{nb}")
+    RemovalFeature {
+        id: l.id.clone(),
+        owner: Some(l.owner),
+        side: Some(l.side),
+        step: Some(l.step),
+        size_class: match l.size_class {
+            SizeClass::Large => FeatureClass::Large,
+            SizeClass::Small => FeatureClass::Small,
+        },
+        z_range: z_range(&pieces, l.cut_heights),
+        volume_mm3: volume,
+        box_volume_mm3: Some(box_volume),
+        faces: Vec::new(),
+        reachable: true,
+        access: None,
+        changes,
+        pieces,
+        solids: Vec::new(),
+        classification: None,
+    }
+}
+
+/// A bulk or other-set-up feature (numbered later, by `renumber`).
+fn rest_feature(
+    r: &Removal,
+    reachable: bool,
+    owner: Option<FeatureId>,
+    pieces: Vec<Piece>,
+) -> RemovalFeature {
+    let access = (!reachable).then(|| access_of(r, &pieces)).flatten();
+    RemovalFeature {
+        id: String::new(),
+        owner,
+        side: None,
+        step: None,
+        size_class: if reachable {
+            FeatureClass::Bulk
         } else {
-            nx += 1;
-            format!("X{nx}")
-        };
-        let access = (!reachable).then(|| access_of(r, &pieces)).flatten();
-        feats.push(RemovalFeature {
-            id,
-            owner,
-            side: None,
-            step: None,
-            size_class: if reachable {
-                FeatureClass::Bulk
-            } else {
-                FeatureClass::OtherSetup
-            },
-            z_range: z_range(&pieces, [0.0, 0.0]),
-            volume_mm3: pieces.iter().map(|p| p.volume).sum(),
-            box_volume_mm3: None,
-            faces: Vec::new(),
-            reachable,
-            access,
-            changes: Vec::new(),
-            pieces,
-            solids: Vec::new(),
-            classification: None,
-        });
+            FeatureClass::OtherSetup
+        },
+        z_range: z_range(&pieces, [0.0, 0.0]),
+        volume_mm3: pieces.iter().map(|p| p.volume).sum(),
+        box_volume_mm3: None,
+        faces: Vec::new(),
+        reachable,
+        access,
+        changes: Vec::new(),
+        pieces,
+        solids: Vec::new(),
+        classification: None,
     }
-    absorb_crumbs(&mut feats, MERGE * r.stock_volume);
-    feats.retain(|f| !f.pieces.is_empty() || f.step.is_some());
-    renumber(&mut feats);
-    for f in &mut feats {
-        f.faces = crate::touch::faces_touched(r, &f.pieces, tol);
-        f.solids = solids(r, &f.pieces);
-    }
-    (feats, dropped)
 }
 
 /// Bulk pieces group by reachability, the block's bounds (what they lie

@@ -5,7 +5,7 @@ use crate::features::{assign, RemovalFeature};
 use crate::removal::{frame_of, Removal, StockShape};
 use crate::steps::Layer;
 use crate::RemovalSummary;
-use geo::{Coord, LineString, MultiPolygon, Polygon};
+use geo::{Coord, LineString, MultiPolygon, Orient, Polygon};
 use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, PartAnalysis};
 use thinwall_brep::Part;
@@ -132,5 +132,3 @@ fn bands(
     }
     (out, which)
 }
-
-use geo::Orient;
