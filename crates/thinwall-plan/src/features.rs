@@ -405,15 +405,18 @@ fn access_of(r: &Removal, pieces: &[Piece]) -> Option<[f64; 3]> {
 /// bounds are one region (their cells' union), one solid per polygon.
 fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
     use geo::{BooleanOps, MultiPolygon, Orient};
-    let mut groups: Vec<([Bound; 2], Vec<usize>)> = Vec::new();
+    // Grouped by their bounds as keys: cut heights equal up to rounding
+    // (a pose) are one height.
+    let mut groups: Vec<([Key; 2], [Bound; 2], Vec<usize>)> = Vec::new();
     for (i, p) in pieces.iter().enumerate() {
-        match groups.iter_mut().find(|g| g.0 == [p.lower, p.upper]) {
-            Some(g) => g.1.push(i),
-            None => groups.push(([p.lower, p.upper], vec![i])),
+        let k = [key(r, &p.lower), key(r, &p.upper)];
+        match groups.iter_mut().find(|g| g.0 == k) {
+            Some(g) => g.2.push(i),
+            None => groups.push((k, [p.lower, p.upper], vec![i])),
         }
     }
     let mut out = Vec::new();
-    for ([lo, hi], members) in groups {
+    for (_, [lo, hi], members) in groups {
         let mut region = MultiPolygon::new(vec![]);
         for &i in &members {
             let cell = &pieces[i].region;
