@@ -15,17 +15,10 @@ use thinwall_geom::{Frame, Point3, Surface, Vector3};
 use thinwall_plan::features::{FeatureClass, FeatureSolid, SLIVER};
 use thinwall_plan::removal::pieces::{pieces, Facing};
 use thinwall_plan::removal::{frame_of, Removal, StockShape};
-use thinwall_plan::{plan, Plan, RuleSet};
+use thinwall_plan::{Plan, RuleSet};
 
 fn plan_text(text: &str, up: [f64; 3]) -> (Part, Plan) {
-    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
-    let req = thinwall_pipeline::Request {
-        setup: Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
-        ..Default::default()
-    };
-    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
-    let p = plan("part.step", &part, &out, &RuleSet::default_rules());
-    (part, p)
+    common::plan_text(text, up, &RuleSet::default_rules())
 }
 
 fn parts() -> Vec<std::path::PathBuf> {
@@ -270,12 +263,16 @@ fn the_order_keeps_every_relation_and_the_step_approach() {
         for r in &p.feature_sequence.relations {
             assert!(at(&r.before) < at(&r.after), "{name}: {r:?}");
         }
-        // Height: a feature lying on another comes out first.
-        assert!(p
-            .feature_sequence
-            .relations
-            .iter()
-            .all(|r| !r.why.is_empty()));
+        // Every relation says why; a feature lying on another reaches
+        // above that one's bottom.
+        let feature = |id: &str| p.machining_features.iter().find(|f| f.id == id).unwrap();
+        for r in &p.feature_sequence.relations {
+            assert!(!r.why.is_empty(), "{name}: {r:?}");
+            if r.why.ends_with(&format!("lies above {}", r.after)) {
+                let (a, b) = (feature(&r.before), feature(&r.after));
+                assert!(a.z_range[1] > b.z_range[0], "{name}: {r:?}");
+            }
+        }
         // Each wall: its layers in step order, the large one first; a
         // small layer only once the large one beside it is down to its
         // depth (fig. 4.1).

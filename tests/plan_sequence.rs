@@ -7,17 +7,11 @@
 
 mod common;
 
-use thinwall_analysis::{FeatureId, Setup, StiffnessKind};
-use thinwall_plan::{plan, Plan, Rejection, Relation, RuleSet};
+use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_plan::{Plan, Rejection, Relation, RuleSet};
 
 fn plan_text(text: &str, up: [f64; 3], rules: &RuleSet) -> Plan {
-    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
-    let req = thinwall_pipeline::Request {
-        setup: Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
-        ..Default::default()
-    };
-    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
-    plan("part.step", &part, &out, rules)
+    common::plan_text(text, up, rules).1
 }
 
 fn plan_file(path: &std::path::Path, rules: &RuleSet) -> Plan {

@@ -5,7 +5,7 @@
 mod common;
 
 use thinwall_analysis::{PartAnalysis, Setup};
-use thinwall_plan::{plan, volumes, RuleSet};
+use thinwall_plan::{volumes, RuleSet};
 
 /// Volume of a closed solid with planar faces: Σ (n · c) A / 3.
 fn volume(part: &thinwall_brep::Part) -> f64 {
@@ -20,13 +20,7 @@ fn volume(part: &thinwall_brep::Part) -> f64 {
 }
 
 fn layers_read_back(text: &str, up: [f64; 3]) -> usize {
-    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
-    let req = thinwall_pipeline::Request {
-        setup: Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
-        ..Default::default()
-    };
-    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
-    let p = plan("part.step", &part, &out, &RuleSet::default_rules());
+    let (_, p) = common::plan_text(text, up, &RuleSet::default_rules());
     for l in &p.layers {
         let step = volumes::layer_step(l);
         let (solid, _) = thinwall_step::read_bytes(step.as_bytes(), "layer.step")
@@ -73,13 +67,7 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
     for path in parts {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(&path).unwrap();
-        let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
-        let req = thinwall_pipeline::Request {
-            setup: Setup::new([0.0, 0.0, 1.0], thinwall_analysis::Machine::ThreeAxis).unwrap(),
-            ..Default::default()
-        };
-        let out = thinwall_pipeline::run(&part, None, &req).unwrap();
-        let p = plan("part.step", &part, &out, &RuleSet::default_rules());
+        let (_, p) = common::plan_text(&text, [0.0, 0.0, 1.0], &RuleSet::default_rules());
         for f in &p.machining_features {
             let (step, missing) = volumes::feature_step(&p, f);
             skipped += missing;

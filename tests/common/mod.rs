@@ -44,6 +44,22 @@ pub fn recognize_with(
     thinwall_recognize::recognize(&a, config)
 }
 
+/// Read STEP text and plan it in a 3-axis set-up with `up` and `rules`.
+pub fn plan_text(
+    text: &str,
+    up: [f64; 3],
+    rules: &thinwall_plan::RuleSet,
+) -> (thinwall_brep::Part, thinwall_plan::Plan) {
+    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
+    let req = thinwall_pipeline::Request {
+        setup: thinwall_analysis::Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
+        ..Default::default()
+    };
+    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
+    let p = thinwall_plan::plan("part.step", &part, &out, rules);
+    (part, p)
+}
+
 /// The STEP text of a part turned by a rigid motion: every 3-D
 /// `CARTESIAN_POINT` is rotated by `r` and moved by `t`, every 3-D
 /// `DIRECTION` rotated (2-D parameter-space ones are left alone). Works on

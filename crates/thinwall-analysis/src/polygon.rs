@@ -48,6 +48,29 @@ pub fn outer_loops(part: &Part, face: FaceId) -> Vec<bool> {
     (0..f.loops.len()).map(|i| Some(i) == largest).collect()
 }
 
+/// Parameters along an edge curve in the coedge's direction, both ends
+/// included: the ends of a straight edge, `per_span` steps per knot span of
+/// a curved one; and whether the edge is straight.
+pub fn coedge_params(
+    c: &thinwall_geom::NurbsCurve,
+    forward: bool,
+    per_span: usize,
+) -> (Vec<f64>, bool) {
+    let straight = c.degree == 1 && c.is_polynomial();
+    let mut ts = Vec::new();
+    for (a, b) in c.spans() {
+        let n = if straight { 1 } else { per_span };
+        for k in 0..n {
+            ts.push(a + (b - a) * k as f64 / n as f64);
+        }
+    }
+    ts.push(c.domain().1);
+    if !forward {
+        ts.reverse();
+    }
+    (ts, straight)
+}
+
 /// Sample the loops of a face.
 pub fn face_loops(part: &Part, face: FaceId) -> FaceLoops {
     let f = part.face(face);
@@ -65,18 +88,7 @@ pub fn face_loops(part: &Part, face: FaceId) -> FaceLoops {
                 pts.push(part.vertex(if ce.forward { e.start } else { e.end }).point);
                 continue;
             };
-            let mut ts = Vec::new();
-            let straight = c.degree == 1 && c.is_polynomial();
-            for (a, b) in c.spans() {
-                let n = if straight { 1 } else { SAMPLES_PER_SPAN };
-                for k in 0..n {
-                    ts.push(a + (b - a) * k as f64 / n as f64);
-                }
-            }
-            ts.push(c.domain().1);
-            if !ce.forward {
-                ts.reverse();
-            }
+            let (mut ts, _) = coedge_params(c, ce.forward, SAMPLES_PER_SPAN);
             ts.pop();
             pts.extend(ts.into_iter().map(|t| c.point(t)));
         }

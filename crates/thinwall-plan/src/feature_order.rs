@@ -14,7 +14,7 @@
 //! then the first designed.
 
 use crate::features::RemovalFeature;
-use crate::removal::Bound;
+use crate::removal::BoundId;
 use crate::LayerConstraint;
 use petgraph::algo::has_path_connecting;
 use petgraph::graph::{DiGraph, NodeIndex};
@@ -71,16 +71,16 @@ pub fn order(features: &[RemovalFeature], layer_rel: &[LayerConstraint]) -> Feat
     };
     // 1. above: the feature whose piece begins where another's ends lies
     // above it.
-    let mut at_top: HashMap<(usize, BoundKey), usize> = HashMap::new();
+    let mut at_top: HashMap<(usize, BoundId), usize> = HashMap::new();
     for (i, f) in features.iter().enumerate() {
         for p in &f.pieces {
-            at_top.insert((p.cell, BoundKey::of(&p.upper)), i);
+            at_top.insert((p.cell, p.upper.id()), i);
         }
     }
     let mut above = BTreeSet::new();
     for (i, f) in features.iter().enumerate() {
         for p in &f.pieces {
-            if let Some(&below) = at_top.get(&(p.cell, BoundKey::of(&p.lower))) {
+            if let Some(&below) = at_top.get(&(p.cell, p.lower.id())) {
                 if below != i {
                     above.insert((i, below));
                 }
@@ -142,22 +142,4 @@ fn topo(features: &[RemovalFeature], g: &DiGraph<usize, ()>, nodes: &[NodeIndex]
 /// compare equal whatever the rounding of a pose).
 fn ordered(z: f64) -> i64 {
     (z * 1e4).round() as i64
-}
-
-/// A bound as a hash key.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-enum BoundKey {
-    Flat(u64),
-    Part(usize),
-    Stock(usize),
-}
-
-impl BoundKey {
-    fn of(b: &Bound) -> Self {
-        match *b {
-            Bound::Flat(z) => BoundKey::Flat(z.to_bits()),
-            Bound::Part(i) => BoundKey::Part(i),
-            Bound::Stock(i) => BoundKey::Stock(i),
-        }
-    }
 }

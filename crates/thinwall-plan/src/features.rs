@@ -466,15 +466,9 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
 /// piece ends where theirs begins, or begins where theirs ends).
 fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
     use std::collections::HashMap;
-    let key = |cell: usize, b: &Bound| -> (usize, u8, u64) {
-        match *b {
-            Bound::Flat(z) => (cell, 0, z.to_bits()),
-            Bound::Part(i) => (cell, 1, i as u64),
-            Bound::Stock(i) => (cell, 2, i as u64),
-        }
-    };
+    let key = |cell: usize, b: &Bound| (cell, b.id());
     // Where the pieces of the features large enough to host end and begin.
-    let mut ends: HashMap<(usize, u8, u64), usize> = HashMap::new();
+    let mut ends: HashMap<(usize, crate::removal::BoundId), usize> = HashMap::new();
     for (j, f) in feats.iter().enumerate() {
         if f.volume_mm3 < limit && f.step.is_none() {
             continue;

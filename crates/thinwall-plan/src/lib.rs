@@ -202,10 +202,9 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let walls = wall_plans(out);
     let layers = steps::layers(out, &scene, &seq, &walls);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
-    let (removal, machining_features, frame) = whole::removal_plan(part, out, &layers);
-    let mut machining_features = machining_features;
-    let feature_sequence = feature_order::order(&machining_features, &layer_sequence);
     let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
+    let (removal, mut machining_features, frame) = whole::removal_plan(&analysis, out, &layers);
+    let feature_sequence = feature_order::order(&machining_features, &layer_sequence);
     classified::classify_features(
         &analysis,
         &frame,

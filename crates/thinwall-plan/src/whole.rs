@@ -8,25 +8,21 @@ use crate::RemovalSummary;
 use geo::{Coord, LineString, MultiPolygon, Orient, Polygon};
 use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, PartAnalysis};
-use thinwall_brep::Part;
 use thinwall_geom::{Frame, Point3, Vector3};
 use thinwall_pipeline::Outcome;
 
-/// Heights and lengths closer than this fraction of the part's size are
-/// the same.
-const REL_TOL: f64 = 1e-9;
-
 /// The removal plan of `part` with its designed `layers` (plan order).
+/// Heights closer than the part's feature tolerance are the same.
 pub fn removal_plan(
-    part: &Part,
+    a: &PartAnalysis,
     out: &Outcome,
     layers: &[Layer],
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
-    let a = PartAnalysis::new(part, out.setup.clone());
+    let part = a.part();
     let up = Vector3::from(out.setup.up).normalize();
-    let (frame, mut lo, mut hi) = frame_of(&a, up);
+    let (frame, mut lo, mut hi) = frame_of(a, up);
     let size = a.bounding_box().diagonal();
-    let tol = REL_TOL * size.max(1.0) * 1e3;
+    let tol = a.tol().feature;
     let m = &out.request.machining;
     let (stock, name) = match &m.stock {
         Some(s) => (StockShape::Solid(s), "solid".to_string()),

@@ -164,12 +164,31 @@ pub fn frame_of(a: &PartAnalysis, up: Vector3) -> (Frame, [f64; 3], [f64; 3]) {
     (frame, [xlo, ylo, zlo], [xhi, yhi, zhi])
 }
 
+/// A bound as an exact key (within one column, where a cut height is the
+/// same number on both sides of it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BoundId {
+    Flat(u64),
+    Part(usize),
+    Stock(usize),
+}
+
 impl Bound {
-    fn height<'a>(&self, part: &'a [Piece], stock: &'a [Piece]) -> Option<&'a pieces::Height> {
+    pub fn id(&self) -> BoundId {
         match *self {
-            Bound::Flat(_) => None,
-            Bound::Part(i) => Some(&part[i].height),
-            Bound::Stock(i) => Some(&stock[i].height),
+            Bound::Flat(z) => BoundId::Flat(z.to_bits()),
+            Bound::Part(i) => BoundId::Part(i),
+            Bound::Stock(i) => BoundId::Stock(i),
+        }
+    }
+
+    /// Its height function (a flat bound is a horizontal plane), given the
+    /// part's and the stock's pieces.
+    fn height(&self, part: &[Piece], stock: &[Piece]) -> pieces::Height {
+        match *self {
+            Bound::Flat(z) => pieces::Height::plane(z, 0.0, 0.0),
+            Bound::Part(i) => part[i].height,
+            Bound::Stock(i) => stock[i].height,
         }
     }
 }
@@ -300,11 +319,8 @@ impl Removal {
             let top = stock_iv.last().map(|iv| iv.1 .0);
             let sliver = mean_width(&c.poly) < SLIVER_WIDTH * size;
             for (lo, hi) in subtract(&stock_iv, &solid) {
-                let vol = |b: &Bound, z: f64| match b.height(&part_pieces, &stock_pieces) {
-                    None => z * c.area,
-                    Some(h) => flux::flux(h, &c.poly),
-                };
-                let volume = vol(&hi.1, hi.0) - vol(&lo.1, lo.0);
+                let vol = |b: &Bound| flux::flux(&b.height(&part_pieces, &stock_pieces), &c.poly);
+                let volume = vol(&hi.1) - vol(&lo.1);
                 if sliver {
                     sliver_volume += volume;
                     continue;
@@ -350,40 +366,12 @@ impl Removal {
 
     /// The lowest and highest height of a bound over a region, mm.
     pub fn height_range(&self, b: &Bound, region: &MultiPolygon<f64>) -> [f64; 2] {
-        let h = self.height_of(b);
-        let mut z = [f64::INFINITY, f64::NEG_INFINITY];
-        for p in &region.0 {
-            for c in p.exterior().0.iter() {
-                let v = h.at(c.x, c.y);
-                z = [z[0].min(v), z[1].max(v)];
-            }
-        }
-        if let pieces::Height::Cylinder { sign, .. } = h {
-            // A half cylinder's crest may lie inside the region.
-            let crest = self.bound_range(b)[usize::from(sign > 0.0)];
-            if region.0.iter().any(|p| {
-                let (lo, hi) = p.exterior().0.iter().fold(
-                    (f64::INFINITY, f64::NEG_INFINITY),
-                    |(lo, hi), c| {
-                        let u = h.across(c.x, c.y);
-                        (lo.min(u), hi.max(u))
-                    },
-                );
-                lo <= 0.0 && hi >= 0.0
-            }) {
-                z = [z[0].min(crest), z[1].max(crest)];
-            }
-        }
-        z
+        self.height_of(b).range_over(region)
     }
 
     /// A bound's height function (a flat bound is a horizontal plane).
     pub fn height_of(&self, b: &Bound) -> pieces::Height {
-        match *b {
-            Bound::Flat(z) => pieces::Height::plane(z, 0.0, 0.0),
-            Bound::Part(i) => self.part_pieces[i].height,
-            Bound::Stock(i) => self.stock_pieces[i].height,
-        }
+        b.height(&self.part_pieces, &self.stock_pieces)
     }
 
     /// Indices of the vertical faces whose box (grown by the grid's
@@ -425,18 +413,6 @@ impl Removal {
             Bound::Part(i) => self.part_pieces[i].z_range,
             Bound::Stock(i) => self.stock_pieces[i].z_range,
         }
-    }
-
-    /// Volume of the block's cell between `lo` and `hi`, each a bound or a
-    /// flat cut, mm³.
-    pub fn volume_between(&self, cell: usize, lo: &Bound, hi: &Bound) -> f64 {
-        let c = &self.cells[cell];
-        let v = |b: &Bound| match *b {
-            Bound::Flat(z) => z * c.area,
-            Bound::Part(i) => flux::flux(&self.part_pieces[i].height, &c.poly),
-            Bound::Stock(i) => flux::flux(&self.stock_pieces[i].height, &c.poly),
-        };
-        v(hi) - v(lo)
     }
 }
 

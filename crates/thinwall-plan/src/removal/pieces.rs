@@ -154,29 +154,7 @@ fn finish(
     let Some(bbox) = region.bounding_rect() else {
         return vec![];
     };
-    let mut z_range = [f64::INFINITY, f64::NEG_INFINITY];
-    for p in region.0.iter() {
-        for c in p.exterior().0.iter() {
-            let z = height.at(c.x, c.y);
-            z_range = [z_range[0].min(z), z_range[1].max(z)];
-        }
-    }
-    if let Height::Cylinder { o, sign, r, .. } = height {
-        // The crest of a half cylinder lies inside its projection when the
-        // region spans the axis.
-        let (lo, hi) = region
-            .0
-            .iter()
-            .flat_map(|p| p.exterior().0.iter())
-            .map(|c| height.u(c.x, c.y))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), u| {
-                (lo.min(u), hi.max(u))
-            });
-        if lo <= 0.0 && hi >= 0.0 {
-            let crest = o[2] + sign * r;
-            z_range = [z_range[0].min(crest), z_range[1].max(crest)];
-        }
-    }
+    let z_range = height.range_over(&region);
     vec![Piece {
         face: f,
         step_id,
@@ -211,10 +189,6 @@ impl Height {
 
     /// Distance across a cylinder's axis (0 for the others).
     pub fn across(&self, x: f64, y: f64) -> f64 {
-        self.u(x, y)
-    }
-
-    fn u(&self, x: f64, y: f64) -> f64 {
         match *self {
             Height::Cylinder { o, a, .. } => (x - o[0]) * (-a[1]) + (y - o[1]) * a[0],
             _ => 0.0,
@@ -226,7 +200,7 @@ impl Height {
         match *self {
             Height::Plane { z0, gx, gy, .. } => z0 + gx * x + gy * y,
             Height::Cylinder { o, r, sign, .. } => {
-                let u = self.u(x, y).clamp(-r, r);
+                let u = self.across(x, y).clamp(-r, r);
                 o[2] + sign * (r * r - u * u).max(0.0).sqrt()
             }
             Height::Cone { c, z0, k, .. } => z0 + k * (x - c[0]).hypot(y - c[1]),
@@ -239,13 +213,27 @@ impl Height {
         self.at(o[0] + a[0] * s - a[1] * u, o[1] + a[1] * s + a[0] * u)
     }
 
-    /// Whether the height is one constant (a horizontal plane).
-    pub fn flat(&self) -> Option<f64> {
-        match *self {
-            Height::Plane { z0, gx, gy, .. } if gx == 0.0 && gy == 0.0 => Some(z0),
-            Height::Plane { z0, gx, gy, .. } if gx.abs() < 1e-15 && gy.abs() < 1e-15 => Some(z0),
-            _ => None,
+    /// The lowest and highest height over a region: at its corners, and
+    /// at a half cylinder's crest where the region spans the axis.
+    pub fn range_over(&self, region: &MultiPolygon<f64>) -> [f64; 2] {
+        let corners = || region.0.iter().flat_map(|p| p.exterior().0.iter());
+        let mut z = [f64::INFINITY, f64::NEG_INFINITY];
+        for c in corners() {
+            let v = self.at(c.x, c.y);
+            z = [z[0].min(v), z[1].max(v)];
         }
+        if let Height::Cylinder { o, sign, r, .. } = *self {
+            let (lo, hi) = corners()
+                .map(|c| self.across(c.x, c.y))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), u| {
+                    (lo.min(u), hi.max(u))
+                });
+            if lo <= 0.0 && hi >= 0.0 {
+                let crest = o[2] + sign * r;
+                z = [z[0].min(crest), z[1].max(crest)];
+            }
+        }
+        z
     }
 }
 

@@ -9,6 +9,7 @@
 //! their two ends. The same edge gives the same points on both faces it
 //! bounds, so coincident projections coincide.
 
+use thinwall_analysis::polygon::coedge_params;
 use thinwall_brep::{FaceId, Part};
 use thinwall_geom::Point3;
 
@@ -29,18 +30,7 @@ pub fn face_loop_points(part: &Part, face: FaceId) -> Vec<Vec<Point3>> {
                     pts.push(part.vertex(if ce.forward { e.start } else { e.end }).point);
                     continue;
                 };
-                let straight = c.degree == 1 && c.is_polynomial();
-                let mut ts = Vec::new();
-                for (a, b) in c.spans() {
-                    let n = if straight { 1 } else { CHORDS_PER_SPAN };
-                    for k in 0..n {
-                        ts.push(a + (b - a) * k as f64 / n as f64);
-                    }
-                }
-                ts.push(c.domain().1);
-                if !ce.forward {
-                    ts.reverse();
-                }
+                let (ts, straight) = coedge_params(c, ce.forward, CHORDS_PER_SPAN);
                 for w in ts.windows(2) {
                     let (p, q) = (c.point(w[0]), c.point(w[1]));
                     pts.push(p);
