@@ -309,6 +309,28 @@ pub fn intersect(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f
     a.intersection(b)
 }
 
+/// Whether `a` and `b` share more than rounding: an overlap of area over
+/// `min_area` whose mean width (area over its box's diagonal) exceeds
+/// `lin`. Regions meeting along an edge overlap by a hairline that depends
+/// on how the part sits in the world; this says no to it in every pose.
+pub fn overlap_beyond(
+    a: &MultiPolygon<f64>,
+    b: &MultiPolygon<f64>,
+    lin: f64,
+    min_area: f64,
+) -> bool {
+    beyond_rounding(&intersect(a, b), lin, min_area)
+}
+
+/// Whether a region (an overlap) is more than rounding: area over
+/// `min_area` and mean width (area over its box's diagonal) over `lin`.
+pub fn beyond_rounding(common: &MultiPolygon<f64>, lin: f64, min_area: f64) -> bool {
+    let diagonal =
+        geo::BoundingRect::bounding_rect(common).map_or(0.0, |r| r.width().hypot(r.height()));
+    let area = common.unsigned_area();
+    area > min_area && area > lin * diagonal
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -318,6 +340,16 @@ mod tests {
             LineString::from(vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]),
             vec![],
         )])
+    }
+
+    #[test]
+    fn regions_meeting_along_an_edge_do_not_overlap() {
+        let a = rect(0.0, 0.0, 100.0, 10.0);
+        // Rounding leaves a hairline of 1e-7 across a 100 long edge.
+        let b = rect(0.0, 10.0 - 1e-7, 100.0, 20.0);
+        assert!(!overlap_beyond(&a, &b, 1e-6, 1e-8));
+        let c = rect(50.0, 5.0, 150.0, 20.0);
+        assert!(overlap_beyond(&a, &c, 1e-6, 1e-8));
     }
 
     #[test]

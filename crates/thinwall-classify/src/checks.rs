@@ -5,9 +5,9 @@
 
 use crate::coincide::{FaceGeom, Tol};
 use crate::{ClassifyError, FaceRole, Volume};
-use geo::{Area, MultiPolygon};
+use geo::MultiPolygon;
 use petgraph::graph::DiGraph;
-use thinwall_analysis::polygon::intersect;
+use thinwall_analysis::polygon::overlap_beyond;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Frame, Vector3};
 
@@ -175,14 +175,8 @@ pub fn overlaps(vol_faces: &[Vec<FaceGeom>], up: &Vector3, tol: &Tol) -> Result<
                     })
                     .collect(),
             );
-            // Material shared over more than the tolerance: an overlap
-            // whose mean width (area over its box's diagonal) is under the
-            // coincidence tolerance is two faces meeting up to rounding.
-            let common = intersect(&a.profile, &b_in_a);
-            let diagonal = geo::BoundingRect::bounding_rect(&common)
-                .map_or(0.0, |r| r.width().hypot(r.height()));
-            let area = common.unsigned_area();
-            if area > tol.min_area && area > tol.lin * diagonal {
+            // Material shared over more than the tolerance.
+            if overlap_beyond(&a.profile, &b_in_a, tol.lin, tol.min_area) {
                 return Err(ClassifyError::Overlap {
                     first: i,
                     second: j,

@@ -3,11 +3,10 @@
 //! and axial overlap).
 
 use crate::FaceRole;
-use geo::Area;
-use thinwall_analysis::polygon::intersect;
+use thinwall_analysis::polygon::{beyond_rounding, intersect};
 use thinwall_analysis::{Cylinder, PartAnalysis, PlanarFace};
 use thinwall_brep::FaceId;
-use thinwall_geom::tolerance::FEATURE_PARALLEL_DEG;
+use thinwall_geom::tolerance::{FEATURE_PARALLEL_DEG, MAX_SIDE_DRAFT_DEG};
 use thinwall_geom::{BoundingBox, Vector3};
 
 /// Geometry of one face, prepared once.
@@ -63,7 +62,7 @@ impl<'a> FaceGeom<'a> {
             if c < -tol.cos {
                 return FaceRole::Bottom;
             }
-            if c.abs() < (1.0 - tol.cos * tol.cos).sqrt() {
+            if c.abs() < tol.side_lean {
                 return FaceRole::Side;
             }
             return FaceRole::Other;
@@ -95,6 +94,8 @@ pub struct Tol {
     pub lin: f64,
     pub cos: f64,
     pub min_area: f64,
+    /// Sine of the largest lean of a side (drafted sides are sides).
+    pub side_lean: f64,
 }
 
 impl Tol {
@@ -103,6 +104,7 @@ impl Tol {
             lin: a.tol().coincidence,
             cos: FEATURE_PARALLEL_DEG.to_radians().cos(),
             min_area: a.tol().min_coincidence_area,
+            side_lean: MAX_SIDE_DRAFT_DEG.to_radians().sin(),
         }
     }
 }
@@ -118,7 +120,10 @@ pub fn coincide(a: &FaceGeom, b: &FaceGeom, tol: &Tol) -> bool {
     }
     match (a.planar, b.planar, a.cylinder, b.cylinder) {
         (Some(pa), Some(pb), _, _) => {
-            if pa.normal().dot(&pb.normal()) > -tol.cos {
+            // Facing each other within a side's lean; whether they touch is
+            // then a matter of distance over the shared region, so that no
+            // angle tips between poses.
+            if pa.normal().dot(&pb.normal()) > -(1.0 - tol.side_lean.powi(2)).sqrt() {
                 return false;
             }
             if (pb.frame.origin - pa.frame.origin).dot(&pa.normal()).abs() > tol.lin {
@@ -126,7 +131,19 @@ pub fn coincide(a: &FaceGeom, b: &FaceGeom, tol: &Tol) -> bool {
             }
             let own = pa.polygon_in(&pa.frame);
             let other = pb.polygon_in(&pa.frame);
-            intersect(&own, &other).unsigned_area() > tol.min_area
+            let common = intersect(&own, &other);
+            // Nearly parallel planes meet only where they are within the
+            // tolerance over all the shared region, not along a line where
+            // they cross (a side beside a drafted wall).
+            beyond_rounding(&common, tol.lin, tol.min_area)
+                && common
+                    .0
+                    .iter()
+                    .flat_map(|p| p.exterior().0.iter())
+                    .all(|c| {
+                        let w = pa.frame.to_world(&Vector3::new(c.x, c.y, 0.0));
+                        (w - pb.frame.origin).dot(&pb.normal()).abs() <= tol.lin
+                    })
         }
         (_, _, Some(ca), Some(cb)) => {
             if ca.convex == cb.convex

@@ -56,8 +56,15 @@ impl Tolerances {
 }
 
 /// Angle within which two feature directions count as parallel, degrees
-/// (wall side faces, volume faces, set-up directions).
-pub const FEATURE_PARALLEL_DEG: f64 = 0.5;
+/// (wall side faces, volume faces, set-up directions). Not 0.5°: that is a
+/// common draft, and a draft on the boundary tips one way or the other
+/// with the rounding of a turned part.
+pub const FEATURE_PARALLEL_DEG: f64 = 0.3;
+/// Largest lean of a volume's side from the tool direction, degrees: a
+/// side beside a drafted wall is a side. Above the recognizer's largest
+/// wall draft (5° by default) with a margin, so that no common draft sits
+/// on the boundary and tips with the rounding of a turned part.
+pub const MAX_SIDE_DRAFT_DEG: f64 = 6.0;
 /// `1 − cos` under which two unit normals of feature faces are the same
 /// direction (machining features: block planes, floors).
 pub const UNIT_PARALLEL_EPS: f64 = 1e-9;

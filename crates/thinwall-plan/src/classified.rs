@@ -70,10 +70,10 @@ pub fn classify_features(
     let mut boxes: Vec<[f64; 6]> = Vec::new();
     for (fi, f) in features.iter().enumerate() {
         for (si, s) in f.solids.iter().enumerate() {
+            let name = format!("{}#{}", f.id, si + 1);
             let Some(solid) = crate::volumes::feature_solid(frame, s) else {
                 continue;
             };
-            let name = format!("{}#{}", f.id, si + 1);
             let text = crate::volumes::solids_step(&[solid], &name);
             let Ok((part, _)) = thinwall_step::read_bytes(text.as_bytes(), &name) else {
                 continue;
@@ -139,10 +139,16 @@ pub fn classify_features(
             .filter(|(k, _)| owner[*k].0 == fi)
             .map(|(k, c)| (owner[k].1, c))
             .collect();
+        // The largest solid; between solids of equal volume (up to the
+        // sampling of curved edges) the type first by name, so every pose
+        // agrees.
         let Some(&(largest, c)) = mine.iter().max_by(|x, y| {
-            f.solids[x.0]
-                .volume_mm3
-                .total_cmp(&f.solids[y.0].volume_mm3)
+            let (vx, vy) = (f.solids[x.0].volume_mm3, f.solids[y.0].volume_mm3);
+            if (vx - vy).abs() <= crate::tol::EQUAL_VOLUME * vx.abs().max(vy.abs()) {
+                y.1.kind.name().cmp(x.1.kind.name())
+            } else {
+                vx.total_cmp(&vy)
+            }
         }) else {
             f.classification = Some(unknown(
                 "its solids are bounded by a cylinder or a cone: not classified yet",

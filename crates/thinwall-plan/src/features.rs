@@ -20,14 +20,7 @@ use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::FeatureId;
 use thinwall_pipeline::Outcome;
 
-/// A piece under this fraction of the stock's volume is a sliver of the
-/// 2-D booleans (edges that coincide up to rounding), not material.
-pub const SLIVER: f64 = 1e-9;
-
-/// A bulk or other-set-up feature under this fraction of the stock's
-/// volume (a skim of a hundredth of a millimetre left by a drafted wall's
-/// top) joins the feature above or below it in its column.
-pub const MERGE: f64 = 1e-6;
+pub use crate::tol::{MERGE, SLIVER};
 
 /// What a machining feature is in the plan.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
@@ -404,7 +397,7 @@ fn access_of(r: &Removal, pieces: &[Piece]) -> Option<[f64; 3]> {
 /// A feature's pieces merged into solids: pieces between the same two
 /// bounds are one region (their cells' union), one solid per polygon.
 fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
-    use geo::{BooleanOps, MultiPolygon, Orient};
+    use geo::Orient;
     // Grouped by their bounds as keys: cut heights equal up to rounding
     // (a pose) are one height.
     let mut groups: Vec<([Key; 2], [Bound; 2], Vec<usize>)> = Vec::new();
@@ -417,18 +410,16 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
     }
     let mut out = Vec::new();
     for (_, [lo, hi], members) in groups {
-        let mut region = MultiPolygon::new(vec![]);
-        for &i in &members {
-            let cell = &pieces[i].region;
-            region = if region.0.is_empty() {
-                cell.clone()
-            } else {
-                region.union(cell)
-            };
-        }
+        // Cells meet along edges computed twice by separate booleans: they
+        // are joined by their shared edges, the same way in every pose.
+        let cells: Vec<geo::Polygon<f64>> = members
+            .iter()
+            .flat_map(|&i| pieces[i].region.0.iter().cloned())
+            .collect();
+        let region = crate::removal::outline::union(&cells, crate::tol::SLIVER_WIDTH * r.size);
         let (lower, upper) = (r.height_of(&lo), r.height_of(&hi));
         let sliver = SLIVER * r.stock_volume.cbrt().powi(2);
-        for poly in region.0 {
+        for poly in region {
             // Unions of cells cut by separate booleans leave slivers and
             // hairline holes where shared edges differ by rounding.
             if crate::removal::flux::area(&poly) <= sliver {

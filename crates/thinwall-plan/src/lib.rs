@@ -14,6 +14,7 @@ pub mod scene;
 pub mod sequence;
 pub mod sizing;
 pub mod steps;
+pub mod tol;
 mod touch;
 pub mod volumes;
 mod whole;

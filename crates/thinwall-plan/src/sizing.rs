@@ -246,6 +246,8 @@ impl SizingError {
 
 /// A support width that stands for "rigid", mm.
 const UNBOUNDED_SUPPORT_MM: f64 = 1e6;
+
+use crate::tol::SAME_LENGTH_MM;
 /// The most steps the width may grow before the model gives up.
 const MAX_WIDTH_STEPS: u32 = 50;
 
@@ -290,7 +292,7 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
     }
     p.validate()?;
     let cut = p.cut_height_mm;
-    let round_height = |v: f64| ((v / cut + 1e-9).floor() * cut).max(cut);
+    let round_height = |v: f64| (((v + SAME_LENGTH_MM) / cut).floor() * cut).max(cut);
     let width = |steps: u32| p.finishing_width_mm + f64::from(steps) * p.width_step();
     let mut trace = Vec::new();
     let mut log = |b: f64, h: f64, big_h: f64, action: &str| {
@@ -335,7 +337,7 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
     let mut big_h = reset_big(h);
     let mut d = log(width(steps), h, big_h, "initial: rules of thumb");
     while d > p.allowed_deflection_mm {
-        if h > cut + 1e-9 {
+        if h > cut + SAME_LENGTH_MM {
             h = round_height(h - cut);
             big_h = reset_big(h);
             d = log(
@@ -362,12 +364,12 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
         }
     }
     // Grow H by h within the limit, the wall and the tall-wall ratio.
-    let cap = if w.height > 4.0 * h {
+    let cap = if w.height > 4.0 * h + SAME_LENGTH_MM {
         p.tall_wall_max_ratio * h
     } else {
         f64::INFINITY
     };
-    while big_h + h <= w.height + 1e-9 && big_h + h <= cap + 1e-9 {
+    while big_h + h <= w.height + SAME_LENGTH_MM && big_h + h <= cap + SAME_LENGTH_MM {
         let next = log(width(steps), h, big_h + h, "within the limit: H one h more");
         if next > p.allowed_deflection_mm {
             trace.last_mut().expect("just logged").action =
@@ -376,7 +378,7 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
         }
         big_h += h;
     }
-    if big_h + h <= w.height + 1e-9 && big_h + h > cap + 1e-9 {
+    if big_h + h <= w.height + SAME_LENGTH_MM && big_h + h > cap + SAME_LENGTH_MM {
         let d = deflection(w, p, width(steps), h, big_h + h);
         trace.push(Step {
             b: width(steps),

@@ -18,6 +18,7 @@
 
 use crate::scene::Scene;
 use crate::sequence::Sequence;
+use crate::tol::SAME_LENGTH_MM;
 use crate::WallPlan;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -196,14 +197,21 @@ fn wall_layers(
     // From the top: a large layer, then the small ones down to its depth.
     let mut large_bottom = wall_h;
     let mut small_bottom = wall_h;
-    while large_bottom > 1e-9 {
+    while large_bottom > SAME_LENGTH_MM {
         let to = large_bottom;
-        let from = (large_bottom - big_h).max(0.0);
+        // A remainder within rounding of the foot is the foot.
+        let from = match large_bottom - big_h {
+            v if v > SAME_LENGTH_MM => v,
+            _ => 0.0,
+        };
         out.push(make(large, SizeClass::Large, from, to));
         large_bottom = from;
-        while small_bottom > large_bottom + 1e-9 {
+        while small_bottom > large_bottom + SAME_LENGTH_MM {
             let to = small_bottom;
-            let from = (small_bottom - h).max(large_bottom);
+            let from = match small_bottom - h {
+                v if v > large_bottom + SAME_LENGTH_MM => v,
+                _ => large_bottom,
+            };
             out.push(make(small, SizeClass::Small, from, to));
             small_bottom = from;
         }

@@ -181,41 +181,66 @@ pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) ->
         return None;
     }
     let world = |x: f64, y: f64, z: f64| to_world(frame, x, y, z);
+    let knife = knife_edge(s);
     let mut bottom_wires = Vec::new();
     let mut top_wires = Vec::new();
     let mut sides: Vec<Face> = Vec::new();
+    let mut thick = false;
     for ring in &s.rings {
         let n = ring.len();
         if n < 3 {
             return None;
         }
+        // Where the bounds meet (a wedge beside a drafted wall) the top
+        // and bottom corners are one vertex, and no upright edge joins them.
         let mut vb: Vec<Vertex> = Vec::with_capacity(n);
         let mut vt: Vec<Vertex> = Vec::with_capacity(n);
+        let mut meet = Vec::with_capacity(n);
         for p in ring {
             let (zl, zu) = (s.lower.at(p[0], p[1]), s.upper.at(p[0], p[1]));
-            if zu - zl <= 1e-9 * zu.abs().max(1.0) {
+            if zu - zl < -knife {
                 return None;
             }
-            vb.push(builder::vertex(world(p[0], p[1], zl)));
-            vt.push(builder::vertex(world(p[0], p[1], zu)));
+            let b = builder::vertex(world(
+                p[0],
+                p[1],
+                if zu - zl <= knife {
+                    0.5 * (zl + zu)
+                } else {
+                    zl
+                },
+            ));
+            meet.push(zu - zl <= knife);
+            thick |= zu - zl > knife;
+            vt.push(if zu - zl <= knife {
+                b.clone()
+            } else {
+                builder::vertex(world(p[0], p[1], zu))
+            });
+            vb.push(b);
         }
         let eb: Vec<Edge> = (0..n)
             .map(|i| builder::line(&vb[i], &vb[(i + 1) % n]))
             .collect();
         let et: Vec<Edge> = (0..n)
-            .map(|i| builder::line(&vt[i], &vt[(i + 1) % n]))
+            .map(|i| match meet[i] && meet[(i + 1) % n] {
+                true => eb[i].clone(),
+                false => builder::line(&vt[i], &vt[(i + 1) % n]),
+            })
             .collect();
-        let ev: Vec<Edge> = (0..n).map(|i| builder::line(&vb[i], &vt[i])).collect();
+        let ev: Vec<Option<Edge>> = (0..n)
+            .map(|i| (!meet[i]).then(|| builder::line(&vb[i], &vt[i])))
+            .collect();
         for i in 0..n {
             let j = (i + 1) % n;
-            let w: Wire = vec![
-                eb[i].clone(),
-                ev[j].clone(),
-                et[i].inverse(),
-                ev[i].inverse(),
-            ]
-            .into();
-            sides.push(builder::try_attach_plane(&[w]).ok()?);
+            if meet[i] && meet[j] {
+                continue;
+            }
+            let mut w: Vec<Edge> = vec![eb[i].clone()];
+            w.extend(ev[j].clone());
+            w.push(et[i].inverse());
+            w.extend(ev[i].as_ref().map(|e| e.inverse()));
+            sides.push(builder::try_attach_plane(&[w.into_iter().collect::<Wire>()]).ok()?);
         }
         // The bottom runs against the ring (its normal points down), the
         // top along it.
@@ -224,12 +249,29 @@ pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) ->
         bottom_wires.push(bottom);
         top_wires.push(top);
     }
+    if !thick {
+        return None;
+    }
     let mut faces = vec![
         builder::try_attach_plane(&bottom_wires).ok()?,
         builder::try_attach_plane(&top_wires).ok()?,
     ];
     faces.extend(sides);
     Solid::try_new(vec![Shell::from(faces)]).ok()
+}
+
+/// How close a solid's bounds may come at a corner and still meet there:
+/// a millionth of its extent (a steep drafted face turns the rounding of
+/// where the bounds cross into a height).
+fn knife_edge(s: &crate::features::FeatureSolid) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in s.rings.iter().flatten() {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    crate::tol::SLIVER_WIDTH * (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 
 /// A feature's solids as one STEP text, and how many could not be written.

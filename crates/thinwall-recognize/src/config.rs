@@ -59,7 +59,7 @@ pub struct Thresholds {
 impl Default for Thresholds {
     fn default() -> Self {
         Self {
-            parallel_angle_deg: 0.5,
+            parallel_angle_deg: 0.3,
             max_draft_deg: 5.0,
             min_width_to_thickness: 1.0,
             min_extent_to_thickness: 3.0,

@@ -17,6 +17,7 @@
 
 pub mod cells;
 pub mod flux;
+pub mod outline;
 pub mod pieces;
 pub mod sample;
 pub mod slab;
@@ -99,13 +100,11 @@ pub struct Removal {
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
     /// booleans where edges coincide up to rounding), left out, mm³.
     pub sliver_volume: f64,
+    /// The part's size (its bounding diagonal), mm: tolerances scale with it.
+    pub size: f64,
 }
 
-/// A cell whose mean width (2·area / perimeter) is under this fraction of
-/// the part's size is a sliver of the 2-D booleans: the booleans round to
-/// a grid of about 1e-9 of their inputs' extent, so their decisions there
-/// are noise.
-pub const SLIVER_WIDTH: f64 = 1e-6;
+pub use crate::tol::SLIVER_WIDTH;
 
 fn mean_width(p: &geo::Polygon<f64>) -> f64 {
     use geo::{Euclidean, Length};
@@ -349,6 +348,7 @@ impl Removal {
             StockShape::Solid(_) => None,
         };
         Ok(Self {
+            size,
             vertical_grid,
             sliver_volume,
             vertical,
