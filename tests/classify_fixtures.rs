@@ -40,6 +40,7 @@ fn run(
             name: v.file.clone(),
             part: thinwall_step::read_file(dir.join(&v.file)).unwrap().0,
             current: None,
+            up: None,
         })
         .collect();
     let before: Vec<(usize, usize)> =
@@ -195,6 +196,7 @@ fn current_type_is_kept_while_it_still_fits() {
         name: "v0".into(),
         part: v,
         current: Some(VolumeType::Step),
+        up: None,
     }];
     let a = PartAnalysis::new(&part, Setup::default());
     let r = classify(&Request {
@@ -237,6 +239,7 @@ fn request_error(
             .unwrap()
             .0,
             current: None,
+            up: None,
         })
         .collect();
     let a = PartAnalysis::new(&p, Setup::default());

@@ -52,6 +52,7 @@ pub unsafe extern "C" fn tw_classify(
                     name: (&*v).name.clone(),
                     part: (&*v).part.clone(),
                     current: None,
+                    up: None,
                 })
             })
             .collect::<Result<_, _>>()?;

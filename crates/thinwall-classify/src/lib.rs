@@ -10,7 +10,7 @@
 //! use thinwall_analysis::{PartAnalysis, Setup};
 //! use thinwall_classify::{classify, Request, Volume};
 //! let a = PartAnalysis::new(&part, Setup::default());
-//! let volumes = vec![Volume { name: "v0".into(), part: v0, current: None }];
+//! let volumes = vec![Volume { name: "v0".into(), part: v0, current: None, up: None }];
 //! let r = classify(&Request { part: &a, volumes: &volumes, before: &[], priority: vec![] }).unwrap();
 //! println!("{}", r[0].kind);
 //! ```
@@ -38,6 +38,9 @@ pub struct Volume {
     /// Its current type, tried first (re-classification keeps a type that
     /// still fits).
     pub current: Option<VolumeType>,
+    /// The direction its tool comes from, when not the set-up's up (a
+    /// volume reached from another set-up: a hole through an upright rib).
+    pub up: Option<Vector3>,
 }
 
 /// What to classify: volumes against the analysed part, in the part's
@@ -126,6 +129,10 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
     let mut out = Vec::new();
     for (vi, vol) in req.volumes.iter().enumerate() {
         let predecessors = &preds[vi];
+        let up = vol
+            .up
+            .and_then(|u| u.try_normalize(thinwall_geom::tolerance::DIRECTION_NORM_MIN))
+            .unwrap_or(up);
         let faces: Vec<Judged> = vol_faces[vi]
             .iter()
             .map(|g| {

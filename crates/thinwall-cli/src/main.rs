@@ -288,6 +288,7 @@ fn classify_command(
             name: v.display().to_string(),
             part: p,
             current: None,
+            up: None,
         });
     }
     let setup = thinwall_analysis::Setup::new(

@@ -82,6 +82,9 @@ pub fn classify_features(
                 name,
                 part,
                 current: None,
+                up: f
+                    .access
+                    .map(|a| thinwall_geom::Vector3::new(a[0], a[1], a[2])),
             });
             owner.push((fi, si));
             boxes.push(solid_box(s));

@@ -95,16 +95,54 @@ pub fn order(features: &[RemovalFeature], layer_rel: &[LayerConstraint]) -> Feat
             format!("{} lies above {}", features[a].id, features[b].id),
         );
     }
-    // 2 and 3: the layers' relations, by the layer ids that remain.
-    for r in layer_rel {
-        let (Some(&a), Some(&b)) = (index.get(r.before.as_str()), index.get(r.after.as_str()))
-        else {
-            continue;
-        };
-        add(&mut g, a, b, r.why.clone());
+    // 2 and 3: the layers' relations, by the layer ids that remain; a
+    // vanished layer passes its relations on.
+    for (a, b, why) in through_vanished(layer_rel, &index) {
+        add(&mut g, a, b, why);
     }
     seq.order = topo(features, &g, &nodes);
     seq
+}
+
+/// The layer relations between features that remain: a relation to a
+/// vanished layer continues to what that layer comes before (a wall whose
+/// small layers all vanished keeps its large ones in step order).
+fn through_vanished(
+    layer_rel: &[LayerConstraint],
+    index: &HashMap<&str, usize>,
+) -> Vec<(usize, usize, String)> {
+    let mut next: HashMap<&str, Vec<&LayerConstraint>> = HashMap::new();
+    for r in layer_rel {
+        next.entry(r.before.as_str()).or_default().push(r);
+    }
+    let mut out = Vec::new();
+    for r in layer_rel {
+        let Some(&a) = index.get(r.before.as_str()) else {
+            continue;
+        };
+        // Walk on from r.after through vanished layers only.
+        let mut stack = vec![(r.after.as_str(), Vec::<&str>::new())];
+        let mut seen = BTreeSet::new();
+        while let Some((id, via)) = stack.pop() {
+            if !seen.insert(id) {
+                continue;
+            }
+            if let Some(&b) = index.get(id) {
+                let why = match via.is_empty() {
+                    true => r.why.clone(),
+                    false => format!("{} (through vanished {})", r.why, via.join(", ")),
+                };
+                out.push((a, b, why));
+                continue;
+            }
+            for n in next.get(id).into_iter().flatten() {
+                let mut v = via.clone();
+                v.push(id);
+                stack.push((n.after.as_str(), v));
+            }
+        }
+    }
+    out
 }
 
 /// Kahn's algorithm with the module's tie-break.

@@ -22,7 +22,7 @@ use crate::tol::SAME_LENGTH_MM;
 use crate::WallPlan;
 use serde::Serialize;
 use std::collections::BTreeMap;
-use thinwall_analysis::{FeatureId, StiffnessKind};
+use thinwall_analysis::FeatureId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
@@ -69,10 +69,7 @@ pub struct Layer {
 pub fn layers(out: &Outcome, scene: &Scene, seq: &Sequence, walls: &[WallPlan]) -> Vec<Layer> {
     let up = Vector3::new(out.setup.up[0], out.setup.up[1], out.setup.up[2]).normalize();
     let mut per_wall: BTreeMap<FeatureId, Vec<Layer>> = BTreeMap::new();
-    for w in walls
-        .iter()
-        .filter(|w| w.sizes.thin && w.kind != StiffnessKind::Web)
-    {
+    for w in walls.iter().filter(|w| w.sizes.thin) {
         let Some(f) = out.recognition.feature(w.id) else {
             continue;
         };
@@ -186,7 +183,16 @@ fn wall_layers(
                 zs.iter().copied().fold(f64::INFINITY, f64::min),
                 zs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
             ],
-            cut_heights: [axis_z(from), axis_z(to)],
+            // A wall standing along up is cut at heights on its axis; a
+            // web's layer (a slab over it) between its lowest and highest.
+            cut_heights: if hd.dot(up).abs() > 1.0 - NEAR_PARALLEL_EPS {
+                [axis_z(from), axis_z(to)]
+            } else {
+                [
+                    zs.iter().copied().fold(f64::INFINITY, f64::min),
+                    zs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                ]
+            },
             width: b,
             height: to - from,
             length: l1 - l0,

@@ -98,11 +98,17 @@ fn bands(
             .iter()
             .map(|p| frame.to_local(&Point3::new(p[0], p[1], p[2])))
             .collect();
-        // Corners: height-major (0..4 at the foot side, 4..8 above).
-        let vertical = (0..4).all(|i| {
-            let d = c[i + 4] - c[i];
-            d.x.abs() + d.y.abs() <= 1e-9 * d.norm().max(1.0)
-        });
+        // Corners: height-major (0..4 at the foot side, 4..8 above), then
+        // along the length (pairs), then across (0 the wall's side, 1 out).
+        let upright = |d: Vector3| d.x.abs() + d.y.abs() <= 1e-9 * d.norm().max(1.0);
+        let vertical = (0..4).all(|i| upright(c[i + 4] - c[i]));
+        // A web's layer: a slab over its strip, a band of its own.
+        let flat = (0..8).step_by(2).all(|i| upright(c[i + 1] - c[i]));
+        if flat {
+            out.push(footprint(&c, [0, 2, 6, 4]));
+            which.push(Some(out.len() - 1));
+            continue;
+        }
         if !vertical {
             notes.push(format!(
                 "{} ({} side {}): its wall does not stand along up; its material is in bulk features",
@@ -112,19 +118,25 @@ fn bands(
             continue;
         }
         let k = *by_side.entry((l.owner, l.side)).or_insert_with(|| {
-            let ring: Vec<Coord<f64>> = [0, 1, 3, 2, 0]
-                .iter()
-                .map(|&i| Coord {
-                    x: c[i].x,
-                    y: c[i].y,
-                })
-                .collect();
-            let poly =
-                Polygon::new(LineString::new(ring), vec![]).orient(geo::orient::Direction::Default);
-            out.push(MultiPolygon::new(vec![poly]));
+            out.push(footprint(&c, [0, 1, 3, 2]));
             out.len() - 1
         });
         which.push(Some(k));
     }
     (out, which)
+}
+
+/// Four of a box's corners (in the removal frame) as a polygon on the
+/// set-up plane.
+fn footprint(c: &[Vector3], ring: [usize; 4]) -> MultiPolygon<f64> {
+    let mut pts: Vec<Coord<f64>> = ring
+        .iter()
+        .map(|&i| Coord {
+            x: c[i].x,
+            y: c[i].y,
+        })
+        .collect();
+    pts.push(pts[0]);
+    let poly = Polygon::new(LineString::new(pts), vec![]).orient(geo::orient::Direction::Default);
+    MultiPolygon::new(vec![poly])
 }
