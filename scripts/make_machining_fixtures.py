@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Generate machining fixtures: a plate with a round boss standing above its
 top and a rectangular pocket, the casting envelope it is machined from (the
-plate and boss, pocket not yet cut), and a rectangular blank around it.
+plate and boss, pocket not yet cut), and a rectangular blank around it; the
+Fokker test ribs; ribs with large holes and large cut-outs (Popma §4.1.3).
 
 usage: python3 scripts/make_machining_fixtures.py [OUT_DIR]
        (default fixtures/machining)
@@ -18,6 +19,11 @@ def boss(x, y, z, d, h):
     return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, z), gp_Dir(0, 0, 1)), d / 2, h).Shape()
 
 
+def hole_y(x, z, d):
+    """A cylinder Ø d across y (through a rib along x), centred at x, z."""
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, -1, z), gp_Dir(0, 1, 0)), d / 2, 102).Shape()
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/machining"
     os.makedirs(out, exist_ok=True)
@@ -32,6 +38,18 @@ def main():
     for height in (48, 72):
         rib = fuse(box(0, 0, 0, 160, 60, 10), box(20, 29.5, 10, 140, 30.5, 10 + height))
         write(rib, os.path.join(out, f"rib_{height}_on_plate.step"))
+    # Popma §4.1.3 on a 10 mm plate 200 x 100: a 1.5 x 72 rib with two large
+    # holes Ø24 (centres 50 above its foot: step separation line 38), and a
+    # 1.5 x 48 rib with two cut-outs 30 deep from its top (large: deeper
+    # than its h_RF of 12), leaving pieces of 30, 60 and 50 mm.
+    plate = box(0, 0, 0, 200, 100, 10)
+    holed = box(10, 29.25, 10, 190, 30.75, 82)
+    for x in (60, 140):
+        holed = cut(holed, hole_y(x, 60, 24))
+    cut_rib = box(10, 69.25, 10, 190, 70.75, 58)
+    for x in (40, 120):
+        cut_rib = cut(cut_rib, box(x, 69, 28, x + 20, 71, 60))
+    write(fuse(fuse(plate, holed), cut_rib), os.path.join(out, "ribs_with_holes_and_cutouts.step"))
 
 
 if __name__ == "__main__":

@@ -40,6 +40,8 @@ typedef enum tw_feature_class {
   TW_FEATURE_BULK = 2,
   // Not open to up: another set-up or 5 axes.
   TW_FEATURE_OTHER_SETUP = 3,
+  // A detail's own feature (the material over a chamfer).
+  TW_FEATURE_DETAIL = 4,
 } tw_feature_class;
 
 // The relation of a sequence constraint.

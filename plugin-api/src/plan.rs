@@ -44,6 +44,8 @@ pub enum tw_feature_class {
     TW_FEATURE_BULK = 2,
     /// Not open to up: another set-up or 5 axes.
     TW_FEATURE_OTHER_SETUP = 3,
+    /// A detail's own feature (the material over a chamfer).
+    TW_FEATURE_DETAIL = 4,
 }
 
 fn feature_entries(plan: &Plan) -> Vec<FeatureEntry> {
@@ -68,6 +70,7 @@ fn feature_entries(plan: &Plan) -> Vec<FeatureEntry> {
                 FeatureClass::Small => tw_feature_class::TW_FEATURE_SMALL,
                 FeatureClass::Bulk => tw_feature_class::TW_FEATURE_BULK,
                 FeatureClass::OtherSetup => tw_feature_class::TW_FEATURE_OTHER_SETUP,
+                FeatureClass::Detail => tw_feature_class::TW_FEATURE_DETAIL,
             },
             order: plan
                 .feature_sequence

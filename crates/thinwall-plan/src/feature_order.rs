@@ -104,41 +104,57 @@ pub fn order(features: &[RemovalFeature], layer_rel: &[LayerConstraint]) -> Feat
     seq
 }
 
-/// The layer relations between features that remain: a relation to a
-/// vanished layer continues to what that layer comes before (a wall whose
-/// small layers all vanished keeps its large ones in step order).
+/// The layer relations between features that remain: a relation to or
+/// from a vanished layer continues to what that layer comes before or
+/// after (a wall whose small layers all vanished keeps its large ones in
+/// step order; a cut-out inserted after a vanished layer follows the one
+/// before it).
 fn through_vanished(
     layer_rel: &[LayerConstraint],
     index: &HashMap<&str, usize>,
 ) -> Vec<(usize, usize, String)> {
-    let mut next: HashMap<&str, Vec<&LayerConstraint>> = HashMap::new();
+    let mut next: HashMap<&str, Vec<&str>> = HashMap::new();
+    let mut prev: HashMap<&str, Vec<&str>> = HashMap::new();
     for r in layer_rel {
-        next.entry(r.before.as_str()).or_default().push(r);
+        next.entry(r.before.as_str())
+            .or_default()
+            .push(r.after.as_str());
+        prev.entry(r.after.as_str())
+            .or_default()
+            .push(r.before.as_str());
     }
-    let mut out = Vec::new();
-    for r in layer_rel {
-        let Some(&a) = index.get(r.before.as_str()) else {
-            continue;
-        };
-        // Walk on from r.after through vanished layers only.
-        let mut stack = vec![(r.after.as_str(), Vec::<&str>::new())];
+    // The features that remain reached from `start` along `step`, and the
+    // vanished layers passed on the way.
+    let reach = |start: &str, step: &HashMap<&str, Vec<&str>>| -> Vec<(usize, Vec<String>)> {
+        let mut out = Vec::new();
+        let mut stack = vec![(start.to_string(), Vec::<String>::new())];
         let mut seen = BTreeSet::new();
         while let Some((id, via)) = stack.pop() {
-            if !seen.insert(id) {
+            if !seen.insert(id.clone()) {
                 continue;
             }
-            if let Some(&b) = index.get(id) {
+            if let Some(&i) = index.get(id.as_str()) {
+                out.push((i, via));
+                continue;
+            }
+            for n in step.get(id.as_str()).into_iter().flatten() {
+                let mut v = via.clone();
+                v.push(id.clone());
+                stack.push((n.to_string(), v));
+            }
+        }
+        out
+    };
+    let mut out = Vec::new();
+    for r in layer_rel {
+        for (a, via_a) in reach(&r.before, &prev) {
+            for (b, via_b) in reach(&r.after, &next) {
+                let via: Vec<String> = via_a.iter().chain(&via_b).cloned().collect();
                 let why = match via.is_empty() {
                     true => r.why.clone(),
                     false => format!("{} (through vanished {})", r.why, via.join(", ")),
                 };
                 out.push((a, b, why));
-                continue;
-            }
-            for n in next.get(id).into_iter().flatten() {
-                let mut v = via.clone();
-                v.push(id);
-                stack.push((n.after.as_str(), v));
             }
         }
     }

@@ -35,6 +35,9 @@ pub enum FeatureClass {
     Bulk,
     /// Nothing of it is open to up: another set-up or 5 axes.
     OtherSetup,
+    /// A detail's own feature: the material over a chamfer, up to its top
+    /// (§4.1.3).
+    Detail,
 }
 
 impl FeatureClass {
@@ -44,6 +47,7 @@ impl FeatureClass {
             FeatureClass::Small => "small",
             FeatureClass::Bulk => "bulk",
             FeatureClass::OtherSetup => "other_setup",
+            FeatureClass::Detail => "detail",
         }
     }
 }
@@ -130,7 +134,8 @@ pub fn assign(
     band_area: &[f64],
     tol: f64,
 ) -> (Vec<RemovalFeature>, f64) {
-    let (by_layer, rest, dropped) = distribute(r, layers, layer_band, tol);
+    let details = detail_faces(out, r);
+    let (by_layer, rest, dropped) = distribute(r, layers, layer_band, &details, tol);
     let mut feats: Vec<RemovalFeature> = layers
         .iter()
         .zip(by_layer)
@@ -147,12 +152,18 @@ pub fn assign(
         (z * 1e4).round() as i64
     };
     groups.sort_by(|a, b| b.0 .0.cmp(&a.0 .0).then_with(|| top(&b.1).cmp(&top(&a.1))));
-    for ((reachable, [lo, hi], _), pieces) in groups {
-        let owner = [lo, hi].iter().find_map(|k| match k {
-            Key::Part(step) => owners.get(step).copied(),
-            _ => None,
+    for ((reachable, detail, [lo, hi], _), pieces) in groups {
+        let owner = detail.or_else(|| {
+            [lo, hi].iter().find_map(|k| match k {
+                Key::Part(step) => owners.get(step).copied(),
+                _ => None,
+            })
         });
-        feats.push(rest_feature(r, reachable, owner, pieces));
+        let mut f = rest_feature(r, reachable, owner, pieces);
+        if detail.is_some() && reachable {
+            f.size_class = FeatureClass::Detail;
+        }
+        feats.push(f);
     }
     absorb_crumbs(&mut feats, MERGE * r.stock_volume);
     feats.retain(|f| !f.pieces.is_empty() || f.step.is_some());
@@ -173,6 +184,7 @@ fn distribute(
     r: &Removal,
     layers: &[Layer],
     layer_band: &[Option<usize>],
+    details: &HashMap<u64, (FeatureId, f64)>,
     tol: f64,
 ) -> (Vec<Vec<Piece>>, BTreeMap<BulkKey, Vec<Piece>>, f64) {
     let negligible = SLIVER * r.stock_volume;
@@ -195,12 +207,32 @@ fn distribute(
             .flat_map(|&k| by_band.get(k).into_iter().flatten().copied())
             .collect();
         covering.sort_unstable();
-        for piece in split(r, b, covering.iter().map(|&i| layers[i].cut_heights), tol) {
+        // Over a chamfer: its material, up to its top, is its own.
+        let detail = match b.lower {
+            Bound::Part(i) => details.get(&r.part_step_id(i)).copied(),
+            _ => None,
+        };
+        let cuts = covering
+            .iter()
+            .map(|&i| layers[i].cut_heights)
+            .chain(detail.map(|(_, top)| [top, top]));
+        for piece in split(r, b, cuts, tol) {
             if piece.volume.abs() <= negligible {
                 dropped += piece.volume;
                 continue;
             }
             let mid = 0.5 * (piece.z[0] + piece.z[1]);
+            if let Some((id, _)) = detail.filter(|&(_, top)| mid < top) {
+                rest.entry((
+                    b.reachable,
+                    Some(id),
+                    [key(r, &b.lower), key(r, &b.upper)],
+                    [key(r, &piece.lower), key(r, &piece.upper)],
+                ))
+                .or_default()
+                .push(piece);
+                continue;
+            }
             let owner = covering.iter().copied().find(|&i| {
                 let z = layers[i].cut_heights;
                 b.reachable && mid >= z[0] - tol && mid <= z[1] + tol
@@ -210,6 +242,7 @@ fn distribute(
                 None => rest
                     .entry((
                         b.reachable,
+                        None,
                         [key(r, &b.lower), key(r, &b.upper)],
                         [key(r, &piece.lower), key(r, &piece.upper)],
                     ))
@@ -292,9 +325,35 @@ fn rest_feature(
     }
 }
 
-/// Bulk pieces group by reachability, the block's bounds (what they lie
-/// on and under) and their own ends.
-type BulkKey = (bool, [Key; 2], [Key; 2]);
+/// Bulk pieces group by reachability, the detail they belong to, the
+/// block's bounds (what they lie on and under) and their own ends.
+type BulkKey = (bool, Option<FeatureId>, [Key; 2], [Key; 2]);
+
+/// The chamfers' faces (step id) with their chamfer and its top (the
+/// highest point of its faces along up, in the removal frame), mm.
+fn detail_faces(out: &Outcome, r: &Removal) -> HashMap<u64, (FeatureId, f64)> {
+    let chamfers: Vec<_> = out
+        .recognition
+        .features
+        .iter()
+        .filter(|f| f.kind == thinwall_analysis::StiffnessKind::Chamfer)
+        .collect();
+    let mut m = HashMap::new();
+    for c in chamfers {
+        let top = r
+            .part_pieces
+            .iter()
+            .filter(|p| c.faces.contains(&p.step_id))
+            .map(|p| p.z_range[1])
+            .fold(f64::NEG_INFINITY, f64::max);
+        if top.is_finite() {
+            for &s in &c.faces {
+                m.insert(s, (c.id, top));
+            }
+        }
+    }
+    m
+}
 
 /// A bound as a grouping key: a part face, a stock face, or a height in
 /// nanometres.
@@ -499,7 +558,7 @@ fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
 
 /// Bulk and other-set-up ids numbered again in order after merging.
 fn renumber(feats: &mut [RemovalFeature]) {
-    let (mut nb, mut nx) = (0, 0);
+    let (mut nb, mut nx, mut nd) = (0, 0, 0);
     for f in feats.iter_mut() {
         match f.size_class {
             FeatureClass::Bulk => {
@@ -509,6 +568,10 @@ fn renumber(feats: &mut [RemovalFeature]) {
             FeatureClass::OtherSetup => {
                 nx += 1;
                 f.id = format!("X{nx}");
+            }
+            FeatureClass::Detail => {
+                nd += 1;
+                f.id = format!("D{nd}");
             }
             _ => {}
         }

@@ -5,6 +5,7 @@
 //! rules, the algorithm and every decision taken where the thesis is
 //! silent.
 
+pub mod adapt;
 pub mod classified;
 pub mod feature_order;
 pub mod features;
@@ -65,6 +66,8 @@ pub struct Plan {
     /// others peripheral), with the recognition's force, material and
     /// tool.
     pub walls: Vec<WallPlan>,
+    /// What §4.1.3 changed in the walls' step approach, and why.
+    pub adaptations: Vec<adapt::Adaptation>,
     /// The step approach's layers beside every peripherally milled thin
     /// wall as designed (boxes), in plan order.
     pub layers: Vec<steps::Layer>,
@@ -200,12 +203,24 @@ fn wall_plans(out: &Outcome) -> Vec<WallPlan> {
 pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
-    let walls = wall_plans(out);
-    let layers = steps::layers(out, &scene, &seq, &walls);
+    let mut walls = wall_plans(out);
+    let faces = adapt::Faces::new(part);
+    let (shapes, mut adaptations) = adapt::shapes(&faces, out, &scene, &mut walls);
+    let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
     let (removal, mut machining_features, frame) = whole::removal_plan(&analysis, out, &layers);
-    let feature_sequence = feature_order::order(&machining_features, &layer_sequence);
+    let adapted = adapt::relations(
+        &faces,
+        out,
+        &walls,
+        &shapes,
+        &layers,
+        &machining_features,
+        &mut adaptations,
+    );
+    let relations: Vec<LayerConstraint> = layer_sequence.iter().cloned().chain(adapted).collect();
+    let feature_sequence = feature_order::order(&machining_features, &relations);
     classified::classify_features(
         &analysis,
         &frame,
@@ -235,6 +250,7 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
         rejected: seq.rejected.clone(),
         order: seq.order.clone(),
         walls,
+        adaptations,
         layers,
         layer_sequence,
         removal,
@@ -376,6 +392,16 @@ impl Plan {
                 w.sizes.deflection_mm,
                 w.sizes.note
             );
+        }
+        if !self.adaptations.is_empty() {
+            let _ = writeln!(s, "adaptations (§4.1.3): {}", self.adaptations.len());
+            for a in &self.adaptations {
+                let _ = writeln!(
+                    s,
+                    "  {:<4} by {:<4} {:?}: {}",
+                    a.wall, a.by, a.rule, a.change
+                );
+            }
         }
         let _ = writeln!(s, "step-approach layers as designed: {}", self.layers.len());
         for l in &self.layers {

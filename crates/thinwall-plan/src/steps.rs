@@ -16,6 +16,7 @@
 //! classification are still to come. Webs (face milling) get no layers
 //! yet.
 
+use crate::adapt::{Axis, WallShape};
 use crate::scene::Scene;
 use crate::sequence::Sequence;
 use crate::tol::SAME_LENGTH_MM;
@@ -66,7 +67,13 @@ pub struct Layer {
 /// Layers of every sized thin wall, in an order that respects each wall's
 /// step sequence and the stiffness-feature sequence (a wall that comes
 /// later never starts before one that comes earlier ends).
-pub fn layers(out: &Outcome, scene: &Scene, seq: &Sequence, walls: &[WallPlan]) -> Vec<Layer> {
+pub fn layers(
+    out: &Outcome,
+    scene: &Scene,
+    seq: &Sequence,
+    walls: &[WallPlan],
+    shapes: &BTreeMap<FeatureId, WallShape>,
+) -> Vec<Layer> {
     let up = Vector3::new(out.setup.up[0], out.setup.up[1], out.setup.up[2]).normalize();
     let mut per_wall: BTreeMap<FeatureId, Vec<Layer>> = BTreeMap::new();
     for w in walls.iter().filter(|w| w.sizes.thin) {
@@ -74,8 +81,11 @@ pub fn layers(out: &Outcome, scene: &Scene, seq: &Sequence, walls: &[WallPlan]) 
             continue;
         };
         let Some(g) = &f.geometry else { continue };
+        let Some(shape) = shapes.get(&w.id) else {
+            continue;
+        };
         let side = large_side(out, scene, w.id, g, &up);
-        per_wall.insert(w.id, wall_layers(w, g, side, &up));
+        per_wall.insert(w.id, wall_layers(w, g, shape, side, &up));
     }
     // Walls in the plan's order (level by level), then each wall's steps.
     let mut ordered = Vec::new();
@@ -93,7 +103,7 @@ pub fn layers(out: &Outcome, scene: &Scene, seq: &Sequence, walls: &[WallPlan]) 
 }
 
 /// The side (0 or 1) of the large layers (module docs).
-fn large_side(
+pub(crate) fn large_side(
     out: &Outcome,
     scene: &Scene,
     id: FeatureId,
@@ -128,32 +138,23 @@ fn large_side(
 fn wall_layers(
     w: &WallPlan,
     g: &thinwall_recognize::WallGeometry,
+    shape: &WallShape,
     large: u8,
     up: &Vector3,
 ) -> Vec<Layer> {
-    let (b, h, big_h) = (w.sizes.b, w.sizes.h, w.sizes.big_h);
-    let hd = g.height_direction;
-    let ld = g.frame.z.cross(&hd).normalize();
-    // The region's extent along the height and length directions.
-    let outline = g.outline();
-    let along = |d: &Vector3| {
-        outline
-            .iter()
-            .map(|p| (p - g.frame.origin).dot(d))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
-                (lo.min(x), hi.max(x))
-            })
-    };
-    let ((_, top), (l0, l1)) = (along(&hd), along(&ld));
+    let (h, big_h) = (w.sizes.h, w.sizes.big_h);
     // The recognised height (foot to free edge), down from the free edge:
     // the region may stop short of the foot where a fillet meets the base.
     let wall_h = w.sizes.wall.height;
-    let foot = top - wall_h;
+    let axis = Axis::of(g, wall_h);
+    let (hd, ld, foot) = (axis.height_dir, axis.length_dir, axis.foot);
+    let (l0, l1) = axis.length;
     let mut out = Vec::new();
     let mut step = 0;
     let mut make = |side: u8, class: SizeClass, from: f64, to: f64| {
         step += 1;
         // Side 0 lies on frame.z's side of the wall, side 1 beyond the far face.
+        let b = shape.width[usize::from(side)];
         let (n0, n1) = if side == 0 {
             (0.0, b)
         } else {
@@ -201,26 +202,68 @@ fn wall_layers(
     };
     let small = 1 - large;
     // From the top: a large layer, then the small ones down to its depth.
-    let mut large_bottom = wall_h;
-    let mut small_bottom = wall_h;
-    while large_bottom > SAME_LENGTH_MM {
-        let to = large_bottom;
-        // A remainder within rounding of the foot is the foot.
-        let from = match large_bottom - big_h {
-            v if v > SAME_LENGTH_MM => v,
-            _ => 0.0,
-        };
+    for (from, to) in large_spans(wall_h, big_h, shape.align_at) {
         out.push(make(large, SizeClass::Large, from, to));
-        large_bottom = from;
-        while small_bottom > large_bottom + SAME_LENGTH_MM {
-            let to = small_bottom;
-            let from = match small_bottom - h {
-                v if v > large_bottom + SAME_LENGTH_MM => v,
-                _ => large_bottom,
+        let mut small_bottom = to;
+        while small_bottom > from + SAME_LENGTH_MM {
+            let top = small_bottom;
+            let bottom = match small_bottom - h {
+                v if v > from + SAME_LENGTH_MM => v,
+                _ => from,
             };
-            out.push(make(small, SizeClass::Small, from, to));
-            small_bottom = from;
+            out.push(make(small, SizeClass::Small, bottom, top));
+            small_bottom = bottom;
         }
     }
     out
+}
+
+/// The large layers' spans above the foot, from the top: `big_h` each,
+/// the last one down to the foot; with a step separation line, the part
+/// above it in equal layers no taller than `big_h`, so that one ends there.
+fn large_spans(wall_h: f64, big_h: f64, align_at: Option<f64>) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let mut bottom = wall_h;
+    if let Some(line) = align_at.filter(|&a| a > SAME_LENGTH_MM && a < wall_h - SAME_LENGTH_MM) {
+        let n = ((wall_h - line) / big_h - SAME_LENGTH_MM).ceil().max(1.0);
+        let each = (wall_h - line) / n;
+        for k in 0..n as usize {
+            let to = wall_h - each * k as f64;
+            out.push(((to - each).max(line), to));
+        }
+        bottom = line;
+    }
+    while bottom > SAME_LENGTH_MM {
+        // A remainder within rounding of the foot is the foot.
+        let from = match bottom - big_h {
+            v if v > SAME_LENGTH_MM => v,
+            _ => 0.0,
+        };
+        out.push((from, bottom));
+        bottom = from;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::large_spans;
+
+    #[test]
+    fn large_layers_end_at_the_step_separation_line() {
+        assert_eq!(
+            large_spans(48.0, 24.0, None),
+            vec![(24.0, 48.0), (0.0, 24.0)]
+        );
+        // Line at 30: 18 above it in one layer, then 24 and the rest.
+        assert_eq!(
+            large_spans(48.0, 24.0, Some(30.0)),
+            vec![(30.0, 48.0), (6.0, 30.0), (0.0, 6.0)]
+        );
+        // 36 above a line at 12 with H 24: two layers of 18.
+        assert_eq!(
+            large_spans(48.0, 24.0, Some(12.0)),
+            vec![(30.0, 48.0), (12.0, 30.0), (0.0, 12.0)]
+        );
+    }
 }
