@@ -19,6 +19,17 @@ fn volume(part: &thinwall_brep::Part) -> f64 {
         .sum()
 }
 
+/// A solid's volume by the removal decomposition along `up`.
+fn volume_along(part: &thinwall_brep::Part, up: [f64; 3]) -> f64 {
+    use thinwall_plan::removal::{frame_of, Removal, StockShape};
+    let a = PartAnalysis::new(part, Setup::default());
+    let (f, lo, hi) = frame_of(&a, nalgebra::Vector3::new(up[0], up[1], up[2]));
+    let size = a.bounding_box().diagonal();
+    Removal::new(part, f, &StockShape::Block { lo, hi }, &[], size)
+        .expect("planes and cylinders across up")
+        .part_volume
+}
+
 fn layers_read_back(text: &str, up: [f64; 3]) -> usize {
     let (_, p) = common::plan_text(text, up, &RuleSet::default_rules());
     for l in &p.layers {
@@ -52,12 +63,12 @@ fn layer_solids_are_closed_boxes_of_the_layer_volume_in_any_pose() {
 }
 
 /// Every machining feature of the whole removal plan, written as STEP,
-/// reads back as closed solids; those between planes of the feature's
-/// volume. (Solids swept from a profile with arcs — over foot fillets,
-/// inside holes through ribs — come back with truck's rational B-spline
-/// faces, which our reader keeps without a surface: their volumes are
-/// checked from outside by `scripts/check_volumes_occ.py`. Solids over a
-/// cone are not written yet and are counted.)
+/// reads back as closed solids of the feature's volume: those between
+/// planes by the divergence theorem, those swept from a profile with arcs
+/// (over foot fillets, inside holes through ribs: truck writes the arcs as
+/// rational B-splines, which our reader sees as cylinders) by the
+/// decomposition along up. Solids over a cone are not written yet and are
+/// counted.
 #[test]
 fn removal_features_read_back_as_closed_solids_of_their_volume() {
     let mut parts = common::step_files(&common::shared_data().join("thinwall"));
@@ -91,6 +102,16 @@ fn removal_features_read_back_as_closed_solids_of_their_volume() {
                 f.id
             );
             if planar.len() < f.solids.len() - missing {
+                // Swept with arcs: our reader sees the arcs' rational
+                // B-splines as cylinders; the decomposition along up
+                // measures what it read.
+                let want: f64 = f.solids.iter().map(|s| s.volume_mm3).sum();
+                let got = volume_along(&solid, p.frame[3]);
+                assert!(
+                    (got - want).abs() <= 1e-6 * want + 1e-9 * p.removal.stock_volume_mm3,
+                    "{name} {}: swept volume {got} want {want}",
+                    f.id
+                );
                 curved += f.solids.len() - missing - planar.len();
                 written += f.solids.len() - missing;
                 continue;

@@ -189,7 +189,7 @@ fn side_pattern(
         .copied()
         .filter(|&i| faces[i].geom.planar.is_none())
         .collect();
-    if order.len() == 1 && curved.len() == 1 && faces[order[0]].geom.cylinder.is_some() {
+    if curved.len() == order.len() && one_cylinder(order.iter().map(|&i| &faces[i]), ctx.tol) {
         c.corner_radii.clear();
         return Ok(vec![VolumeType::Hole]);
     }
@@ -233,6 +233,22 @@ fn side_pattern(
     }
     let normal = |k: usize| faces[planar_sides[k]].geom.planar.expect("planar").normal();
     closed_runs(&closed, normal, ctx.tol)
+}
+
+/// Whether the sides are all pieces of one cylinder (a round hole written
+/// as one face, or as halves).
+fn one_cylinder<'a>(mut sides: impl Iterator<Item = &'a Judged<'a>>, tol: &Tol) -> bool {
+    let Some(first) = sides.next().and_then(|j| j.geom.cylinder) else {
+        return false;
+    };
+    sides.all(|j| {
+        j.geom.cylinder.is_some_and(|c| {
+            let d = c.origin - first.origin;
+            (c.radius - first.radius).abs() <= tol.lin
+                && c.axis.dot(&first.axis).abs() >= tol.cos
+                && (d - first.axis * d.dot(&first.axis)).norm() <= tol.lin
+        })
+    })
 }
 
 /// Types from the runs of closed sides around the profile: one run (a

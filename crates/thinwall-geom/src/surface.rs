@@ -214,3 +214,138 @@ mod tests {
         assert!(plane.revolution_uv(&Point3::origin()).is_none());
     }
 }
+
+/// A NURBS surface that is exactly a piece of a circular cylinder (CAD
+/// systems, truck among them, write extruded arcs as rational B-splines):
+/// its frame (`z` the axis, origin on it), radius, and whether the
+/// surface's normal `∂S/∂u × ∂S/∂v` points away from the axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CylinderFit {
+    pub frame: Frame,
+    pub radius: f64,
+    pub outward: bool,
+}
+
+/// The cylinder a NURBS surface is, if every point of a 9 × 9 grid over
+/// its domain lies within `tol` (mm) of it and one parameter runs straight
+/// along its axis.
+pub fn cylinder_of(s: &NurbsSurface, tol: f64) -> Option<CylinderFit> {
+    const N: usize = 9;
+    let ((u0, u1), (v0, v1)) = s.domain();
+    let grid: Vec<Vec<crate::nurbs::SurfacePoint>> = (0..N)
+        .map(|i| {
+            let u = u0 + (u1 - u0) * i as f64 / (N - 1) as f64;
+            (0..N)
+                .map(|j| s.eval(u, v0 + (v1 - v0) * j as f64 / (N - 1) as f64))
+                .collect()
+        })
+        .collect();
+    // The straight parameter: its derivative keeps one direction.
+    let straight = |d: &dyn Fn(&crate::nurbs::SurfacePoint) -> Vector3| -> Option<Vector3> {
+        let a = d(&grid[0][0]).try_normalize(1e-12)?;
+        grid.iter()
+            .flatten()
+            .all(|p| {
+                d(p).try_normalize(1e-12)
+                    .is_some_and(|b| a.cross(&b).norm() < 1e-9)
+            })
+            .then_some(a)
+    };
+    let (axis, rows): (Vector3, Vec<&crate::nurbs::SurfacePoint>) = match straight(&|p| p.dv) {
+        Some(a) => (a, grid.iter().map(|row| &row[0]).collect()),
+        None => (straight(&|p| p.du)?, grid[0].iter().collect()),
+    };
+    // A circle through three points of a section across the axis.
+    let flat = |p: &Point3| p.coords - axis * p.coords.dot(&axis);
+    let (a, b, c) = (
+        flat(&rows[0].point),
+        flat(&rows[N / 2].point),
+        flat(&rows[N - 1].point),
+    );
+    let centre = circumcentre(&a, &b, &c)?;
+    let radius = (a - centre).norm();
+    if radius.is_nan() || radius <= tol {
+        return None;
+    }
+    for p in grid.iter().flatten() {
+        if ((flat(&p.point) - centre).norm() - radius).abs() > tol {
+            return None;
+        }
+    }
+    let p0 = &grid[0][0];
+    let out = flat(&p0.point) - centre;
+    let origin = Point3::from(centre + axis * p0.point.coords.dot(&axis));
+    Some(CylinderFit {
+        frame: Frame {
+            origin,
+            x: out / radius,
+            y: axis.cross(&(out / radius)),
+            z: axis,
+        },
+        radius,
+        outward: p0.du.cross(&p0.dv).dot(&out) > 0.0,
+    })
+}
+
+/// The centre of the circle through three points of a plane.
+fn circumcentre(a: &Vector3, b: &Vector3, c: &Vector3) -> Option<Vector3> {
+    let (ab, ac) = (b - a, c - a);
+    let n = ab.cross(&ac);
+    let n2 = n.norm_squared();
+    if n2 < 1e-18 * ab.norm_squared() * ac.norm_squared() {
+        return None;
+    }
+    let t = (ac.cross(&n) * ab.norm_squared() + n.cross(&ab) * ac.norm_squared()) / (2.0 * n2);
+    Some(a + t)
+}
+
+#[cfg(test)]
+mod cylinder_tests {
+    use super::*;
+
+    /// A quarter of a cylinder of radius `r` about an axis along z through
+    /// (1, −2), 5 long, as a quadratic × linear NURBS (rational: exact;
+    /// with unit weights: a parabola's extrusion); its normal outward or
+    /// not.
+    fn quarter(r: f64, outward: bool, rational: bool) -> NurbsSurface {
+        let w = if rational {
+            std::f64::consts::FRAC_1_SQRT_2
+        } else {
+            1.0
+        };
+        let arc = |z: f64| [[r + 1.0, -2.0, z], [r + 1.0, r - 2.0, z], [1.0, r - 2.0, z]];
+        let (a, b) = (arc(0.0), arc(5.0));
+        let quad = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+        let lin = vec![0.0, 0.0, 1.0, 1.0];
+        if outward {
+            // u along the arc, v along the axis: ∂u × ∂v points out.
+            let pts: Vec<Vec<[f64; 3]>> = (0..3).map(|k| vec![a[k], b[k]]).collect();
+            let ws = vec![vec![1.0, 1.0], vec![w, w], vec![1.0, 1.0]];
+            NurbsSurface::new(2, 1, quad, lin, &pts, &ws).unwrap()
+        } else {
+            let pts = vec![a.to_vec(), b.to_vec()];
+            let ws = vec![vec![1.0, w, 1.0]; 2];
+            NurbsSurface::new(1, 2, lin, quad, &pts, &ws).unwrap()
+        }
+    }
+
+    #[test]
+    fn a_rational_quarter_cylinder_is_found_with_its_normal() {
+        for outward in [true, false] {
+            let fit = cylinder_of(&quarter(3.0, outward, true), 1e-9).expect("a cylinder");
+            assert!((fit.radius - 3.0).abs() < 1e-12);
+            assert!(fit.frame.z.cross(&Vector3::z()).norm() < 1e-12);
+            let o = fit.frame.origin;
+            assert!(
+                (o.x - 1.0).abs() < 1e-12 && (o.y + 2.0).abs() < 1e-12,
+                "{o:?}"
+            );
+            assert_eq!(fit.outward, outward);
+        }
+    }
+
+    #[test]
+    fn a_parabolic_extrusion_is_not_a_cylinder() {
+        assert!(cylinder_of(&quarter(3.0, true, false), 1e-6).is_none());
+    }
+}

@@ -27,21 +27,29 @@ pub struct FeatureType {
     pub reason: Option<String>,
 }
 
-/// A solid's 3-D box in the removal frame: x, y, z lows and highs.
+/// A solid's 3-D box in the removal frame: x, y, z lows and highs (a half
+/// cylinder's crest counted, not only the corners).
 fn solid_box(s: &crate::features::FeatureSolid) -> [f64; 6] {
+    let ring = |r: &Vec<[f64; 2]>| {
+        geo::LineString::from(r.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>())
+    };
+    let region = geo::MultiPolygon::new(vec![geo::Polygon::new(
+        ring(&s.rings[0]),
+        s.rings[1..].iter().map(ring).collect(),
+    )]);
+    let (lo, hi) = (s.lower.range_over(&region), s.upper.range_over(&region));
     let mut b = [
         f64::INFINITY,
         f64::INFINITY,
-        f64::INFINITY,
+        lo[0],
         f64::NEG_INFINITY,
         f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
+        hi[1],
     ];
     for p in s.rings.iter().flatten() {
-        let (zl, zu) = (s.lower.at(p[0], p[1]), s.upper.at(p[0], p[1]));
-        for (k, v) in [(0, p[0]), (1, p[1]), (2, zl), (2, zu)] {
-            b[k] = b[k].min(v);
-            b[k + 3] = b[k + 3].max(v);
+        for k in 0..2 {
+            b[k] = b[k].min(p[k]);
+            b[k + 3] = b[k + 3].max(p[k]);
         }
     }
     b

@@ -117,6 +117,21 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> 
             }
         }
     }
+    // An end within the sliver width of the cylinder's silhouette is on it:
+    // there the height is a square root, and the arrangement's rounding of
+    // 1e-8 in u would stand a wall of microns between the two halves.
+    let radius = [&s.lower, &s.upper]
+        .iter()
+        .filter_map(|h| match h {
+            Height::Cylinder { r, .. } => Some(*r),
+            _ => None,
+        })
+        .fold(0.0, f64::max);
+    let snap = |u: f64| match (u.abs() - radius).abs() <= crate::tol::SLIVER_WIDTH * size.max(1.0) {
+        true => radius.copysign(u),
+        false => u,
+    };
+    let (u0, u1) = (snap(u0), snap(u1));
     // Frame coordinates of a profile point at (u, z), at s = s0.
     let at = |u: f64, z: f64| {
         let (x, y) = (o[0] + a[0] * s0 - a[1] * u, o[1] + a[1] * s0 + a[0] * u);
