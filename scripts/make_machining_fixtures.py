@@ -39,13 +39,14 @@ def main():
         rib = fuse(box(0, 0, 0, 160, 60, 10), box(20, 29.5, 10, 140, 30.5, 10 + height))
         write(rib, os.path.join(out, f"rib_{height}_on_plate.step"))
     # Popma §4.1.3 on a 10 mm plate 200 x 100: a 1.5 x 72 rib with two large
-    # holes Ø24 (centres 50 above its foot: step separation line 38), and a
-    # 1.5 x 48 rib with two cut-outs 30 deep from its top (large: deeper
-    # than its h_RF of 12), leaving pieces of 30, 60 and 50 mm.
+    # holes, Ø40 and Ø24, centred 50 above its foot (step separation line
+    # 70 - 2 x 12 = 46 across both), and a 1.5 x 48 rib with two cut-outs
+    # 30 deep from its top (large: deeper than its h_RF of 12), leaving
+    # pieces of 30, 60 and 50 mm.
     plate = box(0, 0, 0, 200, 100, 10)
     holed = box(10, 29.25, 10, 190, 30.75, 82)
-    for x in (60, 140):
-        holed = cut(holed, hole_y(x, 60, 24))
+    for x, d in ((60, 40), (140, 24)):
+        holed = cut(holed, hole_y(x, 60, d))
     cut_rib = box(10, 69.25, 10, 190, 70.75, 58)
     for x in (40, 120):
         cut_rib = cut(cut_rib, box(x, 69, 28, x + 20, 71, 60))

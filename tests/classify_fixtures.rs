@@ -51,6 +51,7 @@ fn run(
         part: &a,
         volumes: &volumes,
         before: &before,
+        together: &[],
         priority: vec![],
     })
     .unwrap();
@@ -203,6 +204,7 @@ fn current_type_is_kept_while_it_still_fits() {
         part: &a,
         volumes: &volumes,
         before: &[],
+        together: &[],
         priority: vec![],
     })
     .unwrap();
@@ -212,6 +214,7 @@ fn current_type_is_kept_while_it_still_fits() {
         part: &a,
         volumes: &volumes,
         before: &[(0, 3)],
+        together: &[],
         priority: vec![],
     })
     .unwrap_err();
@@ -247,6 +250,7 @@ fn request_error(
         part: &a,
         volumes: &vols,
         before,
+        together: &[],
         priority: vec![],
     })
     .unwrap_err()
@@ -278,4 +282,46 @@ fn requests_that_make_no_sense_are_refused_with_the_right_message() {
         &[],
     );
     assert_eq!(e.code(), "overlap", "{e}");
+}
+
+#[test]
+fn volumes_removed_together_leave_the_face_between_them_open() {
+    let dir = common::root().join("fixtures/classify/stacked");
+    let (part, _) = thinwall_step::read_file(dir.join("part.step")).unwrap();
+    let volumes: Vec<Volume> = ["v0.step", "v1.step"]
+        .iter()
+        .map(|f| Volume {
+            name: f.to_string(),
+            part: thinwall_step::read_file(dir.join(f)).unwrap().0,
+            current: None,
+            up: None,
+        })
+        .collect();
+    let a = PartAnalysis::new(&part, Setup::default());
+    let run = |before: &[(usize, usize)], together: &[(usize, usize)]| {
+        classify(&Request {
+            part: &a,
+            volumes: &volumes,
+            before,
+            together,
+            priority: vec![],
+        })
+        .unwrap()
+    };
+    // v0 above v1, removed first: its bottom is closed by v1.
+    let apart = run(&[(0, 1)], &[]);
+    assert!(!apart[0].bottom_open);
+    // Removed together (one feature's solids): the face between is open.
+    let together = run(&[], &[(0, 1)]);
+    assert!(together[0].bottom_open, "{:?}", together[0].kind);
+    assert_eq!(together[1].kind, apart[1].kind);
+    let e = classify(&Request {
+        part: &a,
+        volumes: &volumes,
+        before: &[],
+        together: &[(0, 5)],
+        priority: vec![],
+    })
+    .unwrap_err();
+    assert_eq!(e.code(), "sequence");
 }

@@ -9,7 +9,7 @@ mod common;
 
 use thinwall_analysis::{FeatureId, StiffnessKind};
 use thinwall_plan::adapt::AdaptRule;
-use thinwall_plan::features::FeatureClass;
+use thinwall_plan::features::{FeatureClass, RemovalFeature};
 use thinwall_plan::sizing::{size_wall, Milling, WallDimensions};
 use thinwall_plan::{sizing_parameters, Plan, RuleSet};
 
@@ -47,7 +47,7 @@ fn position(p: &Plan, feature: &str) -> usize {
 const PART: &str = "fixtures/machining/ribs_with_holes_and_cutouts.step";
 
 #[test]
-fn large_holes_align_the_layers_and_go_between_them() {
+fn large_holes_align_the_layers_and_are_cut_at_the_line() {
     let p = plan(PART);
     let r1 = id(&p, "R1");
     let a = p
@@ -56,11 +56,13 @@ fn large_holes_align_the_layers_and_go_between_them() {
         .find(|a| a.rule == AdaptRule::LargeHoles)
         .expect("a step separation line");
     assert_eq!(a.wall, r1);
-    // Holes Ø24 centred 50 above the foot: top 62, line 62 − 2 × 12 = 38.
-    let line = 38.0;
+    // Holes Ø40 and Ø24 centred 50 above the foot: the highest top is 70,
+    // the line 70 − 2 × 12 = 46; it crosses both.
+    let line = 46.0;
     let mine: Vec<_> = p.layers.iter().filter(|l| l.owner == r1).collect();
     assert!(mine.iter().any(|l| (l.from_foot[0] - line).abs() < 1e-6
         && l.size_class == thinwall_plan::steps::SizeClass::Large));
+    let big_h = p.walls.iter().find(|w| w.id == r1).unwrap().sizes.big_h;
     for l in &mine {
         assert!(
             !(l.from_foot[0] < line - 1e-6 && l.from_foot[1] > line + 1e-6),
@@ -68,40 +70,59 @@ fn large_holes_align_the_layers_and_go_between_them() {
             l.id,
             l.from_foot
         );
-        assert!(l.height <= p.walls[0].sizes.big_h + 1e-9, "{}", l.id);
+        assert!(l.height <= big_h + 1e-9, "{}", l.id);
     }
-    // Each hole's feature after every layer above the line, before the
-    // first layer below it on each side.
-    for hole in ["H1", "H2"] {
+    let present = |l: &&&thinwall_plan::steps::Layer| p.feature_sequence.order.contains(&l.id);
+    // The foot is 10 above the plate's bottom: the line is at z = 56.
+    let line_z = 56.0;
+    for (hole, volume) in [
+        ("H1", std::f64::consts::PI * 400.0 * 1.5),
+        ("H2", std::f64::consts::PI * 144.0 * 1.5),
+    ] {
         let feats: Vec<_> = p
             .machining_features
             .iter()
             .filter(|f| f.owner == Some(id(&p, hole)))
             .collect();
-        assert!(!feats.is_empty(), "{hole}");
-        for f in feats {
-            assert_eq!(f.size_class, FeatureClass::OtherSetup, "{}", f.id);
-            for l in &mine {
-                let Some(at) = p.feature_sequence.order.iter().position(|o| *o == l.id) else {
-                    continue; // vanished
-                };
-                if l.from_foot[0] >= line - 1e-6 {
-                    assert!(at < position(&p, &f.id), "{} before {}", l.id, f.id);
-                }
-            }
-            for side in [0, 1] {
-                let below = mine
-                    .iter()
-                    .find(|l| l.side == side && l.from_foot[1] <= line + 1e-6)
-                    .unwrap();
+        // Two features, above and below the line, the hole's volume in all.
+        assert_eq!(feats.len(), 2, "{hole}");
+        let total: f64 = feats.iter().map(|f| f.volume_mm3).sum();
+        assert!(
+            (total - volume).abs() < 1e-6 * volume,
+            "{hole}: {total} {volume}"
+        );
+        let (above, below): (Vec<&&RemovalFeature>, Vec<&&RemovalFeature>) =
+            feats.iter().partition(|f| f.z_range[0] >= line_z - 1e-6);
+        assert_eq!((above.len(), below.len()), (1, 1), "{hole}");
+        assert!((below[0].z_range[1] - line_z).abs() < 1e-6);
+        let (up, down) = (*above[0], *below[0]);
+        assert_eq!(up.size_class, FeatureClass::OtherSetup);
+        // The upper part after every layer above the line, before the
+        // first layer below it on each side; the lower part after it.
+        for l in mine.iter().filter(present) {
+            if l.from_foot[0] >= line - 1e-6 {
                 assert!(
-                    position(&p, &f.id) < position(&p, &below.id),
+                    position(&p, &l.id) < position(&p, &up.id),
                     "{} before {}",
-                    f.id,
-                    below.id
+                    l.id,
+                    up.id
                 );
             }
         }
+        for side in [0, 1] {
+            let below_line = mine
+                .iter()
+                .filter(present)
+                .find(|l| l.side == side && l.from_foot[1] <= line + 1e-6)
+                .unwrap();
+            assert!(
+                position(&p, &up.id) < position(&p, &below_line.id),
+                "{} before {}",
+                up.id,
+                below_line.id
+            );
+        }
+        assert!(position(&p, &up.id) < position(&p, &down.id));
     }
 }
 

@@ -69,6 +69,7 @@ pub unsafe extern "C" fn tw_classify(
             part: &analysis,
             volumes: &vols,
             before: &pairs,
+            together: &[],
             priority: vec![],
         })
         .map_err(classify_failure)?;

@@ -11,7 +11,7 @@
 //! use thinwall_classify::{classify, Request, Volume};
 //! let a = PartAnalysis::new(&part, Setup::default());
 //! let volumes = vec![Volume { name: "v0".into(), part: v0, current: None, up: None }];
-//! let r = classify(&Request { part: &a, volumes: &volumes, before: &[], priority: vec![] }).unwrap();
+//! let r = classify(&Request { part: &a, volumes: &volumes, before: &[], together: &[], priority: vec![] }).unwrap();
 //! println!("{}", r[0].kind);
 //! ```
 
@@ -50,6 +50,9 @@ pub struct Request<'a> {
     pub volumes: &'a [Volume],
     /// `(a, b)`: volume `a` is removed before volume `b`.
     pub before: &'a [(usize, usize)],
+    /// `(a, b)`: volumes `a` and `b` are removed together (solids of one
+    /// machining feature): a face between them is open for both.
+    pub together: &'a [(usize, usize)],
     /// Type order; empty for [`DEFAULT_PRIORITY`].
     pub priority: Vec<VolumeType>,
 }
@@ -125,6 +128,17 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
     let mut preds: Vec<HashSet<usize>> = vec![HashSet::new(); req.volumes.len()];
     for &(a, b) in req.before {
         preds[b].insert(a);
+    }
+    for &(a, b) in req.together {
+        if a.max(b) >= req.volumes.len() {
+            return Err(ClassifyError::Sequence {
+                before: a,
+                after: b,
+                count: req.volumes.len(),
+            });
+        }
+        preds[b].insert(a);
+        preds[a].insert(b);
     }
     let mut out = Vec::new();
     for (vi, vol) in req.volumes.iter().enumerate() {

@@ -301,6 +301,7 @@ fn classify_command(
         part: &analysis,
         volumes: &volumes,
         before: &before,
+        together: &[],
         priority: vec![],
     })?;
     let report = thinwall_report::ClassificationReport::new(

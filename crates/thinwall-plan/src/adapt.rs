@@ -12,19 +12,19 @@
 //!   large one, unless that had nothing to remove).
 //! - **Large holes** (fig. 4.8): a hole taller than 1.5 × the tool is
 //!   large; the wall's layers get a boundary at the step separation line,
-//!   2 × the tool below the top of its highest large hole, and the hole
-//!   comes after the layers above that line and before those below it.
-//!   Small holes come once the layers down to their bottom are out, before
-//!   those below.
+//!   2 × the tool below the top of its highest large hole. A large hole the
+//!   line crosses is two features (`hole_splits`, cut in `features.rs`);
+//!   the part above the line comes after the layers above it and before
+//!   those below. Small holes, and the parts below the line, come once the
+//!   layers down to their bottom are out, before those below.
 //! - **Chamfers** (fig. 4.10): a chamfer's material is a feature of its
 //!   own (`features.rs`); a large one (wider than the wall's `h_RF`: our
 //!   reading, Popma gives no figure) before all of its wall's layers, a
 //!   small one after the first layer on each side.
 //!
-//! Not done: a hole's feature is not split at the step separation line
-//! (its upper and lower halves are one feature), and a capped width is
-//! applied to the whole side rather than only where the web's layers are
-//! (fig. 4.6a's ellipse).
+//! Not done: a lower part taller than the wall's `H_RF` is not split again,
+//! and a capped width is applied to the whole side rather than only where
+//! the web's layers are (fig. 4.6a's ellipse).
 
 use crate::features::RemovalFeature;
 use crate::scene::Scene;
@@ -353,6 +353,60 @@ fn connected_walls(
     }
 }
 
+/// A large hole cut at its wall's step separation line: the material
+/// inside it above the line and below it are two features (fig. 4.8).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HoleSplit {
+    pub hole: FeatureId,
+    /// Its faces' step ids.
+    pub faces: Vec<u64>,
+    /// The line's height along up (the removal frame's z), mm.
+    pub z: f64,
+}
+
+/// The large holes their wall's step separation line crosses.
+pub fn hole_splits(
+    faces: &Faces,
+    out: &Outcome,
+    walls: &[WallPlan],
+    shapes: &BTreeMap<FeatureId, WallShape>,
+) -> Vec<HoleSplit> {
+    let up = Vector3::from(out.setup.up).normalize();
+    let tol = crate::tol::SAME_LENGTH_MM;
+    let mut splits = Vec::new();
+    for w in walls {
+        let (Some(line), Some(g)) = (
+            shapes.get(&w.id).and_then(|s| s.align_at),
+            out.recognition
+                .feature(w.id)
+                .and_then(|f| f.geometry.as_ref()),
+        ) else {
+            continue;
+        };
+        let axis = Axis::of(g, w.sizes.wall.height);
+        // Only a wall standing along up has the line at one height.
+        if axis.height_dir.dot(&up).abs() < 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS {
+            continue;
+        }
+        let z = (axis.origin + axis.height_dir * (axis.foot + line))
+            .coords
+            .dot(&up);
+        for h in on_wall(out, w.id, StiffnessKind::Hole) {
+            let crosses = faces
+                .heights(h, &axis)
+                .is_some_and(|(lo, hi)| lo < line - tol && hi > line + tol);
+            if h.large == Some(true) && crosses {
+                splits.push(HoleSplit {
+                    hole: h.id,
+                    faces: h.faces.clone(),
+                    z,
+                });
+            }
+        }
+    }
+    splits
+}
+
 /// Sequence relations the adaptations add between features: depressions
 /// into their wall's sequence, chamfers before or after it.
 pub fn relations(
@@ -364,6 +418,7 @@ pub fn relations(
     features: &[RemovalFeature],
     log: &mut Vec<Adaptation>,
 ) -> Vec<LayerConstraint> {
+    let up = Vector3::from(out.setup.up).normalize();
     let mut rel = Vec::new();
     for w in walls {
         let Some(g) = out
@@ -426,22 +481,31 @@ pub fn relations(
             let Some((bottom, _)) = faces.heights(h, &axis) else {
                 continue;
             };
-            // Exposed once the layers reaching below this are out; a hole
-            // through a web once the web's layers are.
-            let exposed = match (h.large, line) {
-                _ if w.kind == StiffnessKind::Web => f64::NEG_INFINITY,
-                (Some(true), Some(line)) => line,
-                _ => bottom,
-            };
             let tol = crate::tol::SAME_LENGTH_MM;
-            let (above, below): (Vec<&&Layer>, Vec<&&Layer>) =
-                mine.iter().partition(|l| l.from_foot[1] > exposed + tol);
-            let firsts_below: Vec<&&Layer> = [0, 1]
-                .iter()
-                .filter_map(|&s| below.iter().find(|l| l.side == s).copied())
-                .collect();
-            let feats = owned(h.id);
-            for f in &feats {
+            // The line's height along up, where it crosses the hole.
+            let line_z = line.map(|a| {
+                (axis.origin + axis.height_dir * (axis.foot + a))
+                    .coords
+                    .dot(&up)
+            });
+            for f in features.iter().filter(|f| f.owner == Some(h.id)) {
+                // Exposed once the layers reaching below this are out: a
+                // large hole's part above the line once those above it are,
+                // the rest once those down to its bottom are; a hole
+                // through a web once the web's layers are.
+                let upper = line_z.is_some_and(|z| f.z_range[0] >= z - tol);
+                let exposed = match (h.large, line) {
+                    _ if w.kind == StiffnessKind::Web => f64::NEG_INFINITY,
+                    (Some(true), Some(line)) if upper => line,
+                    _ => bottom,
+                };
+                let (above, below): (Vec<&&Layer>, Vec<&&Layer>) =
+                    mine.iter().partition(|l| l.from_foot[1] > exposed + tol);
+                let firsts_below: Vec<&&Layer> = [0, 1]
+                    .iter()
+                    .filter_map(|&s| below.iter().find(|l| l.side == s).copied())
+                    .collect();
+                let f = f.id.as_str();
                 for l in &above {
                     rel.push(LayerConstraint {
                         before: l.id.clone(),
@@ -459,30 +523,27 @@ pub fn relations(
                         ),
                     });
                 }
-            }
-            if !feats.is_empty() {
+                let before = firsts_below
+                    .iter()
+                    .map(|l| l.id.as_str())
+                    .collect::<Vec<_>>()
+                    .join(" and ");
                 log.push(Adaptation {
                     wall: w.id,
                     by: h.id,
                     rule: AdaptRule::HoleInSequence,
                     change: format!(
-                        "{} after the {} layer(s) {}{}",
+                        "{f} ({}{}) after the {} layer(s) {}{}",
                         h.id,
+                        if upper { ", above the line" } else { "" },
                         above.len(),
                         match exposed.is_finite() {
                             true => format!("above {exposed:.1} mm"),
                             false => "of the web".to_string(),
                         },
-                        match firsts_below.is_empty() {
+                        match before.is_empty() {
                             true => String::new(),
-                            false => format!(
-                                ", before {}",
-                                firsts_below
-                                    .iter()
-                                    .map(|l| l.id.as_str())
-                                    .collect::<Vec<_>>()
-                                    .join(" and ")
-                            ),
+                            false => format!(", before {before}"),
                         }
                     ),
                 });

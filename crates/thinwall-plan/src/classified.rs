@@ -127,10 +127,21 @@ pub fn classify_features(
             }
         }
     }
+    // A feature's solids are removed together.
+    let mut together = Vec::new();
+    for i in 0..owner.len() {
+        // A feature's solids come one after another.
+        for j in (i + 1..owner.len()).take_while(|&j| owner[j].0 == owner[i].0) {
+            if touch(&boxes[i], &boxes[j], tol) {
+                together.push((i, j));
+            }
+        }
+    }
     let result = classify(&Request {
         part: a,
         volumes: &volumes,
         before: &before,
+        together: &together,
         priority: vec![],
     });
     let classes = match result {

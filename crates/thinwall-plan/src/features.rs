@@ -126,16 +126,22 @@ pub struct FeatureSolid {
 /// Assign every removal block to a feature. `layers` in plan order and
 /// `layer_band[i]`, the index of layer i's band in the decomposition (none
 /// for a layer that is not a prism along up).
+#[allow(clippy::too_many_arguments)]
 pub fn assign(
     out: &Outcome,
     r: &Removal,
     layers: &[Layer],
     layer_band: &[Option<usize>],
     band_area: &[f64],
+    splits: &[crate::adapt::HoleSplit],
     tol: f64,
 ) -> (Vec<RemovalFeature>, f64) {
     let details = detail_faces(out, r);
-    let (by_layer, rest, dropped) = distribute(r, layers, layer_band, &details, tol);
+    let halves: HashMap<u64, (FeatureId, f64)> = splits
+        .iter()
+        .flat_map(|s| s.faces.iter().map(move |&f| (f, (s.hole, s.z))))
+        .collect();
+    let (by_layer, rest, dropped) = distribute(r, layers, layer_band, &details, &halves, tol);
     let mut feats: Vec<RemovalFeature> = layers
         .iter()
         .zip(by_layer)
@@ -152,15 +158,15 @@ pub fn assign(
         (z * 1e4).round() as i64
     };
     groups.sort_by(|a, b| b.0 .0.cmp(&a.0 .0).then_with(|| top(&b.1).cmp(&top(&a.1))));
-    for ((reachable, detail, [lo, hi], _), pieces) in groups {
-        let owner = detail.or_else(|| {
+    for ((reachable, claim, [lo, hi], _), pieces) in groups {
+        let owner = claim.map(Claim::owner).or_else(|| {
             [lo, hi].iter().find_map(|k| match k {
                 Key::Part(step) => owners.get(step).copied(),
                 _ => None,
             })
         });
         let mut f = rest_feature(r, reachable, owner, pieces);
-        if detail.is_some() && reachable {
+        if matches!(claim, Some(Claim::Detail(_))) && reachable {
             f.size_class = FeatureClass::Detail;
         }
         feats.push(f);
@@ -185,6 +191,7 @@ fn distribute(
     layers: &[Layer],
     layer_band: &[Option<usize>],
     details: &HashMap<u64, (FeatureId, f64)>,
+    halves: &HashMap<u64, (FeatureId, f64)>,
     tol: f64,
 ) -> (Vec<Vec<Piece>>, BTreeMap<BulkKey, Vec<Piece>>, f64) {
     let negligible = SLIVER * r.stock_volume;
@@ -212,10 +219,17 @@ fn distribute(
             Bound::Part(i) => details.get(&r.part_step_id(i)).copied(),
             _ => None,
         };
+        // In a large hole its wall's step separation line crosses: the
+        // halves above and below it are features of their own.
+        let half = [b.lower, b.upper].iter().find_map(|bound| match *bound {
+            Bound::Part(i) => halves.get(&r.part_step_id(i)).copied(),
+            _ => None,
+        });
         let cuts = covering
             .iter()
             .map(|&i| layers[i].cut_heights)
-            .chain(detail.map(|(_, top)| [top, top]));
+            .chain(detail.map(|(_, top)| [top, top]))
+            .chain(half.map(|(_, z)| [z, z]));
         for piece in split(r, b, cuts, tol) {
             if piece.volume.abs() <= negligible {
                 dropped += piece.volume;
@@ -223,14 +237,9 @@ fn distribute(
             }
             let mid = 0.5 * (piece.z[0] + piece.z[1]);
             if let Some((id, _)) = detail.filter(|&(_, top)| mid < top) {
-                rest.entry((
-                    b.reachable,
-                    Some(id),
-                    [key(r, &b.lower), key(r, &b.upper)],
-                    [key(r, &piece.lower), key(r, &piece.upper)],
-                ))
-                .or_default()
-                .push(piece);
+                rest.entry(claimed(b.reachable, Claim::Detail(id)))
+                    .or_default()
+                    .push(piece);
                 continue;
             }
             let owner = covering.iter().copied().find(|&i| {
@@ -239,15 +248,24 @@ fn distribute(
             });
             match owner {
                 Some(i) => by_layer[i].push(piece),
-                None => rest
-                    .entry((
-                        b.reachable,
-                        None,
-                        [key(r, &b.lower), key(r, &b.upper)],
-                        [key(r, &piece.lower), key(r, &piece.upper)],
-                    ))
-                    .or_default()
-                    .push(piece),
+                None => {
+                    let k = match half {
+                        Some((hole, z)) => claimed(
+                            b.reachable,
+                            match mid > z {
+                                true => Claim::HoleAbove(hole),
+                                false => Claim::HoleBelow(hole),
+                            },
+                        ),
+                        None => (
+                            b.reachable,
+                            None,
+                            [key(r, &b.lower), key(r, &b.upper)],
+                            [key(r, &piece.lower), key(r, &piece.upper)],
+                        ),
+                    };
+                    rest.entry(k).or_default().push(piece)
+                }
             }
         }
     }
@@ -325,9 +343,33 @@ fn rest_feature(
     }
 }
 
-/// Bulk pieces group by reachability, the detail they belong to, the
+/// Bulk pieces group by reachability, the feature that claims them, the
 /// block's bounds (what they lie on and under) and their own ends.
-type BulkKey = (bool, Option<FeatureId>, [Key; 2], [Key; 2]);
+type BulkKey = (bool, Option<Claim>, [Key; 2], [Key; 2]);
+
+/// Material a feature of its own claims: a chamfer's, up to its top; a
+/// large hole's, above or below its wall's step separation line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Claim {
+    Detail(FeatureId),
+    HoleAbove(FeatureId),
+    HoleBelow(FeatureId),
+}
+
+/// A claimed feature's key: all its pieces in one feature, whatever they
+/// lie on.
+fn claimed(reachable: bool, c: Claim) -> BulkKey {
+    let any = [Key::Flat(0); 2];
+    (reachable, Some(c), any, any)
+}
+
+impl Claim {
+    fn owner(self) -> FeatureId {
+        match self {
+            Claim::Detail(id) | Claim::HoleAbove(id) | Claim::HoleBelow(id) => id,
+        }
+    }
+}
 
 /// The chamfers' faces (step id) with their chamfer and its top (the
 /// highest point of its faces along up, in the removal frame), mm.

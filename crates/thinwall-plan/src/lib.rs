@@ -209,7 +209,9 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
-    let (removal, mut machining_features, frame) = whole::removal_plan(&analysis, out, &layers);
+    let splits = adapt::hole_splits(&faces, out, &walls, &shapes);
+    let (removal, mut machining_features, frame) =
+        whole::removal_plan(&analysis, out, &layers, &splits);
     let adapted = adapt::relations(
         &faces,
         out,

@@ -17,6 +17,7 @@ pub fn removal_plan(
     a: &PartAnalysis,
     out: &Outcome,
     layers: &[Layer],
+    splits: &[crate::adapt::HoleSplit],
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
     let up = Vector3::from(out.setup.up).normalize();
@@ -66,7 +67,7 @@ pub fn removal_plan(
             })
         })
         .collect();
-    let (mut feats, slivers) = assign(out, &r, layers, &layer_band, &band_area, tol);
+    let (mut feats, slivers) = assign(out, &r, layers, &layer_band, &band_area, splits, tol);
     for f in feats.iter().filter(|f| f.pieces.is_empty()) {
         summary
             .notes

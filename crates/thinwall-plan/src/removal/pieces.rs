@@ -223,12 +223,20 @@ impl Height {
             z = [z[0].min(v), z[1].max(v)];
         }
         if let Height::Cylinder { o, sign, r, .. } = *self {
-            let (lo, hi) = corners()
-                .map(|c| self.across(c.x, c.y))
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), u| {
-                    (lo.min(u), hi.max(u))
-                });
-            if lo <= 0.0 && hi >= 0.0 {
+            // The crest, where one polygon reaches across the axis (a region
+            // of two strips either side of it does not).
+            let spans = region.0.iter().any(|p| {
+                let (lo, hi) = p
+                    .exterior()
+                    .0
+                    .iter()
+                    .map(|c| self.across(c.x, c.y))
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), u| {
+                        (lo.min(u), hi.max(u))
+                    });
+                lo <= 0.0 && hi >= 0.0
+            });
+            if spans {
                 let crest = o[2] + sign * r;
                 z = [z[0].min(crest), z[1].max(crest)];
             }
