@@ -120,17 +120,19 @@ def other(kind, pred, fs, wall_name, **extra):
     return d
 
 
-def rib_grid_panel():
+def rib_grid_panel(with_y_rib=True):
     """Web 200x150x2, four 1.5 mm flanges 30 high, two ribs along x and one
     along y (1.2 mm, 25 high) crossing, three Ø19 holes (large: over
     18 mm high) in the first x rib and two cut-outs (10 wide, 8 deep) in
-    the y=0 flange."""
+    the y=0 flange. Without the y rib: the part a regression check must
+    tell apart (make_check_fixtures.py)."""
     L, W, t, H = 200.0, 150.0, 2.0, 30.0
     parts = [box(0, 0, 0, L, W, t),
              box(0, 0, t, L, 1.5, H), box(0, W - 1.5, t, L, W, H),
              box(0, 1.5, t, 1.5, W - 1.5, H), box(L - 1.5, 1.5, t, L, W - 1.5, H),
-             box(1.5, 49.4, t, L - 1.5, 50.6, 25), box(1.5, 99.4, t, L - 1.5, 100.6, 25),
-             box(99.4, 1.5, t, 100.6, W - 1.5, 25)]
+             box(1.5, 49.4, t, L - 1.5, 50.6, 25), box(1.5, 99.4, t, L - 1.5, 100.6, 25)]
+    if with_y_rib:
+        parts.append(box(99.4, 1.5, t, 100.6, W - 1.5, 25))
     s = fuse(*parts)
     s = cut(s, hole_y(30, 14, 19.0, 45, 10), hole_y(70, 14, 19.0, 45, 10), hole_y(150, 14, 19.0, 45, 10),
             box(40, -1, 22, 50, 3, H + 1), box(140, -1, 22, 150, 3, H + 1))

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use thinwall_graph::AdjacencyGraph;
 
+mod check;
 mod failure;
 use failure::Failure;
 
@@ -67,6 +68,27 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
+    },
+    /// Compare a part's recognition with a stored one (a regression check
+    /// of your own parts): features added, lost, changed kind or size,
+    /// thinness, connections. Exit 1 on any difference.
+    Check {
+        /// The STEP file.
+        part: PathBuf,
+        /// The stored recognition (`thinwall recognize --format json`).
+        #[arg(long)]
+        expect: PathBuf,
+        /// Write the part's recognition to the expectation instead.
+        #[arg(long)]
+        update: bool,
+        /// Sizes within this many mm (plus the relative part) are the same.
+        #[arg(long, default_value_t = 0.01)]
+        tolerance_mm: f64,
+        /// Sizes within this fraction (plus the absolute part) are the same.
+        #[arg(long, default_value_t = 1e-3)]
+        tolerance_rel: f64,
+        #[command(flatten)]
+        flags: RecognizeFlags,
     },
     /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
     /// step-approach bending model (docs/PLANNING.md).
@@ -359,6 +381,23 @@ fn run(cli: Cli) -> Result<(), Failure> {
             format,
         } => plan_command(part, flags, rules, volumes_dir, format),
         Command::SizeWall(args) => size_wall_command(args),
+        Command::Check {
+            part,
+            expect,
+            update,
+            tolerance_mm,
+            tolerance_rel,
+            flags,
+        } => check::command(
+            &part,
+            &expect,
+            update,
+            thinwall_report::expect::CheckTolerance {
+                absolute_mm: tolerance_mm,
+                relative: tolerance_rel,
+            },
+            flags.request()?,
+        ),
         Command::Inspect { part, format } => {
             let (model, read) = thinwall_step::read_file(&part)?;
             let graph = AdjacencyGraph::build(&model, &model.tolerances());

@@ -583,3 +583,74 @@ fn plan_and_size_wall_outputs_and_exit_codes() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn check_passes_on_its_part_and_names_a_missing_rib() {
+    let expect = fixture("check/rib_grid_panel.expect.json");
+    let out = bin()
+        .arg("check")
+        .arg(fixture("recognition/rib_grid_panel.step"))
+        .arg("--expect")
+        .arg(&expect)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("as expected"));
+    // The same panel without its y rib: exit 1, the rib and its
+    // connections lost, the web's length changed.
+    let out = bin()
+        .arg("check")
+        .arg(fixture("check/rib_grid_panel_one_rib_less.step"))
+        .arg("--expect")
+        .arg(&expect)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("lost     R1: rib, thickness 1.20, height 23.00, length 147.00"),
+        "{text}"
+    );
+    assert!(
+        text.contains("lost     connection base_leaf W1 R1 (R1 lost)"),
+        "{text}"
+    );
+    assert!(text.contains("size     W1: length"), "{text}");
+    assert!(!text.contains("added"), "{text}");
+    // --update writes an expectation the part then passes.
+    let dir = std::env::temp_dir().join(format!("tw-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let fresh = dir.join("expect.json");
+    for args in [vec!["--update"], vec![]] {
+        let out = bin()
+            .arg("check")
+            .arg(fixture("check/rib_grid_panel_one_rib_less.step"))
+            .arg("--expect")
+            .arg(&fresh)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    // An expectation that is not a report is an input error, not a pass.
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, "{\"x\": 1}").unwrap();
+    let out = bin()
+        .arg("check")
+        .arg(fixture("recognition/rib_grid_panel.step"))
+        .arg("--expect")
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a recognition report"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -3,6 +3,7 @@
 //! scan. Nothing here runs a recognizer: `thinwall-pipeline` does.
 
 pub mod classify;
+pub mod expect;
 pub mod inspect;
 pub mod recognize;
 

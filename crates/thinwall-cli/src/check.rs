@@ -1,0 +1,73 @@
+//! `thinwall check`: a part's recognition against a stored one.
+
+use crate::failure::Failure;
+use std::path::Path;
+use thinwall_report::expect::{compare, CheckTolerance};
+
+/// The part's recognition report as JSON text.
+pub fn recognition_json(
+    part: &Path,
+    request: &thinwall_pipeline::Request,
+) -> Result<String, Failure> {
+    let (model, read) =
+        thinwall_step::read_file(part).map_err(|e| Failure::from(e).in_file(part))?;
+    let outcome = thinwall_pipeline::run(&model, None, request)
+        .map_err(|e| Failure::from(e).in_file(part))?;
+    Ok(
+        thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome)
+            .with_read(&read)
+            .to_json(),
+    )
+}
+
+/// Compare (or with `update`, store) and print the differences; an error
+/// (exit 1) when there are any.
+pub fn command(
+    part: &Path,
+    expect: &Path,
+    update: bool,
+    tol: CheckTolerance,
+    request: thinwall_pipeline::Request,
+) -> Result<(), Failure> {
+    if !(tol.absolute_mm >= 0.0 && tol.relative >= 0.0) {
+        return Err(Failure::Usage("tolerances must be 0 or more".into()));
+    }
+    let actual = recognition_json(part, &request)?;
+    if update {
+        std::fs::write(expect, &actual)
+            .map_err(|e| Failure::Input(format!("{}: {e}", expect.display())))?;
+        println!(
+            "{}: expectation written to {}",
+            part.display(),
+            expect.display()
+        );
+        return Ok(());
+    }
+    let text = std::fs::read_to_string(expect)
+        .map_err(|e| Failure::Input(format!("{}: {e}", expect.display())))?;
+    let parse = |t: &str, what: &Path| {
+        serde_json::from_str::<serde_json::Value>(t)
+            .map_err(|e| Failure::Input(format!("{}: not JSON: {e}", what.display())))
+    };
+    let (e, a) = (parse(&text, expect)?, parse(&actual, part)?);
+    let diffs =
+        compare(&e, &a, tol).map_err(|x| Failure::Input(format!("{}: {x}", expect.display())))?;
+    if diffs.is_empty() {
+        println!("{}: as expected ({})", part.display(), expect.display());
+        return Ok(());
+    }
+    println!(
+        "{}: {} difference(s) from {}",
+        part.display(),
+        diffs.len(),
+        expect.display()
+    );
+    for d in &diffs {
+        println!("  {d}");
+    }
+    Err(Failure::Input(format!(
+        "{}: {} difference(s) from the expectation",
+        part.display(),
+        diffs.len()
+    )))
+}
