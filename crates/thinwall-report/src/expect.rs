@@ -224,7 +224,7 @@ fn pair(
 ) -> Vec<(usize, usize)> {
     let mut cands: Vec<(f64, usize, usize)> = exp
         .iter()
-        .flat_map(|&e| act.iter().filter_map(move |&a| Some((e, a))))
+        .flat_map(|&e| act.iter().map(move |&a| (e, a)))
         .filter_map(|(e, a)| dist(e, a).map(|d| (d, e, a)))
         .collect();
     cands.sort_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
