@@ -9,8 +9,7 @@ pub fn recognition_json(
     part: &Path,
     request: &thinwall_pipeline::Request,
 ) -> Result<String, Failure> {
-    let (model, read) =
-        thinwall_step::read_file(part).map_err(|e| Failure::from(e).in_file(part))?;
+    let (model, read) = thinwall_step::read_file(part).map_err(Failure::from)?;
     let outcome = thinwall_pipeline::run(&model, None, request)
         .map_err(|e| Failure::from(e).in_file(part))?;
     Ok(

@@ -37,6 +37,15 @@ impl Failure {
         }
     }
 
+    /// `usage`, `input` or `internal`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Failure::Usage(_) => "usage",
+            Failure::Input(_) => "input",
+            Failure::Internal(_) => "internal",
+        }
+    }
+
     pub fn message(&self) -> &str {
         match self {
             Failure::Usage(m) | Failure::Input(m) | Failure::Internal(m) => m,

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use thinwall_graph::AdjacencyGraph;
 
+mod batch;
 mod check;
 mod failure;
 use failure::Failure;
@@ -68,6 +69,28 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
+    },
+    /// Recognize many parts in parallel: one report per part in OUT, a
+    /// summary (summary.jsonl and a table), progress on stderr. A bad file
+    /// is reported, not fatal; exit 1 when any part failed.
+    Batch {
+        /// STEP files.
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        /// Directory for the reports and the summary.
+        #[arg(long)]
+        out: PathBuf,
+        /// Parts recognized at once (default: the machine's cores).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Report format per part.
+        #[arg(long, value_enum, default_value = "json")]
+        format: batch::BatchFormat,
+        /// Compare each part with DIR/<name>.expect.json (as `check`).
+        #[arg(long)]
+        expect: Option<PathBuf>,
+        #[command(flatten)]
+        flags: RecognizeFlags,
     },
     /// Compare a part's recognition with a stored one (a regression check
     /// of your own parts): features added, lost, changed kind or size,
@@ -381,6 +404,27 @@ fn run(cli: Cli) -> Result<(), Failure> {
             format,
         } => plan_command(part, flags, rules, volumes_dir, format),
         Command::SizeWall(args) => size_wall_command(args),
+        Command::Batch {
+            inputs,
+            out,
+            jobs,
+            format,
+            expect,
+            flags,
+        } => {
+            let mut request = flags.request()?;
+            // The parts run in parallel; each runs alone.
+            request.parallel = false;
+            batch::command(batch::Batch {
+                inputs,
+                out,
+                jobs: jobs
+                    .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
+                format,
+                expect,
+                request,
+            })
+        }
         Command::Check {
             part,
             expect,

@@ -654,3 +654,89 @@ fn check_passes_on_its_part_and_names_a_missing_rib() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("not a recognition report"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn batch_reports_every_part_and_a_bad_file_is_a_line_not_the_end() {
+    let dir = std::env::temp_dir().join(format!("tw-batch-{}", std::process::id()));
+    let out = dir.join("out");
+    std::fs::create_dir_all(&dir).unwrap();
+    let corrupt = dir.join("corrupt.step");
+    std::fs::write(&corrupt, "not a STEP file").unwrap();
+    let parts = [
+        fixture("recognition/rib_grid_panel.step"),
+        fixture("recognition/c_frame.step"),
+        corrupt.clone(),
+        shared("nist/nist_ftc_08_asme1_ap242-e1-tg.stp"),
+    ];
+    let run = bin()
+        .arg("batch")
+        .args(&parts)
+        .arg("--out")
+        .arg(&out)
+        .args(["--jobs", "2"])
+        .output()
+        .unwrap();
+    // Two good parts, two failures: exit 1, every part in the summary.
+    assert_eq!(
+        run.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let table = String::from_utf8_lossy(&run.stdout);
+    assert!(table.contains("4 parts, 2 failed"), "{table}");
+    let summary = std::fs::read_to_string(out.join("summary.jsonl")).unwrap();
+    let lines: Vec<serde_json::Value> = summary
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 4);
+    let line = |name: &str| {
+        lines
+            .iter()
+            .find(|l| l["file"].as_str().unwrap().ends_with(name))
+            .unwrap()
+    };
+    let good = line("rib_grid_panel.step");
+    assert_eq!(good["ok"], true);
+    assert_eq!(good["features"]["rib"], 3);
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(good["report"].as_str().unwrap()).unwrap())
+            .unwrap();
+    assert_eq!(report["schema"], "thinwall/recognition/1");
+    assert_eq!(line("corrupt.step")["error"][0], "input");
+    let mesh = line("tg.stp");
+    assert_eq!(mesh["ok"], false);
+    assert!(
+        mesh["error"][1].as_str().unwrap().contains("tessellated"),
+        "{mesh}"
+    );
+    // Progress lines (not a terminal here), one per part.
+    assert_eq!(
+        String::from_utf8_lossy(&run.stderr).matches("] ").count(),
+        4
+    );
+    // Against expectations: the panel's passes.
+    let expect = dir.join("expect");
+    std::fs::create_dir_all(&expect).unwrap();
+    std::fs::copy(
+        fixture("check/rib_grid_panel.expect.json"),
+        expect.join("rib_grid_panel.expect.json"),
+    )
+    .unwrap();
+    let run = bin()
+        .arg("batch")
+        .arg(fixture("recognition/rib_grid_panel.step"))
+        .arg("--out")
+        .arg(&out)
+        .arg("--expect")
+        .arg(&expect)
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stdout)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
