@@ -16,6 +16,7 @@
 pub mod model;
 pub mod param_mesh;
 pub mod props;
+pub mod tessellate;
 
 pub use model::*;
 pub use props::{compute_face_props, FaceProps};

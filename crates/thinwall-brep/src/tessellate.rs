@@ -1,0 +1,605 @@
+//! Triangles of a part's faces, for pictures and viewers (issue 15).
+//!
+//! Every edge is sampled once, to a chordal deviation, and both faces of
+//! the edge use those points: the mesh is watertight along edges by
+//! construction. Each face's loops are mapped into its parameter plane
+//! (a plane's own frame; a cylinder or cone unrolled, angles followed
+//! continuously around each loop; a free-form face by point inversion),
+//! with interior points on a grid fine enough for the deviation, and
+//! triangulated there with spade's constrained Delaunay triangulation;
+//! triangles inside the loops (even–odd) are kept and turned to face out
+//! of the material.
+//!
+//! A band of a cylinder or cone bounded by two circles and no seam edge is
+//! cut along a line of the surface between the two loops. Spheres, tori
+//! and faces whose loops cannot be mapped are left out, each with the
+//! reason (`FaceMesh::issue`).
+
+use crate::model::{Face, FaceId, Part};
+use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+use std::f64::consts::TAU;
+use thinwall_geom::{NurbsCurve, Point3, Surface, Vector3};
+
+/// The triangles of a part: shared points, triangles per face.
+#[derive(Clone, Debug, Default)]
+pub struct Mesh {
+    pub points: Vec<Point3>,
+    pub faces: Vec<FaceMesh>,
+}
+
+/// One face's triangles (indices into `Mesh::points`, counter-clockwise
+/// seen from outside the material), or why it has none.
+#[derive(Clone, Debug)]
+pub struct FaceMesh {
+    pub face: FaceId,
+    pub triangles: Vec<[u32; 3]>,
+    pub issue: Option<String>,
+}
+
+impl Mesh {
+    /// Area of one face's triangles, mm².
+    pub fn face_area(&self, f: &FaceMesh) -> f64 {
+        f.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| self.points[i as usize]);
+                0.5 * (b - a).cross(&(c - a)).norm()
+            })
+            .sum()
+    }
+}
+
+/// Largest angle a chord or a triangle may span on a curved edge or
+/// surface, radians (with the deviation: small holes stay round).
+const MAX_ANGLE: f64 = 0.15;
+/// Most segments of one edge and grid lines of one face direction.
+const MAX_EDGE_SEGMENTS: usize = 512;
+const MAX_GRID: usize = 200;
+
+/// Tessellate every face of `part` to within `deviation` mm of its
+/// surface (chords of curved edges, triangles across curved faces).
+pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
+    let deviation = deviation.max(1e-9);
+    let mut points: Vec<Point3> = part.vertices.iter().map(|v| v.point).collect();
+    let edge_points: Vec<Vec<u32>> = part
+        .edges
+        .iter()
+        .map(|e| {
+            let mut ids = vec![e.start.0];
+            if let Some(c) = &e.nurbs {
+                for t in interior_params(c, deviation) {
+                    ids.push(points.len() as u32);
+                    points.push(c.point(t));
+                }
+            }
+            ids.push(e.end.0);
+            ids
+        })
+        .collect();
+    let mut mesh = Mesh {
+        points,
+        faces: Vec::new(),
+    };
+    for f in part.face_ids() {
+        let fm = face_mesh(part, f, &edge_points, deviation, &mut mesh.points);
+        mesh.faces.push(fm);
+    }
+    mesh
+}
+
+/// Parameters inside an edge curve where its chords stay within
+/// `deviation`: each knot span halved until the chord's midpoint lies
+/// that close to the curve.
+fn interior_params(c: &NurbsCurve, deviation: f64) -> Vec<f64> {
+    if c.degree == 1 && c.is_polynomial() {
+        // A polyline: its inner knots are its corners.
+        let spans = c.spans();
+        return spans.iter().skip(1).map(|s| s.0).collect();
+    }
+    let mut out = Vec::new();
+    let spans = c.spans();
+    for (k, (a, b)) in spans.iter().enumerate() {
+        if k > 0 {
+            out.push(*a);
+        }
+        split(c, *a, *b, deviation, 0, &mut out);
+    }
+    out.truncate(MAX_EDGE_SEGMENTS);
+    out
+}
+
+fn split(c: &NurbsCurve, a: f64, b: f64, deviation: f64, depth: u32, out: &mut Vec<f64>) {
+    let (pa, pb) = (c.point(a), c.point(b));
+    let m = 0.5 * (a + b);
+    // The curve's distance from the chord at a quarter, the middle and
+    // three quarters (an S-shaped span passes the chord's middle).
+    let off = |t: f64| {
+        let p = c.point(t);
+        let d = pb - pa;
+        let l2 = d.norm_squared();
+        if l2 == 0.0 {
+            return (p - pa).norm();
+        }
+        let s = ((p - pa).dot(&d) / l2).clamp(0.0, 1.0);
+        (p - (pa + d * s)).norm()
+    };
+    let worst = off(m).max(off(0.5 * (a + m))).max(off(0.5 * (m + b)));
+    // The turn between the two halves: half the arc's angle.
+    let pm = c.point(m);
+    let (h1, h2) = (pm - pa, pb - pm);
+    let turn = h1.angle(&h2);
+    let straight_enough = turn.is_nan() || turn <= 0.5 * MAX_ANGLE;
+    if (worst <= deviation && straight_enough) || depth >= 9 {
+        return;
+    }
+    split(c, a, m, deviation, depth + 1, out);
+    out.push(m);
+    split(c, m, b, deviation, depth + 1, out);
+}
+
+/// A face's map into its parameter plane and back.
+enum Chart<'a> {
+    Plane {
+        frame: &'a thinwall_geom::Frame,
+    },
+    /// Unrolled: u = angle × scale, v along the axis; radius r0 + slope·v.
+    Revolved {
+        frame: &'a thinwall_geom::Frame,
+        scale: f64,
+        r0: f64,
+        slope: f64,
+    },
+    Freeform {
+        nurbs: &'a thinwall_geom::NurbsSurface,
+    },
+}
+
+impl Chart<'_> {
+    fn of(s: &Surface) -> Option<Chart<'_>> {
+        match s {
+            Surface::Plane { frame } => Some(Chart::Plane { frame }),
+            Surface::Cylinder { frame, radius } => Some(Chart::Revolved {
+                frame,
+                scale: *radius,
+                r0: *radius,
+                slope: 0.0,
+            }),
+            Surface::Cone {
+                frame,
+                radius,
+                semi_angle,
+            } => Some(Chart::Revolved {
+                frame,
+                scale: radius.max(1.0),
+                r0: *radius,
+                slope: semi_angle.tan(),
+            }),
+            Surface::Freeform { nurbs, .. } => Some(Chart::Freeform { nurbs }),
+            _ => None,
+        }
+    }
+
+    fn periodic(&self) -> Option<f64> {
+        match self {
+            Chart::Revolved { scale, .. } => Some(TAU * scale),
+            _ => None,
+        }
+    }
+}
+
+/// A face's triangles, or why it has none.
+fn face_mesh(
+    part: &Part,
+    f: FaceId,
+    edge_points: &[Vec<u32>],
+    deviation: f64,
+    points: &mut Vec<Point3>,
+) -> FaceMesh {
+    let face = part.face(f);
+    let mut out = FaceMesh {
+        face: f,
+        triangles: Vec::new(),
+        issue: None,
+    };
+    let Some(chart) = Chart::of(&face.surface) else {
+        out.issue = Some(format!(
+            "{} faces are not tessellated yet",
+            face.surface.kind_name()
+        ));
+        return out;
+    };
+    match triangulate(part, face, &chart, edge_points, deviation, points) {
+        Ok(t) => out.triangles = t,
+        Err(why) => out.issue = Some(why),
+    }
+    out
+}
+
+/// The loops of a face as point ids, in order (each edge's points once).
+fn loop_ids(part: &Part, face: &Face, edge_points: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    face.loops
+        .iter()
+        .map(|&l| {
+            let mut ids = Vec::new();
+            for ce in &part.loop_(l).coedges {
+                let pts = &edge_points[ce.edge.index()];
+                let mut run: Vec<u32> = pts.clone();
+                if !ce.forward {
+                    run.reverse();
+                }
+                run.pop();
+                ids.extend(run);
+            }
+            ids
+        })
+        .filter(|ids: &Vec<u32>| ids.len() >= 2)
+        .collect()
+}
+
+/// A polygon of the parameter plane, each corner with its point id.
+type Ring = Vec<([f64; 2], u32)>;
+
+fn triangulate(
+    part: &Part,
+    face: &Face,
+    chart: &Chart,
+    edge_points: &[Vec<u32>],
+    deviation: f64,
+    points: &mut Vec<Point3>,
+) -> Result<Vec<[u32; 3]>, String> {
+    let loops = loop_ids(part, face, edge_points);
+    if loops.is_empty() {
+        return Err("no loop with points".into());
+    }
+    let mut rings: Vec<Ring> = Vec::new();
+    let mut wrapping: Vec<Ring> = Vec::new();
+    let mut hint = None;
+    for ids in &loops {
+        let (ring, turns) = map_loop(chart, ids, points, &mut hint)?;
+        if turns == 0 {
+            rings.push(ring);
+        } else {
+            wrapping.push(ring);
+        }
+    }
+    match wrapping.len() {
+        0 => {}
+        2 => rings.push(band(
+            &wrapping[0],
+            &wrapping[1],
+            chart.periodic().unwrap_or(TAU),
+        )),
+        n => return Err(format!("{n} loop(s) wrap around the surface")),
+    }
+    if let Some(period) = chart.periodic() {
+        align_turns(&mut rings, period);
+    }
+    snap(&mut rings);
+    let steiner = grid(chart, &rings, deviation);
+    let tris = cdt(&rings, &steiner)?;
+    // Interior points become points of the mesh.
+    let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
+    for uv in &steiner {
+        ids.push(points.len() as u32);
+        points.push(lift(chart, *uv));
+    }
+    let outward = face_normal(face);
+    let mut out = Vec::with_capacity(tris.len());
+    for t in tris {
+        let id = |k: usize| match t[k] {
+            Corner::Boundary(i) => i,
+            Corner::Steiner(j) => ids[j],
+        };
+        let mut tri = [id(0), id(1), id(2)];
+        if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
+            continue;
+        }
+        let [a, b, c] = tri.map(|i| points[i as usize]);
+        let n = (b - a).cross(&(c - a));
+        let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+        if let Some(o) = outward(&centre) {
+            if n.dot(&o) < 0.0 {
+                tri.swap(1, 2);
+            }
+        }
+        out.push(tri);
+    }
+    Ok(out)
+}
+
+/// The outward normal of a face at a point near it.
+fn face_normal(face: &Face) -> impl Fn(&Point3) -> Option<Vector3> + '_ {
+    move |p| {
+        let n = match &face.surface {
+            Surface::Freeform { nurbs, .. } => {
+                let (u, v, _) = nurbs.invert(p, None);
+                thinwall_geom::surface::nurbs_normal(nurbs, u, v)?
+            }
+            s => s.normal_at(p)?,
+        };
+        Some(if face.same_sense { n } else { -n })
+    }
+}
+
+/// A loop in the parameter plane, angles unrolled continuously; with the
+/// number of turns it makes around the axis (0 for a closed polygon).
+fn map_loop(
+    chart: &Chart,
+    ids: &[u32],
+    points: &[Point3],
+    hint: &mut Option<(f64, f64)>,
+) -> Result<(Ring, i32), String> {
+    let mut ring: Ring = Vec::with_capacity(ids.len());
+    for &i in ids {
+        let p = points[i as usize];
+        let uv = match chart {
+            Chart::Plane { frame } => {
+                let l = frame.to_local(&p);
+                [l.x, l.y]
+            }
+            Chart::Revolved { frame, scale, .. } => {
+                let l = frame.to_local(&p);
+                let mut a = l.y.atan2(l.x) * scale;
+                if let Some(&(prev, _)) = ring.last() {
+                    let period = TAU * scale;
+                    a += ((prev[0] - a) / period).round() * period;
+                }
+                [a, l.z]
+            }
+            Chart::Freeform { nurbs } => {
+                let (u, v, d) = nurbs.invert(&p, *hint);
+                if !(d.is_finite() && u.is_finite() && v.is_finite()) {
+                    return Err("a boundary point could not be mapped onto the surface".into());
+                }
+                *hint = Some((u, v));
+                [u, v]
+            }
+        };
+        ring.push((uv, i));
+    }
+    let turns = match (chart.periodic(), ring.first(), ring.last()) {
+        (Some(period), Some(first), Some(last)) => {
+            // Closing the loop: the last step back to the first point.
+            let mut closing = first.0[0];
+            closing += ((last.0[0] - closing) / period).round() * period;
+            ((closing - first.0[0]) / period).round() as i32
+        }
+        _ => 0,
+    };
+    Ok((ring, turns))
+}
+
+/// Two loops that each go once around: one polygon, cut along the
+/// surface from a point of the first to the point of the second nearest
+/// in angle.
+fn band(a: &Ring, b: &Ring, period: f64) -> Ring {
+    let start = a[0].0[0];
+    // b's corner nearest in angle to a's start, b shifted to be near it.
+    let (k, shift) = b
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let s = ((start - c.0[0]) / period).round() * period;
+            (k, s, (c.0[0] + s - start).abs())
+        })
+        .min_by(|x, y| x.2.total_cmp(&y.2))
+        .map(|(k, s, _)| (k, s))
+        .unwrap_or((0, 0.0));
+    let dir_a = (a.last().map_or(0.0, |c| c.0[0]) - start).signum();
+    let mut out: Ring = a.to_vec();
+    // a's start again, one turn on.
+    out.push(([start + dir_a * period, a[0].0[1]], a[0].1));
+    // b from corner k, once around, starting at the same turn as a's end.
+    let n = b.len();
+    let b_shift = shift + dir_a * period;
+    let mut unrolled: Vec<([f64; 2], u32)> = Vec::with_capacity(n + 1);
+    for j in 0..=n {
+        let c = &b[(k + j) % n];
+        let mut u = c.0[0] + b_shift;
+        if let Some(prev) = unrolled.last() {
+            u += ((prev.0[0] - u) / period).round() * period;
+        }
+        unrolled.push(([u, c.0[1]], c.1));
+    }
+    out.extend(unrolled);
+    out
+}
+
+/// Loops unrolled one by one may land a turn apart: each hole of a face
+/// is moved by whole turns to lie within its outer loop's span of angle.
+fn align_turns(rings: &mut [Ring], period: f64) {
+    // The outer loop: the widest (a file's loops need not come outer first).
+    let span = |r: &Ring| {
+        let (lo, hi) = r
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| {
+                (l.min(c.0[0]), h.max(c.0[0]))
+            });
+        (lo, hi - lo)
+    };
+    let Some(outer) =
+        (0..rings.len()).max_by(|&a, &b| span(&rings[a]).1.total_cmp(&span(&rings[b]).1))
+    else {
+        return;
+    };
+    let lo = span(&rings[outer]).0;
+    for (k, r) in rings.iter_mut().enumerate() {
+        if k == outer {
+            continue;
+        }
+        let mid = r.iter().map(|c| c.0[0]).sum::<f64>() / r.len().max(1) as f64;
+        let shift = ((lo - mid) / period).ceil() * period;
+        for c in r.iter_mut() {
+            c.0[0] += shift;
+        }
+    }
+}
+
+/// Parameters rounded to 1e-9 of the rings' extent:
+/// points of one straight boundary (a circle of a cylinder unrolled) are
+/// then exactly in line, and the triangulation makes no sliver across
+/// them from rounding.
+fn snap(rings: &mut [Ring]) {
+    let extent = rings
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, c| m.max(c.0[0].abs()).max(c.0[1].abs()))
+        .max(1.0);
+    let grid = 1e-9 * extent;
+    for c in rings.iter_mut().flatten() {
+        for k in 0..2 {
+            c.0[k] = (c.0[k] / grid).round() * grid;
+        }
+    }
+}
+
+/// Interior points on a grid fine enough for `deviation` (none on a plane).
+fn grid(chart: &Chart, rings: &[Ring], deviation: f64) -> Vec<[f64; 2]> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for c in rings.iter().flatten() {
+        for k in 0..2 {
+            lo[k] = lo[k].min(c.0[k]);
+            hi[k] = hi[k].max(c.0[k]);
+        }
+    }
+    let (nu, nv) = match chart {
+        Chart::Plane { .. } => return Vec::new(),
+        Chart::Revolved { scale, .. } => {
+            // The sagitta of an arc of angle θ is r(1 − cos(θ/2)).
+            let angle = (2.0 * (1.0 - (deviation / scale).min(1.0)).acos()).min(MAX_ANGLE);
+            (
+                ((hi[0] - lo[0]) / (angle * scale).max(1e-9)).ceil() as usize,
+                1,
+            )
+        }
+        Chart::Freeform { .. } => (16, 16),
+    };
+    let (nu, nv) = (nu.clamp(1, MAX_GRID), nv.clamp(1, MAX_GRID));
+    let mut out = Vec::new();
+    for i in 1..nu {
+        for j in 0..=nv {
+            let u = lo[0] + (hi[0] - lo[0]) * i as f64 / nu as f64;
+            let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64;
+            // Strictly inside, away from the boundary.
+            if inside(rings, [u, v])
+                && clear_of(rings, [u, v], 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]))
+            {
+                out.push([u, v]);
+            }
+        }
+    }
+    out
+}
+
+fn inside(rings: &[Ring], p: [f64; 2]) -> bool {
+    let mut odd = false;
+    for r in rings {
+        let n = r.len();
+        for i in 0..n {
+            let (a, b) = (r[i].0, r[(i + 1) % n].0);
+            if (a[1] > p[1]) != (b[1] > p[1]) {
+                let x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+                if x > p[0] {
+                    odd = !odd;
+                }
+            }
+        }
+    }
+    odd
+}
+
+fn clear_of(rings: &[Ring], p: [f64; 2], gap: f64) -> bool {
+    rings.iter().all(|r| {
+        let n = r.len();
+        (0..n).all(|i| {
+            let (a, b) = (r[i].0, r[(i + 1) % n].0);
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let l2 = d[0] * d[0] + d[1] * d[1];
+            let t = if l2 > 0.0 {
+                (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let q = [a[0] + d[0] * t - p[0], a[1] + d[1] * t - p[1]];
+            q[0].hypot(q[1]) > gap
+        })
+    })
+}
+
+#[derive(Clone, Copy)]
+enum Corner {
+    Boundary(u32),
+    Steiner(usize),
+}
+
+/// Constrained Delaunay triangles of the rings (and interior points)
+/// whose centres lie inside.
+fn cdt(rings: &[Ring], steiner: &[[f64; 2]]) -> Result<Vec<[Corner; 3]>, String> {
+    let mut t: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
+    let mut corner_of = std::collections::HashMap::new();
+    for r in rings {
+        let mut handles = Vec::with_capacity(r.len());
+        for (uv, id) in r {
+            if !(uv[0].is_finite() && uv[1].is_finite()) {
+                return Err("a boundary point has no parameters".into());
+            }
+            let h = t
+                .insert(Point2::new(uv[0], uv[1]))
+                .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
+            corner_of.entry(h).or_insert(Corner::Boundary(*id));
+            handles.push(h);
+        }
+        for i in 0..handles.len() {
+            let (a, b) = (handles[i], handles[(i + 1) % handles.len()]);
+            if a != b && !t.exists_constraint(a, b) {
+                t.try_add_constraint(a, b);
+            }
+        }
+    }
+    for (j, uv) in steiner.iter().enumerate() {
+        let h = t
+            .insert(Point2::new(uv[0], uv[1]))
+            .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
+        corner_of.entry(h).or_insert(Corner::Steiner(j));
+    }
+    let mut out = Vec::new();
+    for f in t.inner_faces() {
+        let vs = f.vertices();
+        let c = vs.map(|v| {
+            let p = v.position();
+            [p.x, p.y]
+        });
+        let centre = [
+            (c[0][0] + c[1][0] + c[2][0]) / 3.0,
+            (c[0][1] + c[1][1] + c[2][1]) / 3.0,
+        ];
+        if !inside(rings, centre) {
+            continue;
+        }
+        let corners: Option<Vec<Corner>> = vs
+            .iter()
+            .map(|v| corner_of.get(&v.fix()).copied())
+            .collect();
+        if let Some(cs) = corners {
+            out.push([cs[0], cs[1], cs[2]]);
+        }
+    }
+    Ok(out)
+}
+
+/// The surface point at parameters `uv`.
+fn lift(chart: &Chart, uv: [f64; 2]) -> Point3 {
+    match chart {
+        Chart::Plane { frame } => frame.to_world(&Vector3::new(uv[0], uv[1], 0.0)),
+        Chart::Revolved {
+            frame,
+            scale,
+            r0,
+            slope,
+        } => {
+            let (a, r) = (uv[0] / scale, r0 + slope * uv[1]);
+            frame.to_world(&Vector3::new(r * a.cos(), r * a.sin(), uv[1]))
+        }
+        Chart::Freeform { nurbs } => nurbs.eval(uv[0], uv[1]).point,
+    }
+}
