@@ -29,6 +29,15 @@ enum Format {
     Json,
 }
 
+/// `recognize`'s formats: also a picture.
+#[derive(Clone, Copy, ValueEnum)]
+enum RecognizeFormat {
+    Text,
+    Json,
+    /// An isometric picture, faces coloured by feature kind, with a legend.
+    Svg,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Read a part and report its bodies, faces, edges and their convexity.
@@ -51,7 +60,10 @@ enum Command {
         verbose: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
-        format: Format,
+        format: RecognizeFormat,
+        /// Write to this file instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
     },
     /// Plan the machining order of the stiffness features: sequence
     /// constraints from rules (docs/PLANNING.md), each decision explained.
@@ -457,6 +469,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             flags,
             verbose,
             format,
+            output,
         } => {
             let request = flags.request()?;
             let t0 = std::time::Instant::now();
@@ -476,10 +489,27 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     eprintln!("warning: {}", w.message);
                 }
             }
-            write_out(&match format {
-                Format::Text => report.to_text(),
-                Format::Json => report.to_json(),
-            })
+            let text = match format {
+                RecognizeFormat::Text => report.to_text(),
+                RecognizeFormat::Json => report.to_json(),
+                RecognizeFormat::Svg => {
+                    let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
+                    let size = model.bounding_box().diagonal();
+                    let mesh = thinwall_brep::tessellate::tessellate(&model, 1e-3 * size);
+                    thinwall_report::svg::picture(
+                        &a,
+                        &mesh,
+                        &report.stiffness_features,
+                        &part.display().to_string(),
+                        1000.0,
+                    )
+                }
+            };
+            match output {
+                Some(path) => std::fs::write(&path, text)
+                    .map_err(|e| Failure::Input(format!("{}: {e}", path.display()))),
+                None => write_out(&text),
+            }
         }
     }
 }

@@ -740,3 +740,34 @@ fn batch_reports_every_part_and_a_bad_file_is_a_line_not_the_end() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn recognize_draws_an_svg_picture_with_a_legend() {
+    let dir = std::env::temp_dir().join(format!("tw-svg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("panel.svg");
+    let out = bin()
+        .arg("recognize")
+        .arg(fixture("recognition/rib_grid_panel.step"))
+        .args(["--format", "svg", "-o"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(&file).unwrap();
+    assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(svg.trim_end().ends_with("</svg>"));
+    // Self-contained: the namespace is the only address in it.
+    assert_eq!(svg.matches("http").count(), 1);
+    assert!(!svg.contains("href"));
+    assert!(svg.matches("<polygon").count() > 500);
+    // The legend names every kind of the panel, with its faces.
+    for kind in ["web (", "rib (", "flange (", "hole (", "cutout ("] {
+        assert!(svg.contains(kind), "legend lacks {kind}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -6,6 +6,7 @@ pub mod classify;
 pub mod expect;
 pub mod inspect;
 pub mod recognize;
+pub mod svg;
 
 pub use classify::ClassificationReport;
 pub use inspect::{inspect, InspectReport};
