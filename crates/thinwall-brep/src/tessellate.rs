@@ -11,9 +11,10 @@
 //! of the material.
 //!
 //! A band of a cylinder or cone bounded by two circles and no seam edge is
-//! cut along a line of the surface between the two loops. Spheres, tori
-//! and faces whose loops cannot be mapped are left out, each with the
-//! reason (`FaceMesh::issue`).
+//! cut along a line of the surface between the two loops; a face bounded
+//! by one loop going around (a sphere's cap, a cone to its apex) is closed
+//! along its pole's line. Tori and faces whose loops cannot be mapped are
+//! left out, each with the reason (`FaceMesh::issue`).
 
 use crate::model::{Face, FaceId, Part};
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
@@ -152,6 +153,11 @@ enum Chart<'a> {
     Freeform {
         nurbs: &'a thinwall_geom::NurbsSurface,
     },
+    /// u = longitude × radius, v = latitude × radius.
+    Sphere {
+        frame: &'a thinwall_geom::Frame,
+        radius: f64,
+    },
 }
 
 impl Chart<'_> {
@@ -175,6 +181,10 @@ impl Chart<'_> {
                 slope: semi_angle.tan(),
             }),
             Surface::Freeform { nurbs, .. } => Some(Chart::Freeform { nurbs }),
+            Surface::Sphere { frame, radius } => Some(Chart::Sphere {
+                frame,
+                radius: *radius,
+            }),
             _ => None,
         }
     }
@@ -182,6 +192,21 @@ impl Chart<'_> {
     fn periodic(&self) -> Option<f64> {
         match self {
             Chart::Revolved { scale, .. } => Some(TAU * scale),
+            Chart::Sphere { radius, .. } => Some(TAU * radius),
+            _ => None,
+        }
+    }
+
+    /// Where a face bounded by one loop around the axis closes: the pole
+    /// (or apex) on the side `up` (larger v) or below, as v.
+    fn cap(&self, up: bool) -> Option<f64> {
+        match self {
+            Chart::Sphere { radius, .. } => Some(if up { 1.0 } else { -1.0 } * radius * TAU / 4.0),
+            Chart::Revolved { r0, slope, .. } if *slope != 0.0 => {
+                let apex = -r0 / slope;
+                // Only on the side the cone narrows to.
+                (up == (apex > 0.0)).then_some(apex)
+            }
             _ => None,
         }
     }
@@ -264,6 +289,20 @@ fn triangulate(
     }
     match wrapping.len() {
         0 => {}
+        1 => {
+            // A cap: the face lies left of its loop seen from outside;
+            // unrolled with the normal towards us, left of a loop going
+            // round the positive way is up.
+            let ring = &wrapping[0];
+            let forward = ring.last().map_or(0.0, |c| c.0[0]) > ring[0].0[0];
+            let up = forward == face.same_sense;
+            let v = chart
+                .cap(up)
+                .ok_or_else(|| "one loop goes round a surface with no pole there".to_string())?;
+            let pole = points.len() as u32;
+            points.push(lift(chart, [ring[0].0[0], v]));
+            rings.push(cap(ring, v, pole, chart.periodic().unwrap_or(TAU)));
+        }
         2 => rings.push(band(
             &wrapping[0],
             &wrapping[1],
@@ -346,6 +385,20 @@ fn map_loop(
                 }
                 [a, l.z]
             }
+            Chart::Sphere { frame, radius } => {
+                let l = frame.to_local(&p);
+                let mut a = l.y.atan2(l.x) * radius;
+                if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
+                    let period = TAU * radius;
+                    a += ((prev[0] - a) / period).round() * period;
+                }
+                let lat = (l.z / radius).clamp(-1.0, 1.0).asin() * radius;
+                if l.x.hypot(l.y) < 1e-9 * radius {
+                    // A pole: no longitude of its own (set below).
+                    a = f64::NAN;
+                }
+                [a, lat]
+            }
             Chart::Freeform { nurbs } => {
                 let (u, v, d) = nurbs.invert(&p, *hint);
                 if !(d.is_finite() && u.is_finite() && v.is_finite()) {
@@ -357,6 +410,7 @@ fn map_loop(
         };
         ring.push((uv, i));
     }
+    let ring = at_poles(ring);
     let turns = match (chart.periodic(), ring.first(), ring.last()) {
         (Some(period), Some(first), Some(last)) => {
             // Closing the loop: the last step back to the first point.
@@ -367,6 +421,46 @@ fn map_loop(
         _ => 0,
     };
     Ok((ring, turns))
+}
+
+/// A pole has no longitude: it stands on the pole's line twice, at the
+/// longitudes of the corners before and after it.
+fn at_poles(ring: Ring) -> Ring {
+    let n = ring.len();
+    if ring.iter().all(|c| c.0[0].is_finite()) || n < 2 {
+        return ring;
+    }
+    let mut out = Ring::with_capacity(n + 2);
+    for k in 0..n {
+        let c = ring[k];
+        if c.0[0].is_finite() {
+            out.push(c);
+            continue;
+        }
+        let near = |step: usize| {
+            (1..n)
+                .map(|j| ring[(k + j * step) % n].0[0])
+                .find(|u| u.is_finite())
+        };
+        let (before, after) = (near(n - 1), near(1));
+        for u in [before, after].into_iter().flatten() {
+            out.push(([u, c.0[1]], c.1));
+        }
+    }
+    out
+}
+
+/// One loop that goes once around, closed along the pole's line: the
+/// pole's point at both ends (a triangle fan to it, degenerate on the
+/// pole's line).
+fn cap(a: &Ring, v: f64, pole: u32, period: f64) -> Ring {
+    let start = a[0].0[0];
+    let dir = (a.last().map_or(0.0, |c| c.0[0]) - start).signum();
+    let mut out: Ring = a.to_vec();
+    out.push(([start + dir * period, a[0].0[1]], a[0].1));
+    out.push(([start + dir * period, v], pole));
+    out.push(([start, v], pole));
+    out
 }
 
 /// Two loops that each go once around: one polygon, cut along the
@@ -473,6 +567,14 @@ fn grid(chart: &Chart, rings: &[Ring], deviation: f64) -> Vec<[f64; 2]> {
             )
         }
         Chart::Freeform { .. } => (16, 16),
+        Chart::Sphere { radius, .. } => {
+            let angle = (2.0 * (1.0 - (deviation / radius).min(1.0)).acos()).min(MAX_ANGLE);
+            let step = (angle * radius).max(1e-9);
+            (
+                ((hi[0] - lo[0]) / step).ceil() as usize,
+                ((hi[1] - lo[1]) / step).ceil() as usize,
+            )
+        }
     };
     let (nu, nv) = (nu.clamp(1, MAX_GRID), nv.clamp(1, MAX_GRID));
     let mut out = Vec::new();
@@ -601,5 +703,13 @@ fn lift(chart: &Chart, uv: [f64; 2]) -> Point3 {
             frame.to_world(&Vector3::new(r * a.cos(), r * a.sin(), uv[1]))
         }
         Chart::Freeform { nurbs } => nurbs.eval(uv[0], uv[1]).point,
+        Chart::Sphere { frame, radius } => {
+            let (a, b) = (uv[0] / radius, uv[1] / radius);
+            frame.to_world(&Vector3::new(
+                radius * b.cos() * a.cos(),
+                radius * b.cos() * a.sin(),
+                radius * b.sin(),
+            ))
+        }
     }
 }
