@@ -22,14 +22,7 @@ fn plan_text(text: &str, up: [f64; 3]) -> (Part, Plan) {
 }
 
 fn parts() -> Vec<std::path::PathBuf> {
-    let mut v = common::step_files(&common::shared_data().join("thinwall"));
-    v.extend(common::step_files(
-        &common::root().join("fixtures/recognition"),
-    ));
-    v.extend(common::step_files(
-        &common::root().join("fixtures/machining"),
-    ));
-    v
+    common::thin_walled_parts()
 }
 
 /// The set-up's up: a recognition fixture's own, +Z for the others.

@@ -9,13 +9,7 @@ use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::tessellate::tessellate;
 
 fn parts() -> Vec<std::path::PathBuf> {
-    let mut v = common::step_files(&common::shared_data().join("thinwall"));
-    v.extend(common::step_files(
-        &common::root().join("fixtures/recognition"),
-    ));
-    v.extend(common::step_files(
-        &common::root().join("fixtures/machining"),
-    ));
+    let mut v = common::thin_walled_parts();
     let mut mfcad = common::step_files(&common::shared_data().join("mfcad/train"));
     mfcad.truncate(40);
     v.extend(mfcad);

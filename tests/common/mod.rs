@@ -14,6 +14,15 @@ pub fn root() -> PathBuf {
 }
 
 /// STEP files in a folder, sorted.
+/// The thin-walled parts the planner and the pictures are checked on:
+/// every shared thin-walled part, every recognition and machining fixture.
+pub fn thin_walled_parts() -> Vec<PathBuf> {
+    let mut v = step_files(&shared_data().join("thinwall"));
+    v.extend(step_files(&root().join("fixtures/recognition")));
+    v.extend(step_files(&root().join("fixtures/machining")));
+    v
+}
+
 pub fn step_files(dir: &Path) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))

@@ -584,16 +584,26 @@ fn plan_and_size_wall_outputs_and_exit_codes() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `thinwall check PART --expect EXPECT [extra…]`.
+fn check(
+    part: impl AsRef<std::ffi::OsStr>,
+    expect: &PathBuf,
+    extra: &[&str],
+) -> std::process::Output {
+    bin()
+        .arg("check")
+        .arg(part)
+        .arg("--expect")
+        .arg(expect)
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
 #[test]
 fn check_passes_on_its_part_and_names_a_missing_rib() {
     let expect = fixture("check/rib_grid_panel.expect.json");
-    let out = bin()
-        .arg("check")
-        .arg(fixture("recognition/rib_grid_panel.step"))
-        .arg("--expect")
-        .arg(&expect)
-        .output()
-        .unwrap();
+    let out = check(fixture("recognition/rib_grid_panel.step"), &expect, &[]);
     assert!(
         out.status.success(),
         "{}",
@@ -602,13 +612,11 @@ fn check_passes_on_its_part_and_names_a_missing_rib() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("as expected"));
     // The same panel without its y rib: exit 1, the rib and its
     // connections lost, the web's length changed.
-    let out = bin()
-        .arg("check")
-        .arg(fixture("check/rib_grid_panel_one_rib_less.step"))
-        .arg("--expect")
-        .arg(&expect)
-        .output()
-        .unwrap();
+    let out = check(
+        fixture("check/rib_grid_panel_one_rib_less.step"),
+        &expect,
+        &[],
+    );
     assert_eq!(out.status.code(), Some(1));
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
@@ -626,14 +634,11 @@ fn check_passes_on_its_part_and_names_a_missing_rib() {
     std::fs::create_dir_all(&dir).unwrap();
     let fresh = dir.join("expect.json");
     for args in [vec!["--update"], vec![]] {
-        let out = bin()
-            .arg("check")
-            .arg(fixture("check/rib_grid_panel_one_rib_less.step"))
-            .arg("--expect")
-            .arg(&fresh)
-            .args(args)
-            .output()
-            .unwrap();
+        let out = check(
+            fixture("check/rib_grid_panel_one_rib_less.step"),
+            &fresh,
+            &args,
+        );
         assert!(
             out.status.success(),
             "{}",
@@ -643,13 +648,7 @@ fn check_passes_on_its_part_and_names_a_missing_rib() {
     // An expectation that is not a report is an input error, not a pass.
     let bad = dir.join("bad.json");
     std::fs::write(&bad, "{\"x\": 1}").unwrap();
-    let out = bin()
-        .arg("check")
-        .arg(fixture("recognition/rib_grid_panel.step"))
-        .arg("--expect")
-        .arg(&bad)
-        .output()
-        .unwrap();
+    let out = check(fixture("recognition/rib_grid_panel.step"), &bad, &[]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("not a recognition report"));
     std::fs::remove_dir_all(&dir).unwrap();

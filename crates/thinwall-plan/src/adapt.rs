@@ -153,6 +153,13 @@ impl<'a> Faces<'a> {
     }
 }
 
+/// A wall's geometry from the recognition.
+fn geometry(out: &Outcome, id: FeatureId) -> Option<&WallGeometry> {
+    out.recognition
+        .feature(id)
+        .and_then(|f| f.geometry.as_ref())
+}
+
 /// The depressions and details in or on `wall`, of `kind`.
 fn on_wall(out: &Outcome, wall: FeatureId, kind: StiffnessKind) -> Vec<&StiffnessFeature> {
     out.recognition
@@ -172,11 +179,7 @@ pub fn shapes(
     let mut log = Vec::new();
     let mut shapes = BTreeMap::new();
     for w in walls.iter_mut().filter(|w| w.sizes.thin) {
-        let Some(g) = out
-            .recognition
-            .feature(w.id)
-            .and_then(|f| f.geometry.as_ref())
-        else {
+        let Some(g) = geometry(out, w.id) else {
             continue;
         };
         resize_for_cutouts(faces, out, w, g, &mut log);
@@ -289,11 +292,7 @@ fn connected_walls(
     log: &mut Vec<Adaptation>,
 ) {
     let up = Vector3::from(out.setup.up).normalize();
-    let geometry = |id: FeatureId| {
-        out.recognition
-            .feature(id)
-            .and_then(|f| f.geometry.as_ref())
-    };
+
     for leaf in walls.iter().filter(|w| w.kind != StiffnessKind::Web) {
         let Some(&web_id) = scene.base.get(&leaf.id) else {
             continue;
@@ -305,8 +304,8 @@ fn connected_walls(
             continue;
         };
         let (Some(gl), Some(gw), Some(shape)) = (
-            geometry(leaf.id),
-            geometry(web_id),
+            geometry(out, leaf.id),
+            geometry(out, web_id),
             shapes.get_mut(&leaf.id),
         ) else {
             continue;
@@ -377,9 +376,7 @@ pub fn hole_splits(
     for w in walls {
         let (Some(line), Some(g)) = (
             shapes.get(&w.id).and_then(|s| s.align_at),
-            out.recognition
-                .feature(w.id)
-                .and_then(|f| f.geometry.as_ref()),
+            geometry(out, w.id),
         ) else {
             continue;
         };
@@ -421,11 +418,7 @@ pub fn relations(
     let up = Vector3::from(out.setup.up).normalize();
     let mut rel = Vec::new();
     for w in walls {
-        let Some(g) = out
-            .recognition
-            .feature(w.id)
-            .and_then(|f| f.geometry.as_ref())
-        else {
+        let Some(g) = geometry(out, w.id) else {
             continue;
         };
         let axis = Axis::of(g, w.sizes.wall.height);
