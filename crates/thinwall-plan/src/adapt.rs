@@ -89,7 +89,8 @@ impl Axis {
     pub fn of(g: &WallGeometry, height: f64) -> Self {
         let hd = g.height_direction;
         let ld = g.frame.z.cross(&hd).normalize();
-        let along = |d: &Vector3| span(g.outline().iter(), &g.frame.origin, d);
+        let outline = g.outline();
+        let along = |d: &Vector3| span(outline.iter(), &g.frame.origin, d);
         let (_, top) = along(&hd);
         Self {
             origin: g.frame.origin,
@@ -99,11 +100,6 @@ impl Axis {
             height,
             length: along(&ld),
         }
-    }
-
-    /// Height of a point above the foot, mm.
-    pub fn above_foot(&self, p: &Point3) -> f64 {
-        (p - self.origin).dot(&self.height_dir) - self.foot
     }
 }
 

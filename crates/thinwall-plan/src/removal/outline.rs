@@ -9,7 +9,7 @@
 //! directions cancel, and what is left is chained into rings: the same
 //! rings in every pose.
 
-use geo::{Coord, LineString, Polygon};
+use geo::{Coord, LineString, Polygon, Winding};
 use rstar::{primitives::GeomWithData, RTree, AABB};
 use std::collections::HashMap;
 
@@ -67,10 +67,10 @@ pub fn union(cells: &[Polygon<f64>], snap: f64) -> Vec<Polygon<f64>> {
     let mut edges: Vec<(Vertex, Vertex)> = Vec::new();
     for cell in cells {
         let outer = cell.exterior();
-        let ccw = signed_area(outer) > 0.0;
+        let ccw = outer.is_ccw();
         push_ring(&mut verts, &mut edges, outer, ccw);
         for hole in cell.interiors() {
-            push_ring(&mut verts, &mut edges, hole, signed_area(hole) < 0.0);
+            push_ring(&mut verts, &mut edges, hole, hole.is_cw());
         }
     }
     let edges = split_at_vertices(&verts, edges);
@@ -237,14 +237,6 @@ fn drop_straight(ring: &[[f64; 2]], tol: f64) -> Vec<[f64; 2]> {
         }
     }
     r
-}
-
-fn signed_area(ring: &LineString<f64>) -> f64 {
-    ring.0
-        .windows(2)
-        .map(|w| w[0].x * w[1].y - w[1].x * w[0].y)
-        .sum::<f64>()
-        * 0.5
 }
 
 fn ring_area(r: &[[f64; 2]]) -> f64 {
