@@ -26,6 +26,9 @@ use thinwall_geom::{NurbsCurve, Point3, Surface, Vector3};
 pub struct Mesh {
     pub points: Vec<Point3>,
     pub faces: Vec<FaceMesh>,
+    /// Every edge's points, start to end (indices into `points`), by
+    /// `EdgeId::index()`: the polylines both its faces use.
+    pub edges: Vec<Vec<u32>>,
 }
 
 /// One face's triangles (indices into `Mesh::points`, counter-clockwise
@@ -80,11 +83,13 @@ pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
     let mut mesh = Mesh {
         points,
         faces: Vec::new(),
+        edges: Vec::new(),
     };
     for f in part.face_ids() {
         let fm = face_mesh(part, f, &edge_points, deviation, &mut mesh.points);
         mesh.faces.push(fm);
     }
+    mesh.edges = edge_points;
     mesh
 }
 

@@ -36,6 +36,17 @@ enum RecognizeFormat {
     Json,
     /// An isometric picture, faces coloured by feature kind, with a legend.
     Svg,
+    /// One self-contained page: a 3D view, the features, the connections.
+    Html,
+}
+
+/// `plan`'s and `classify`'s formats: also a page.
+#[derive(Clone, Copy, ValueEnum)]
+enum PageFormat {
+    Text,
+    Json,
+    /// One self-contained page: a 3D view with the volumes.
+    Html,
 }
 
 #[derive(Subcommand)]
@@ -80,7 +91,10 @@ enum Command {
         volumes_dir: Option<PathBuf>,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
-        format: Format,
+        format: PageFormat,
+        /// Write to this file instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
     },
     /// Recognize many parts in parallel: one report per part in OUT, a
     /// summary (summary.jsonl and a table), progress on stderr. A bad file
@@ -145,7 +159,10 @@ enum Command {
         up: Option<[f64; 3]>,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
-        format: Format,
+        format: PageFormat,
+        /// Write to this file instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
     },
 }
 
@@ -288,7 +305,8 @@ fn plan_command(
     flags: RecognizeFlags,
     rules: Option<PathBuf>,
     volumes_dir: Option<PathBuf>,
-    format: Format,
+    format: PageFormat,
+    output: Option<PathBuf>,
 ) -> Result<(), Failure> {
     let rules = match &rules {
         Some(path) => {
@@ -324,10 +342,22 @@ fn plan_command(
             );
         }
     }
-    write_out(&match format {
-        Format::Text => plan.to_text(),
-        Format::Json => plan.to_json(),
-    })
+    let text = match format {
+        PageFormat::Text => plan.to_text(),
+        PageFormat::Json => plan.to_json(),
+        PageFormat::Html => {
+            let report =
+                thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome);
+            let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
+            thinwall_report::html::plan_page(
+                &format!("Plan: {}", part.display()),
+                &a,
+                &report,
+                &plan,
+            )
+        }
+    };
+    write_to(output.as_deref(), &text)
 }
 
 fn classify_command(
@@ -335,7 +365,8 @@ fn classify_command(
     volume: Vec<PathBuf>,
     before: Vec<(usize, usize)>,
     up: Option<[f64; 3]>,
-    format: Format,
+    format: PageFormat,
+    output: Option<PathBuf>,
 ) -> Result<(), Failure> {
     let (model, _) = thinwall_step::read_file(&part)?;
     let mut volumes = Vec::new();
@@ -367,10 +398,20 @@ fn classify_command(
         &before,
         result,
     );
-    write_out(&match format {
-        Format::Text => report.to_text(),
-        Format::Json => report.to_json(),
-    })
+    let text = match format {
+        PageFormat::Text => report.to_text(),
+        PageFormat::Json => report.to_json(),
+        PageFormat::Html => {
+            let parts: Vec<&thinwall_brep::Part> = volumes.iter().map(|v| &v.part).collect();
+            thinwall_report::html::classification_page(
+                &format!("Classification: {}", part.display()),
+                &analysis,
+                &report,
+                &parts,
+            )
+        }
+    };
+    write_to(output.as_deref(), &text)
 }
 
 fn parse_vector(s: &str) -> Result<[f64; 3], String> {
@@ -407,14 +448,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
             before,
             up,
             format,
-        } => classify_command(part, volume, before, up, format),
+            output,
+        } => classify_command(part, volume, before, up, format, output),
         Command::Plan {
             part,
             flags,
             rules,
             volumes_dir,
             format,
-        } => plan_command(part, flags, rules, volumes_dir, format),
+            output,
+        } => plan_command(part, flags, rules, volumes_dir, format, output),
         Command::SizeWall(args) => size_wall_command(args),
         Command::Batch {
             inputs,
@@ -494,8 +537,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 RecognizeFormat::Json => report.to_json(),
                 RecognizeFormat::Svg => {
                     let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
-                    let size = model.bounding_box().diagonal();
-                    let mesh = thinwall_brep::tessellate::tessellate(&model, 1e-3 * size);
+                    let mesh = thinwall_report::html::part_mesh(&model);
                     thinwall_report::svg::picture(
                         &a,
                         &mesh,
@@ -504,12 +546,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
                         1000.0,
                     )
                 }
+                RecognizeFormat::Html => {
+                    let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
+                    thinwall_report::html::recognition_page(
+                        &part.display().to_string(),
+                        &a,
+                        &report,
+                    )
+                }
             };
-            match output {
-                Some(path) => std::fs::write(&path, text)
-                    .map_err(|e| Failure::Input(format!("{}: {e}", path.display()))),
-                None => write_out(&text),
-            }
+            write_to(output.as_deref(), &text)
         }
     }
 }
@@ -638,6 +684,15 @@ impl RecognizeFlags {
                 stock_file: self.stock.as_ref().map(|p| p.display().to_string()),
             },
         })
+    }
+}
+
+/// Write to `path`, or to stdout without one.
+fn write_to(path: Option<&std::path::Path>, text: &str) -> Result<(), Failure> {
+    match path {
+        Some(path) => std::fs::write(path, text)
+            .map_err(|e| Failure::Input(format!("{}: {e}", path.display()))),
+        None => write_out(text),
     }
 }
 

@@ -770,3 +770,48 @@ fn recognize_draws_an_svg_picture_with_a_legend() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn recognize_plan_and_classify_write_html_pages() {
+    let dir = std::env::temp_dir().join(format!("tw-html-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let panel = fixture("recognition/rib_grid_panel.step");
+    let runs: [(&str, Command); 3] = [
+        ("recognize", {
+            let mut c = bin();
+            c.arg("recognize").arg(&panel);
+            c
+        }),
+        ("plan", {
+            let mut c = bin();
+            c.arg("plan").arg(&panel);
+            c
+        }),
+        ("classify", classify_stacked()),
+    ];
+    for (name, mut cmd) in runs {
+        let file = dir.join(format!("{name}.html"));
+        let out = cmd
+            .args(["--format", "html", "-o"])
+            .arg(&file)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out.stdout.is_empty(), "{name} wrote to stdout with -o");
+        let page = std::fs::read_to_string(&file).unwrap();
+        assert!(page.starts_with("<!DOCTYPE html>"), "{name}");
+        assert!(page.trim_end().ends_with("</html>"), "{name}");
+        let data = thinwall_report::html::data_of(&page).expect("data block");
+        let view = match name {
+            "recognize" => "recognition",
+            "classify" => "classification",
+            other => other,
+        };
+        assert_eq!(data["view"], view);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -315,3 +315,18 @@ pub fn solids_step(solids: &[Solid], name: &str) -> String {
     )
     .to_string()
 }
+
+/// A feature's solids read back as a part of their own (one body per
+/// solid; what cannot be written is left out), for viewers.
+pub fn feature_part(
+    plan: &crate::Plan,
+    f: &crate::features::RemovalFeature,
+) -> Option<thinwall_brep::Part> {
+    let (text, skipped) = feature_step(plan, f);
+    if skipped == f.solids.len() {
+        return None;
+    }
+    thinwall_step::read_bytes(text.as_bytes(), &f.id)
+        .ok()
+        .map(|(part, _)| part)
+}

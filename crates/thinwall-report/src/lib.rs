@@ -4,7 +4,9 @@
 
 pub mod classify;
 pub mod expect;
+pub mod html;
 pub mod inspect;
+pub mod palette;
 pub mod recognize;
 pub mod svg;
 

@@ -13,28 +13,9 @@ use thinwall_analysis::{PartAnalysis, StiffnessKind};
 use thinwall_brep::tessellate::Mesh;
 use thinwall_geom::{Point3, Vector3};
 
-/// Fill colour of a kind (and of faces of no feature).
-fn colour(kind: Option<StiffnessKind>) -> [u8; 3] {
-    use StiffnessKind as K;
-    match kind {
-        Some(K::Web) => [120, 170, 220],
-        Some(K::Rib) => [240, 150, 60],
-        Some(K::Flange) => [90, 180, 110],
-        Some(K::Wall) => [160, 120, 200],
-        Some(K::Hole) => [210, 60, 60],
-        Some(K::Cutout) => [200, 80, 170],
-        Some(K::Notch) => [150, 100, 60],
-        Some(K::Pocket) => [230, 210, 80],
-        Some(K::Chamfer) => [60, 190, 200],
-        Some(K::Fillet) => [170, 180, 200],
-        Some(K::Engraving) => [60, 60, 60],
-        None => [205, 205, 205],
-    }
-}
-
 /// The kind of feature each face (by step id) belongs to: walls first,
 /// then what is in or on them.
-fn face_kinds(features: &[crate::FeatureEntry]) -> HashMap<u64, StiffnessKind> {
+pub(crate) fn face_kinds(features: &[crate::FeatureEntry]) -> HashMap<u64, StiffnessKind> {
     let mut m = HashMap::new();
     for pass in [false, true] {
         for f in features.iter().filter(|f| f.feature.kind.is_wall() == pass) {
@@ -56,21 +37,7 @@ pub fn picture(
     width: f64,
 ) -> String {
     let part = a.part();
-    let up = a.up();
-    let stock = thinwall_machining::stock::Stock::of(a, Some(up));
-    let across: Vec<Vector3> = stock
-        .axes
-        .iter()
-        .copied()
-        .filter(|x| x.dot(&up).abs() < 0.5)
-        .collect();
-    let (e1, e2) = match across.as_slice() {
-        [x, y, ..] => (*x, *y),
-        _ => {
-            let x = thinwall_geom::frame::any_perpendicular(&up);
-            (x, up.cross(&x))
-        }
-    };
+    let (e1, e2, up) = view_axes(a);
     // Looking down along −(e1 + e2 + up): the box's iso view.
     let view = -(e1 + e2 + up).normalize();
     let right = up.cross(&view).try_normalize(1e-12).unwrap_or(e1);
@@ -85,7 +52,7 @@ pub fn picture(
     for fm in &mesh.faces {
         let step = part.face(fm.face).step_id;
         let kind = kinds.get(&step).copied();
-        let c = colour(kind);
+        let c = crate::palette::stiffness(kind);
         let name = kind.map_or("other", |k| k.name());
         let entry = used.entry(name).or_insert((0, c));
         entry.0 += 1;
@@ -167,6 +134,27 @@ pub fn picture(
     }
     s.push_str("</g>\n</svg>\n");
     s
+}
+
+/// The set-up's stock axes across up and up itself: the frame pictures
+/// are drawn in (an isometric view looks down along −(e1 + e2 + up)), so
+/// a turned part is drawn the same.
+pub fn view_axes(a: &PartAnalysis) -> (Vector3, Vector3, Vector3) {
+    let up = a.up();
+    let stock = thinwall_machining::stock::Stock::of(a, Some(up));
+    let across: Vec<Vector3> = stock
+        .axes
+        .iter()
+        .copied()
+        .filter(|x| x.dot(&up).abs() < 0.5)
+        .collect();
+    match across.as_slice() {
+        [x, y, ..] => (*x, *y, up),
+        _ => {
+            let x = thinwall_geom::frame::any_perpendicular(&up);
+            (x, up.cross(&x), up)
+        }
+    }
 }
 
 /// A triangle split in four until its sides are shorter than `longest`.
