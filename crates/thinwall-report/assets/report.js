@@ -89,8 +89,18 @@
     const edges = new T.LineSegments(eg, new T.LineBasicMaterial({ color: 0x2a2f36, transparent: opacity < 1, opacity: Math.min(1, opacity + 0.25) }));
     const group = new T.Group();
     group.add(mesh, edges);
+    // Where a label goes: the middle of the body (solid) with the largest box.
+    const boxes = new Map();
+    geom.faces.forEach((f, k) => {
+      const b = boxes.get(f.body) || new T.Box3();
+      const r = ranges[k];
+      for (let i = r.v0; i < r.v0 + r.nv; i++) b.expandByPoint(new T.Vector3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]));
+      boxes.set(f.body, b);
+    });
+    const bulk = (b) => { const s = b.getSize(new T.Vector3()); return s.x * s.y * s.z + 1e-9 * (s.x + s.y + s.z); };
     const centre = new T.Vector3();
-    if (nv > 0) { for (let i = 0; i < nv; i++) centre.add(new T.Vector3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2])); centre.divideScalar(nv); }
+    const largest = [...boxes.values()].filter((b) => !b.isEmpty()).sort((a, b) => bulk(b) - bulk(a))[0];
+    if (largest) largest.getCenter(centre);
     return {
       group, mesh, edges, ranges, geom, centre,
       paint(fn) { // fn(face index) → THREE.Color
@@ -411,8 +421,16 @@
     const box = $('#bottom');
     const slider = el('input', { type: 'range', min: 0, max: sorted.length, value: 0, oninput: (e) => go(+e.target.value) });
     const now = el('span', { class: 'now' });
-    const wallSel = el('select', { onchange: (e) => { wall = e.target.value; go(step); } }, el('option', { value: '' }, 'every wall'), ...walls.map((w) => el('option', { value: w }, 'wall ' + w + ' (fig. 4.1 numbers)')));
-    const play = el('button', { onclick: () => { if (timer) { clearInterval(timer); timer = null; play.textContent = '▶ play'; } else { play.textContent = '❚❚ pause'; timer = setInterval(() => { if (step >= sorted.length) { clearInterval(timer); timer = null; play.textContent = '▶ play'; } else go(step + 1); }, 700); } } }, '▶ play');
+    const wallSel = el('select', { onchange: (e) => { wall = e.target.value; go(first()); } }, el('option', { value: '' }, 'every wall'), ...walls.map((w) => el('option', { value: w }, 'wall ' + w + ' (fig. 4.1 numbers)')));
+    const play = el('button', { onclick: () => { if (timer) { clearInterval(timer); timer = null; play.textContent = '▶ play'; } else { play.textContent = '❚❚ pause'; timer = setInterval(() => { if (step >= sorted.length) { clearInterval(timer); timer = null; play.textContent = '▶ play'; } else go(next(1)); }, 700); } } }, '▶ play');
+    // With a wall chosen, the steps are its own features in the order.
+    const mine = (k) => !wall || (sorted[k] && sorted[k].owner === wall);
+    function next(d) {
+      let k = step + d;
+      while (k >= 0 && k < sorted.length && !mine(k)) k += d;
+      return k < 0 ? step : k;
+    }
+    function first() { let k = 0; while (k < sorted.length && !mine(k)) k++; return k; }
     function go(k) {
       step = Math.max(0, Math.min(sorted.length, k));
       slider.value = step;
@@ -481,8 +499,8 @@
     }
     box.append(el('h4', null, 'Machining-feature order: step through it'),
       el('div', { class: 'controls' },
-        el('button', { onclick: () => go(0), title: 'first' }, '«'), el('button', { onclick: () => go(step - 1) }, '◀'), slider,
-        el('button', { onclick: () => go(step + 1) }, '▶'), el('button', { onclick: () => go(sorted.length), title: 'all removed' }, '»'), play, wallSel),
+        el('button', { onclick: () => go(first()), title: 'first' }, '«'), el('button', { onclick: () => go(next(-1)) }, '◀'), slider,
+        el('button', { onclick: () => go(next(1)) }, '▶'), el('button', { onclick: () => go(sorted.length), title: 'all removed' }, '»'), play, wallSel),
       now,
       el('div', { class: 'muted' }, plan.removal.unavailable ? 'No removal plan: ' + plan.removal.unavailable :
         `Volumes still to remove are drawn in their class colour, the current one in orange, numbered in the order (with a wall chosen, by their step in its approach, as Popma fig. 4.1). Stock ${plan.removal.stock}, ${fmt(plan.removal.removed_volume_mm3, 0)} mm³ removed in ${feats.length} features.`));
@@ -494,7 +512,7 @@
       list() { redraw(); },
       paint() { redraw(); },
       select(id) { if (rank.has(id)) go(rank.get(id)); },
-      setWall(w) { wall = walls.includes(w) ? w : ''; wallSel.value = wall; go(step); },
+      setWall(w) { wall = walls.includes(w) ? w : ''; wallSel.value = wall; go(first()); },
       go,
       pickFace(i, s) { if (s && s.tag.kind === 'volume') this.select(s.tag.id); else faceInfo(i); },
     };
