@@ -58,6 +58,9 @@ impl Mesh {
 const MAX_ANGLE: f64 = 0.15;
 /// Most segments of one edge and grid lines of one face direction.
 const MAX_EDGE_SEGMENTS: usize = 512;
+/// Rows along a cylinder's or cone's generator are this many columns
+/// apart (`Chart::stretch`).
+const GENERATOR_STRETCH: f64 = 4.0;
 const MAX_GRID: usize = 200;
 
 /// Tessellate every face of `part` to within `deviation` mm of its
@@ -163,6 +166,13 @@ enum Chart<'a> {
         frame: &'a thinwall_geom::Frame,
         radius: f64,
     },
+    /// u = angle about the axis × major radius, v = angle about the tube's
+    /// circle × minor radius; both unrolled.
+    Torus {
+        frame: &'a thinwall_geom::Frame,
+        major: f64,
+        minor: f64,
+    },
 }
 
 impl Chart<'_> {
@@ -190,6 +200,15 @@ impl Chart<'_> {
                 frame,
                 radius: *radius,
             }),
+            Surface::Torus {
+                frame,
+                major_radius,
+                minor_radius,
+            } if *major_radius > 0.0 && *minor_radius > 0.0 => Some(Chart::Torus {
+                frame,
+                major: *major_radius,
+                minor: *minor_radius,
+            }),
             _ => None,
         }
     }
@@ -198,7 +217,26 @@ impl Chart<'_> {
         match self {
             Chart::Revolved { scale, .. } => Some(TAU * scale),
             Chart::Sphere { radius, .. } => Some(TAU * radius),
+            Chart::Torus { major, .. } => Some(TAU * major),
             _ => None,
+        }
+    }
+
+    /// The period of v, where it has one (a torus's tube).
+    fn periodic_v(&self) -> Option<f64> {
+        match self {
+            Chart::Torus { minor, .. } => Some(TAU * minor),
+            _ => None,
+        }
+    }
+
+    /// How much shorter v is made for the triangulation: along a
+    /// cylinder's or cone's generator the surface is straight, so
+    /// triangles may be longer that way than across it.
+    fn stretch(&self) -> f64 {
+        match self {
+            Chart::Revolved { .. } => GENERATOR_STRETCH,
+            _ => 1.0,
         }
     }
 
@@ -308,19 +346,40 @@ fn triangulate(
             points.push(lift(chart, [ring[0].0[0], v]));
             rings.push(cap(ring, v, pole, chart.periodic().unwrap_or(TAU)));
         }
-        2 => rings.push(band(
-            &wrapping[0],
-            &wrapping[1],
-            chart.periodic().unwrap_or(TAU),
-        )),
+        2 => {
+            if let Some(period) = chart.periodic_v() {
+                // On a torus the two circles bound two bands: the face's
+                // is on the left of the first loop (as for a cap).
+                let forward = wrapping[0].last().map_or(0.0, |c| c.0[0]) > wrapping[0][0].0[0];
+                let up = forward == face.same_sense;
+                let mean = |r: &Ring| r.iter().map(|c| c.0[1]).sum::<f64>() / r.len() as f64;
+                let (va, vb) = (mean(&wrapping[0]), mean(&wrapping[1]));
+                let turns = if up {
+                    ((va - vb) / period).floor() + 1.0
+                } else {
+                    ((va - vb) / period).ceil() - 1.0
+                };
+                for c in wrapping[1].iter_mut() {
+                    c.0[1] += turns * period;
+                }
+            }
+            rings.push(band(
+                &wrapping[0],
+                &wrapping[1],
+                chart.periodic().unwrap_or(TAU),
+            ))
+        }
         n => return Err(format!("{n} loop(s) wrap around the surface")),
     }
     if let Some(period) = chart.periodic() {
-        align_turns(&mut rings, period);
+        align_turns(&mut rings, period, 0);
+    }
+    if let Some(period) = chart.periodic_v() {
+        align_turns(&mut rings, period, 1);
     }
     snap(&mut rings);
     let steiner = grid(chart, &rings, deviation);
-    let tris = cdt(&rings, &steiner)?;
+    let tris = cdt(&rings, &steiner, chart.stretch())?;
     // Interior points become points of the mesh.
     let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
     for uv in &steiner {
@@ -384,9 +443,13 @@ fn map_loop(
             Chart::Revolved { frame, scale, .. } => {
                 let l = frame.to_local(&p);
                 let mut a = l.y.atan2(l.x) * scale;
-                if let Some(&(prev, _)) = ring.last() {
+                if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
                     let period = TAU * scale;
                     a += ((prev[0] - a) / period).round() * period;
+                }
+                if l.x.hypot(l.y) < 1e-9 * scale {
+                    // A cone's apex: no angle of its own (set below).
+                    a = f64::NAN;
                 }
                 [a, l.z]
             }
@@ -404,6 +467,21 @@ fn map_loop(
                 }
                 [a, lat]
             }
+            Chart::Torus {
+                frame,
+                major,
+                minor,
+            } => {
+                let l = frame.to_local(&p);
+                let mut a = l.y.atan2(l.x) * major;
+                let mut b = l.z.atan2(l.x.hypot(l.y) - major) * minor;
+                if let Some(&(prev, _)) = ring.last() {
+                    let (pa, pb) = (TAU * major, TAU * minor);
+                    a += ((prev[0] - a) / pa).round() * pa;
+                    b += ((prev[1] - b) / pb).round() * pb;
+                }
+                [a, b]
+            }
             Chart::Freeform { nurbs } => {
                 let (u, v, d) = nurbs.invert(&p, *hint);
                 if !(d.is_finite() && u.is_finite() && v.is_finite()) {
@@ -416,6 +494,13 @@ fn map_loop(
         ring.push((uv, i));
     }
     let ring = at_poles(ring);
+    if let (Some(period), Some(first), Some(last)) = (chart.periodic_v(), ring.first(), ring.last())
+    {
+        let closing = first.0[1] + ((last.0[1] - first.0[1]) / period).round() * period;
+        if ((closing - first.0[1]) / period).round() != 0.0 {
+            return Err("a loop goes around a torus's tube".into());
+        }
+    }
     let turns = match (chart.periodic(), ring.first(), ring.last()) {
         (Some(period), Some(first), Some(last)) => {
             // Closing the loop: the last step back to the first point.
@@ -505,14 +590,15 @@ fn band(a: &Ring, b: &Ring, period: f64) -> Ring {
 }
 
 /// Loops unrolled one by one may land a turn apart: each hole of a face
-/// is moved by whole turns to lie within its outer loop's span of angle.
-fn align_turns(rings: &mut [Ring], period: f64) {
+/// is moved by whole turns to lie within its outer loop's span of angle
+/// (parameter `k`: 0 for u, 1 for v).
+fn align_turns(rings: &mut [Ring], period: f64, k: usize) {
     // The outer loop: the widest (a file's loops need not come outer first).
     let span = |r: &Ring| {
         let (lo, hi) = r
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| {
-                (l.min(c.0[0]), h.max(c.0[0]))
+                (l.min(c.0[k]), h.max(c.0[k]))
             });
         (lo, hi - lo)
     };
@@ -522,14 +608,14 @@ fn align_turns(rings: &mut [Ring], period: f64) {
         return;
     };
     let lo = span(&rings[outer]).0;
-    for (k, r) in rings.iter_mut().enumerate() {
-        if k == outer {
+    for (j, r) in rings.iter_mut().enumerate() {
+        if j == outer {
             continue;
         }
-        let mid = r.iter().map(|c| c.0[0]).sum::<f64>() / r.len().max(1) as f64;
+        let mid = r.iter().map(|c| c.0[k]).sum::<f64>() / r.len().max(1) as f64;
         let shift = ((lo - mid) / period).ceil() * period;
         for c in r.iter_mut() {
-            c.0[0] += shift;
+            c.0[k] += shift;
         }
     }
 }
@@ -552,6 +638,12 @@ fn snap(rings: &mut [Ring]) {
     }
 }
 
+/// The angle of an arc of radius `r` whose chord stays within `deviation`
+/// (the sagitta r(1 − cos(θ/2))), at most `MAX_ANGLE`.
+fn arc_step(deviation: f64, r: f64) -> f64 {
+    (2.0 * (1.0 - (deviation / r).min(1.0)).acos()).min(MAX_ANGLE)
+}
+
 /// Interior points on a grid fine enough for `deviation` (none on a plane).
 fn grid(chart: &Chart, rings: &[Ring], deviation: f64) -> Vec<[f64; 2]> {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -563,17 +655,32 @@ fn grid(chart: &Chart, rings: &[Ring], deviation: f64) -> Vec<[f64; 2]> {
     }
     let (nu, nv) = match chart {
         Chart::Plane { .. } => return Vec::new(),
-        Chart::Revolved { scale, .. } => {
-            // The sagitta of an arc of angle θ is r(1 − cos(θ/2)).
-            let angle = (2.0 * (1.0 - (deviation / scale).min(1.0)).acos()).min(MAX_ANGLE);
+        Chart::Revolved {
+            scale, r0, slope, ..
+        } => {
+            // The sagitta of an arc of angle θ is r(1 − cos(θ/2)); rows
+            // along the generator keep triangles from spanning more than
+            // a column's angle.
+            let r = (r0 + slope * lo[1]).abs().max((r0 + slope * hi[1]).abs());
+            let step = arc_step(deviation, r.max(1e-9)) * scale;
             (
-                ((hi[0] - lo[0]) / (angle * scale).max(1e-9)).ceil() as usize,
-                1,
+                ((hi[0] - lo[0]) / step.max(1e-9)).ceil() as usize,
+                ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(1e-9)).ceil() as usize,
+            )
+        }
+        Chart::Torus { major, minor, .. } => {
+            let (su, sv) = (
+                arc_step(deviation, major + minor) * major,
+                arc_step(deviation, *minor) * minor,
+            );
+            (
+                ((hi[0] - lo[0]) / su.max(1e-9)).ceil() as usize,
+                ((hi[1] - lo[1]) / sv.max(1e-9)).ceil() as usize,
             )
         }
         Chart::Freeform { .. } => (16, 16),
         Chart::Sphere { radius, .. } => {
-            let angle = (2.0 * (1.0 - (deviation / radius).min(1.0)).acos()).min(MAX_ANGLE);
+            let angle = arc_step(deviation, *radius);
             let step = (angle * radius).max(1e-9);
             (
                 ((hi[0] - lo[0]) / step).ceil() as usize,
@@ -641,7 +748,9 @@ enum Corner {
 
 /// Constrained Delaunay triangles of the rings (and interior points)
 /// whose centres lie inside.
-fn cdt(rings: &[Ring], steiner: &[[f64; 2]]) -> Result<Vec<[Corner; 3]>, String> {
+fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<[Corner; 3]>, String> {
+    // Triangulated with v shortened `stretch` times (`Chart::stretch`).
+    let at = |uv: &[f64; 2]| Point2::new(uv[0], uv[1] / stretch);
     let mut t: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
     let mut corner_of = std::collections::HashMap::new();
     for r in rings {
@@ -651,7 +760,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]]) -> Result<Vec<[Corner; 3]>, String>
                 return Err("a boundary point has no parameters".into());
             }
             let h = t
-                .insert(Point2::new(uv[0], uv[1]))
+                .insert(at(uv))
                 .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
             corner_of.entry(h).or_insert(Corner::Boundary(*id));
             handles.push(h);
@@ -665,7 +774,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]]) -> Result<Vec<[Corner; 3]>, String>
     }
     for (j, uv) in steiner.iter().enumerate() {
         let h = t
-            .insert(Point2::new(uv[0], uv[1]))
+            .insert(at(uv))
             .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
         corner_of.entry(h).or_insert(Corner::Steiner(j));
     }
@@ -674,7 +783,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]]) -> Result<Vec<[Corner; 3]>, String>
         let vs = f.vertices();
         let c = vs.map(|v| {
             let p = v.position();
-            [p.x, p.y]
+            [p.x, p.y * stretch]
         });
         let centre = [
             (c[0][0] + c[1][0] + c[2][0]) / 3.0,
@@ -708,6 +817,19 @@ fn lift(chart: &Chart, uv: [f64; 2]) -> Point3 {
             frame.to_world(&Vector3::new(r * a.cos(), r * a.sin(), uv[1]))
         }
         Chart::Freeform { nurbs } => nurbs.eval(uv[0], uv[1]).point,
+        Chart::Torus {
+            frame,
+            major,
+            minor,
+        } => {
+            let (a, b) = (uv[0] / major, uv[1] / minor);
+            let rho = major + minor * b.cos();
+            frame.to_world(&Vector3::new(
+                rho * a.cos(),
+                rho * a.sin(),
+                minor * b.sin(),
+            ))
+        }
         Chart::Sphere { frame, radius } => {
             let (a, b) = (uv[0] / radius, uv[1] / radius);
             frame.to_world(&Vector3::new(
