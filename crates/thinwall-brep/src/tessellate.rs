@@ -58,6 +58,10 @@ impl Mesh {
 const MAX_ANGLE: f64 = 0.15;
 /// Most segments of one edge and grid lines of one face direction.
 const MAX_EDGE_SEGMENTS: usize = 512;
+/// A boundary point this close to the axis (relative to the loop's or the
+/// sphere's radius) is a cone's apex or a sphere's pole: files place such
+/// vertices to their own precision, not on the axis exactly.
+const APEX_GAP: f64 = 1e-5;
 /// Rows along a cylinder's or cone's generator are this many columns
 /// apart (`Chart::stretch`).
 const GENERATOR_STRETCH: f64 = 4.0;
@@ -377,8 +381,12 @@ fn triangulate(
     if let Some(period) = chart.periodic_v() {
         align_turns(&mut rings, period, 1);
     }
+    let grid = Grid::of(chart, &rings, deviation);
+    if let Some(g) = &grid {
+        g.split_poles(&mut rings);
+    }
     snap(&mut rings);
-    let steiner = grid(chart, &rings, deviation);
+    let steiner = grid.map_or_else(Vec::new, |g| g.points(&rings));
     let tris = cdt(&rings, &steiner, chart.stretch())?;
     // Interior points become points of the mesh.
     let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
@@ -386,26 +394,34 @@ fn triangulate(
         ids.push(points.len() as u32);
         points.push(lift(chart, *uv));
     }
+    let mut out: Vec<[u32; 3]> = tris
+        .iter()
+        .map(|t| {
+            t.map(|c| match c {
+                Corner::Boundary(i) => i,
+                Corner::Steiner(j) => ids[j],
+            })
+        })
+        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+        .collect();
+    // The triangles all run one way in the parameter plane; which way is
+    // out of the material is decided once for the face, by their 3-D
+    // normals against the face's weighted by area (a sliver at a pole
+    // has no reliable normal of its own).
     let outward = face_normal(face);
-    let mut out = Vec::with_capacity(tris.len());
-    for t in tris {
-        let id = |k: usize| match t[k] {
-            Corner::Boundary(i) => i,
-            Corner::Steiner(j) => ids[j],
-        };
-        let mut tri = [id(0), id(1), id(2)];
-        if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
-            continue;
+    let agreement: f64 = out
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| points[i as usize]);
+            let n = (b - a).cross(&(c - a));
+            let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+            outward(&centre).map_or(0.0, |o| n.dot(&o))
+        })
+        .sum();
+    if agreement < 0.0 {
+        for t in &mut out {
+            t.swap(1, 2);
         }
-        let [a, b, c] = tri.map(|i| points[i as usize]);
-        let n = (b - a).cross(&(c - a));
-        let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
-        if let Some(o) = outward(&centre) {
-            if n.dot(&o) < 0.0 {
-                tri.swap(1, 2);
-            }
-        }
-        out.push(tri);
     }
     Ok(out)
 }
@@ -433,7 +449,28 @@ fn map_loop(
     hint: &mut Option<(f64, f64)>,
 ) -> Result<(Ring, i32), String> {
     let mut ring: Ring = Vec::with_capacity(ids.len());
-    for &i in ids {
+    // Distances from the axis, for the apex (pole) test.
+    let rho: Vec<f64> = match chart {
+        Chart::Revolved { frame, .. } | Chart::Sphere { frame, .. } => ids
+            .iter()
+            .map(|&i| {
+                let l = frame.to_local(&points[i as usize]);
+                l.x.hypot(l.y)
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    let extent = rho.iter().copied().fold(0.0, f64::max);
+    // Angles are followed from point to point, which fails across an apex
+    // (the loop may turn by up to half a turn there): start right after
+    // one, so the only jump is the loop's closing.
+    let start = (0..rho.len())
+        .find(|&k| {
+            rho[(k + rho.len() - 1) % rho.len()] < APEX_GAP * extent && rho[k] >= APEX_GAP * extent
+        })
+        .unwrap_or(0);
+    let ids: Vec<u32> = ids[start..].iter().chain(&ids[..start]).copied().collect();
+    for &i in &ids {
         let p = points[i as usize];
         let uv = match chart {
             Chart::Plane { frame } => {
@@ -447,7 +484,7 @@ fn map_loop(
                     let period = TAU * scale;
                     a += ((prev[0] - a) / period).round() * period;
                 }
-                if l.x.hypot(l.y) < 1e-9 * scale {
+                if l.x.hypot(l.y) < APEX_GAP * extent {
                     // A cone's apex: no angle of its own (set below).
                     a = f64::NAN;
                 }
@@ -461,7 +498,7 @@ fn map_loop(
                     a += ((prev[0] - a) / period).round() * period;
                 }
                 let lat = (l.z / radius).clamp(-1.0, 1.0).asin() * radius;
-                if l.x.hypot(l.y) < 1e-9 * radius {
+                if l.x.hypot(l.y) < APEX_GAP * radius {
                     // A pole: no longitude of its own (set below).
                     a = f64::NAN;
                 }
@@ -644,65 +681,116 @@ fn arc_step(deviation: f64, r: f64) -> f64 {
     (2.0 * (1.0 - (deviation / r).min(1.0)).acos()).min(MAX_ANGLE)
 }
 
-/// Interior points on a grid fine enough for `deviation` (none on a plane).
-fn grid(chart: &Chart, rings: &[Ring], deviation: f64) -> Vec<[f64; 2]> {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for c in rings.iter().flatten() {
-        for k in 0..2 {
-            lo[k] = lo[k].min(c.0[k]);
-            hi[k] = hi[k].max(c.0[k]);
-        }
-    }
-    let (nu, nv) = match chart {
-        Chart::Plane { .. } => return Vec::new(),
-        Chart::Revolved {
-            scale, r0, slope, ..
-        } => {
-            // The sagitta of an arc of angle θ is r(1 − cos(θ/2)); rows
-            // along the generator keep triangles from spanning more than
-            // a column's angle.
-            let r = (r0 + slope * lo[1]).abs().max((r0 + slope * hi[1]).abs());
-            let step = arc_step(deviation, r.max(1e-9)) * scale;
-            (
-                ((hi[0] - lo[0]) / step.max(1e-9)).ceil() as usize,
-                ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(1e-9)).ceil() as usize,
-            )
-        }
-        Chart::Torus { major, minor, .. } => {
-            let (su, sv) = (
-                arc_step(deviation, major + minor) * major,
-                arc_step(deviation, *minor) * minor,
-            );
-            (
-                ((hi[0] - lo[0]) / su.max(1e-9)).ceil() as usize,
-                ((hi[1] - lo[1]) / sv.max(1e-9)).ceil() as usize,
-            )
-        }
-        Chart::Freeform { .. } => (16, 16),
-        Chart::Sphere { radius, .. } => {
-            let angle = arc_step(deviation, *radius);
-            let step = (angle * radius).max(1e-9);
-            (
-                ((hi[0] - lo[0]) / step).ceil() as usize,
-                ((hi[1] - lo[1]) / step).ceil() as usize,
-            )
-        }
-    };
-    let (nu, nv) = (nu.clamp(1, MAX_GRID), nv.clamp(1, MAX_GRID));
-    let mut out = Vec::new();
-    for i in 1..nu {
-        for j in 0..=nv {
-            let u = lo[0] + (hi[0] - lo[0]) * i as f64 / nu as f64;
-            let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64;
-            // Strictly inside, away from the boundary.
-            if inside(rings, [u, v])
-                && clear_of(rings, [u, v], 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]))
-            {
-                out.push([u, v]);
+/// The parameter box of a face's rings and its columns and rows: fine
+/// enough for `deviation` (none on a plane).
+struct Grid {
+    lo: [f64; 2],
+    hi: [f64; 2],
+    nu: usize,
+    nv: usize,
+}
+
+impl Grid {
+    fn of(chart: &Chart, rings: &[Ring], deviation: f64) -> Option<Grid> {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for c in rings.iter().flatten() {
+            for k in 0..2 {
+                lo[k] = lo[k].min(c.0[k]);
+                hi[k] = hi[k].max(c.0[k]);
             }
         }
+        let (nu, nv) = match chart {
+            Chart::Plane { .. } => return None,
+            Chart::Revolved {
+                scale, r0, slope, ..
+            } => {
+                // The sagitta of an arc of angle θ is r(1 − cos(θ/2)); rows
+                // along the generator keep triangles from spanning more than
+                // a column's angle.
+                let r = (r0 + slope * lo[1]).abs().max((r0 + slope * hi[1]).abs());
+                let step = arc_step(deviation, r.max(1e-9)) * scale;
+                (
+                    ((hi[0] - lo[0]) / step.max(1e-9)).ceil() as usize,
+                    ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(1e-9)).ceil() as usize,
+                )
+            }
+            Chart::Torus { major, minor, .. } => {
+                let (su, sv) = (
+                    arc_step(deviation, major + minor) * major,
+                    arc_step(deviation, *minor) * minor,
+                );
+                (
+                    ((hi[0] - lo[0]) / su.max(1e-9)).ceil() as usize,
+                    ((hi[1] - lo[1]) / sv.max(1e-9)).ceil() as usize,
+                )
+            }
+            Chart::Freeform { .. } => (16, 16),
+            Chart::Sphere { radius, .. } => {
+                let angle = arc_step(deviation, *radius);
+                let step = (angle * radius).max(1e-9);
+                (
+                    ((hi[0] - lo[0]) / step).ceil() as usize,
+                    ((hi[1] - lo[1]) / step).ceil() as usize,
+                )
+            }
+        };
+        Some(Grid {
+            lo,
+            hi,
+            nu: nu.clamp(1, MAX_GRID),
+            nv: nv.clamp(1, MAX_GRID),
+        })
     }
-    out
+
+    fn u(&self, i: usize) -> f64 {
+        self.lo[0] + (self.hi[0] - self.lo[0]) * i as f64 / self.nu as f64
+    }
+
+    /// A pole's (apex's) line runs along u with one point id: it gets a
+    /// corner at every column, so the triangles at the pole fan out
+    /// column by column instead of reaching across the face (those would
+    /// land on top of each other, the pole being one point).
+    fn split_poles(&self, rings: &mut [Ring]) {
+        for r in rings.iter_mut() {
+            let mut out: Ring = Vec::with_capacity(r.len());
+            for k in 0..r.len() {
+                let (a, b) = (r[k], r[(k + 1) % r.len()]);
+                out.push(a);
+                if a.1 != b.1 || a.0[1] != b.0[1] {
+                    continue;
+                }
+                let (lo, hi) = (a.0[0].min(b.0[0]), a.0[0].max(b.0[0]));
+                let mut cols: Vec<f64> = (0..=self.nu)
+                    .map(|i| self.u(i))
+                    .filter(|&u| u > lo && u < hi)
+                    .collect();
+                if b.0[0] < a.0[0] {
+                    cols.reverse();
+                }
+                out.extend(cols.into_iter().map(|u| ([u, a.0[1]], a.1)));
+            }
+            *r = out;
+        }
+    }
+
+    /// Interior points, strictly inside the rings and clear of them.
+    fn points(&self, rings: &[Ring]) -> Vec<[f64; 2]> {
+        let (lo, hi, nu, nv) = (self.lo, self.hi, self.nu, self.nv);
+        let mut out = Vec::new();
+        for i in 1..nu {
+            for j in 0..=nv {
+                let u = self.u(i);
+                let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64;
+                // Strictly inside, away from the boundary.
+                if inside(rings, [u, v])
+                    && clear_of(rings, [u, v], 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]))
+                {
+                    out.push([u, v]);
+                }
+            }
+        }
+        out
+    }
 }
 
 fn inside(rings: &[Ring], p: [f64; 2]) -> bool {
@@ -824,11 +912,7 @@ fn lift(chart: &Chart, uv: [f64; 2]) -> Point3 {
         } => {
             let (a, b) = (uv[0] / major, uv[1] / minor);
             let rho = major + minor * b.cos();
-            frame.to_world(&Vector3::new(
-                rho * a.cos(),
-                rho * a.sin(),
-                minor * b.sin(),
-            ))
+            frame.to_world(&Vector3::new(rho * a.cos(), rho * a.sin(), minor * b.sin()))
         }
         Chart::Sphere { frame, radius } => {
             let (a, b) = (uv[0] / radius, uv[1] / radius);
