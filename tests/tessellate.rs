@@ -1,50 +1,169 @@
-//! Triangles of every face (for reports): watertight along shared edges
-//! (every triangle side is used by exactly two triangles, in opposite
-//! directions, on a closed solid) and of the faces' area within 0.5 %.
+//! Triangles of every face (for the reports) on every shared part and
+//! every fixture: watertight along shared edges (every triangle side used
+//! by exactly two triangles, in opposite directions, on a closed solid)
+//! and of each face's exact area within 0.5 %.
+//!
+//! Where the file itself is defective the test says how, from the part's
+//! topology and geometry, independently of the tessellation:
+//! - an edge used by one face only (the file's shell is open there) has
+//!   no twin side;
+//! - a loop that does not close in the file (an edge ends at another
+//!   vertex than the next starts at) is closed by a chord, so its face and
+//!   the sides along it cannot match, and its exact area is undefined;
+//! - a vertex off its edge's curve by the file's own gap moves the face's
+//!   outline by that much: the area may differ by up to gap × perimeter.
 
 mod common;
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use thinwall_analysis::{PartAnalysis, Setup};
-use thinwall_brep::tessellate::tessellate;
+use thinwall_brep::tessellate::{open_loop, tessellate, Mesh};
+use thinwall_brep::{FaceId, Part};
 
 fn parts() -> Vec<std::path::PathBuf> {
+    let data = common::shared_data();
     let mut v = common::thin_walled_parts();
-    let mut mfcad = common::step_files(&common::shared_data().join("mfcad/train"));
-    mfcad.truncate(40);
-    v.extend(mfcad);
+    for dir in ["mfcad/train", "mfcadpp_gen", "mfinstseg", "nist"] {
+        v.extend(common::step_files(&data.join(dir)));
+    }
     v
 }
 
+/// The largest distance between a vertex of the face and the end of its
+/// edge's curve there (the file's gap), and the face's perimeter in the
+/// mesh.
+fn gap_and_perimeter(part: &Part, mesh: &Mesh, f: FaceId) -> (f64, f64) {
+    let (mut gap, mut perimeter) = (0.0f64, 0.0);
+    for &l in &part.face(f).loops {
+        for ce in &part.loop_(l).coedges {
+            let e = part.edge(ce.edge);
+            for w in mesh.edges[ce.edge.index()].windows(2) {
+                perimeter += (mesh.points[w[1] as usize] - mesh.points[w[0] as usize]).norm();
+            }
+            let Some(c) = &e.nurbs else { continue };
+            let spans = c.spans();
+            if let (Some(first), Some(last)) = (spans.first(), spans.last()) {
+                gap = gap.max((c.point(first.0) - part.vertex(e.start).point).norm());
+                gap = gap.max((c.point(last.1) - part.vertex(e.end).point).norm());
+            }
+        }
+    }
+    (gap, perimeter)
+}
+
+/// The chords closing loops the file leaves open: (end, start) vertex
+/// (point) ids of each gap.
+fn loop_gaps(part: &Part) -> Vec<(u32, u32)> {
+    let mut gaps = Vec::new();
+    for f in part.face_ids() {
+        for &l in &part.face(f).loops {
+            let coedges = &part.loop_(l).coedges;
+            let ends = |k: usize| {
+                let ce = &coedges[k];
+                let e = part.edge(ce.edge);
+                if ce.forward {
+                    (e.start.0, e.end.0)
+                } else {
+                    (e.end.0, e.start.0)
+                }
+            };
+            for k in 0..coedges.len() {
+                let (end, start) = (ends(k).1, ends((k + 1) % coedges.len()).0);
+                if end != start {
+                    gaps.push((end, start));
+                }
+            }
+        }
+    }
+    gaps
+}
+
+/// Edges the file's shell uses once, and edges of faces with open loops.
+fn defective_edges(part: &Part) -> HashSet<u32> {
+    let mut uses: HashMap<u32, usize> = HashMap::new();
+    let mut bad = HashSet::new();
+    for f in part.face_ids() {
+        let face = part.face(f);
+        let open = open_loop(part, face).is_some();
+        for &l in &face.loops {
+            for ce in &part.loop_(l).coedges {
+                *uses.entry(ce.edge.0).or_default() += 1;
+                if open {
+                    bad.insert(ce.edge.0);
+                }
+            }
+        }
+    }
+    bad.extend(uses.into_iter().filter(|&(_, n)| n == 1).map(|(e, _)| e));
+    bad
+}
+
 #[test]
-fn every_part_is_watertight_and_of_its_area() {
-    let (mut faces, mut parts_done) = (0, 0);
+fn every_shared_part_is_watertight_and_of_its_area() {
+    let (mut faces, mut parts_done, mut open_loops, mut by_gap) = (0, 0, 0, 0);
     let mut worst: f64 = 0.0;
     for path in parts() {
         let name = path.display().to_string();
-        let (part, _) = thinwall_step::read_file(&path).unwrap();
+        let part = match thinwall_step::read_file(&path) {
+            Ok((part, _)) => part,
+            // NIST FTC 08 holds tessellated geometry only: nothing to draw.
+            Err(e) => {
+                assert_eq!(e.code(), "no_brep", "{name}: {e}");
+                assert!(e.to_string().contains("tessellated geometry only"));
+                continue;
+            }
+        };
         let size = part.bounding_box().diagonal();
         let mesh = tessellate(&part, 1e-3 * size);
         let a = PartAnalysis::new(&part, Setup::default());
         for fm in &mesh.faces {
+            let face = part.face(fm.face);
+            let id = face.step_id;
             assert!(
-                fm.issue.is_none(),
-                "{name}: face #{}: {:?}",
-                part.face(fm.face).step_id,
+                !fm.triangles.is_empty(),
+                "{name}: face #{id}: {:?}",
                 fm.issue
             );
+            if let Some(why) = open_loop(&part, face) {
+                assert_eq!(fm.issue.as_deref(), Some(why.as_str()));
+                open_loops += 1;
+                continue;
+            }
+            assert!(fm.issue.is_none(), "{name}: face #{id}: {:?}", fm.issue);
             let want = a.props(fm.face).area;
             let got = mesh.face_area(fm);
-            let err = (got - want).abs() / want.max(1e-9);
-            worst = worst.max(err);
+            let err = (got - want).abs();
+            let (gap, perimeter) = gap_and_perimeter(&part, &mesh, fm.face);
             assert!(
-                err <= 5e-3,
-                "{name}: face #{} area {got} want {want}",
-                part.face(fm.face).step_id
+                err <= 5e-3 * want + gap * perimeter,
+                "{name}: face #{id} area {got} want {want} (file gap {gap:.1e} mm)"
             );
+            if err > 5e-3 * want {
+                by_gap += 1;
+            } else {
+                worst = worst.max(err / want.max(1e-300));
+            }
             faces += 1;
         }
-        // Closed: each directed side once, its reverse once.
+        // Closed: each directed side once, its reverse once, but along the
+        // file's own defects.
+        let defective: HashSet<(u32, u32)> = defective_edges(&part)
+            .into_iter()
+            .flat_map(|e| {
+                mesh.edges[e as usize]
+                    .windows(2)
+                    .map(|w| (w[0], w[1]))
+                    .collect::<Vec<_>>()
+            })
+            .flat_map(|(a, b)| [(a, b), (b, a)])
+            .collect();
+        // Around a gap the file's faces do not meet: sides between the
+        // gaps' vertices (the chords and what the missing edge would have
+        // matched).
+        let gap_vertices: HashSet<u32> = loop_gaps(&part)
+            .into_iter()
+            .flat_map(|(a, b)| [a, b])
+            .collect();
         let mut sides: HashMap<(u32, u32), i32> = HashMap::new();
         for fm in &mesh.faces {
             for t in &fm.triangles {
@@ -54,6 +173,11 @@ fn every_part_is_watertight_and_of_its_area() {
             }
         }
         for (&(a, b), &n) in &sides {
+            if defective.contains(&(a, b))
+                || (gap_vertices.contains(&a) && gap_vertices.contains(&b))
+            {
+                continue;
+            }
             assert_eq!(n, 1, "{name}: side {a}-{b} used {n} times one way");
             assert_eq!(
                 sides.get(&(b, a)),
@@ -63,5 +187,9 @@ fn every_part_is_watertight_and_of_its_area() {
         }
         parts_done += 1;
     }
-    eprintln!("{parts_done} parts, {faces} faces tessellated; worst face area error {worst:.2e}");
+    assert!(parts_done > 450, "{parts_done} parts");
+    eprintln!(
+        "{parts_done} parts, {faces} faces within 0.5 % (worst {worst:.2e}); \
+         {by_gap} more within the file's vertex gap; {open_loops} face(s) with loops the file leaves open"
+    );
 }

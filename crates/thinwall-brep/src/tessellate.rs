@@ -32,7 +32,9 @@ pub struct Mesh {
 }
 
 /// One face's triangles (indices into `Mesh::points`, counter-clockwise
-/// seen from outside the material), or why it has none.
+/// seen from outside the material), or why it has none; `issue` also
+/// says where a face is drawn from a defective outline (a loop the file
+/// leaves open).
 #[derive(Clone, Debug)]
 pub struct FaceMesh {
     pub face: FaceId,
@@ -63,22 +65,82 @@ const MAX_EDGE_SEGMENTS: usize = 512;
 /// vertices to their own precision, not on the axis exactly.
 const APEX_GAP: f64 = 1e-5;
 /// Rows along a cylinder's or cone's generator are this many columns
-/// apart (`Chart::stretch`).
+/// apart: the surface is straight that way.
 const GENERATOR_STRETCH: f64 = 4.0;
 const MAX_GRID: usize = 200;
+/// Most cells of one face's grid (columns × rows), and of one direction:
+/// a thin blend around a large circle needs many columns and few rows.
+const MAX_CELLS: usize = 250_000;
+const MAX_LINES: usize = 4096;
+/// A face's deviation is at most this part of its smallest radius
+/// (`face_deviation`).
+const NARROW_FACE: f64 = 0.002;
+/// A face's deviation is at most this part of its width (2·area /
+/// perimeter), measured on a first tessellation.
+const NARROW_WIDTH: f64 = 0.002;
 
 /// Tessellate every face of `part` to within `deviation` mm of its
 /// surface (chords of curved edges, triangles across curved faces).
+///
+/// A face narrower than a few deviations (a thin blend, a long sliver)
+/// would get chords as deep as it is wide: where the first pass finds one
+/// (width 2·area / perimeter), the faces concerned and their edges are
+/// made finer and the part is tessellated again.
 pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
     let deviation = deviation.max(1e-9);
+    let by_surface: Vec<f64> = part
+        .face_ids()
+        .map(|f| face_deviation(&part.face(f).surface, deviation))
+        .collect();
+    let first = tessellate_with(part, &by_surface);
+    let by_width: Vec<f64> = first
+        .faces
+        .iter()
+        .zip(&by_surface)
+        .map(|(fm, &d)| {
+            let perimeter: f64 = part
+                .face(fm.face)
+                .loops
+                .iter()
+                .flat_map(|&l| &part.loop_(l).coedges)
+                .flat_map(|ce| first.edges[ce.edge.index()].windows(2))
+                .map(|w| (first.points[w[1] as usize] - first.points[w[0] as usize]).norm())
+                .sum();
+            let width = 2.0 * first.face_area(fm) / perimeter.max(1e-300);
+            if width > 0.0 {
+                d.min(NARROW_WIDTH * width).max(1e-9)
+            } else {
+                d
+            }
+        })
+        .collect();
+    if by_width == by_surface {
+        return first;
+    }
+    tessellate_with(part, &by_width)
+}
+
+/// Tessellate with a deviation per face (by `FaceId::index()`); an edge is
+/// as fine as the finest face it bounds.
+fn tessellate_with(part: &Part, face_deviation: &[f64]) -> Mesh {
+    let mut edge_deviation = vec![f64::INFINITY; part.edges.len()];
+    for f in part.face_ids() {
+        for &l in &part.face(f).loops {
+            for ce in &part.loop_(l).coedges {
+                let d = &mut edge_deviation[ce.edge.index()];
+                *d = d.min(face_deviation[f.index()]);
+            }
+        }
+    }
     let mut points: Vec<Point3> = part.vertices.iter().map(|v| v.point).collect();
     let edge_points: Vec<Vec<u32>> = part
         .edges
         .iter()
-        .map(|e| {
+        .zip(&edge_deviation)
+        .map(|(e, &deviation)| {
             let mut ids = vec![e.start.0];
             if let Some(c) = &e.nurbs {
-                for t in interior_params(c, deviation) {
+                for t in interior_params(c, deviation.min(1e9)) {
                     ids.push(points.len() as u32);
                     points.push(c.point(t));
                 }
@@ -93,11 +155,25 @@ pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
         edges: Vec::new(),
     };
     for f in part.face_ids() {
-        let fm = face_mesh(part, f, &edge_points, deviation, &mut mesh.points);
+        let d = face_deviation[f.index()];
+        let fm = face_mesh(part, f, &edge_points, d, &mut mesh.points);
         mesh.faces.push(fm);
     }
     mesh.edges = edge_points;
     mesh
+}
+
+/// A face's own deviation: at most a small part of its surface's
+/// smallest radius. A blend of radius 0.1 mm along a 60 mm circle is
+/// narrower than the part's deviation; chords of that circle within the
+/// part's deviation would fold the blend's triangles across it.
+fn face_deviation(s: &Surface, deviation: f64) -> f64 {
+    let radius = match s {
+        Surface::Cylinder { radius, .. } | Surface::Sphere { radius, .. } => *radius,
+        Surface::Torus { minor_radius, .. } => *minor_radius,
+        _ => return deviation,
+    };
+    deviation.min(NARROW_FACE * radius).max(1e-9)
 }
 
 /// Parameters inside an edge curve where its chords stay within
@@ -109,16 +185,22 @@ fn interior_params(c: &NurbsCurve, deviation: f64) -> Vec<f64> {
         let spans = c.spans();
         return spans.iter().skip(1).map(|s| s.0).collect();
     }
-    let mut out = Vec::new();
     let spans = c.spans();
-    for (k, (a, b)) in spans.iter().enumerate() {
-        if k > 0 {
-            out.push(*a);
+    let mut deviation = deviation;
+    loop {
+        let mut out = Vec::new();
+        for (k, (a, b)) in spans.iter().enumerate() {
+            if k > 0 {
+                out.push(*a);
+            }
+            split(c, *a, *b, deviation, 0, &mut out);
         }
-        split(c, *a, *b, deviation, 0, &mut out);
+        // Too many: coarser along the whole edge (never a cut-off tail).
+        if out.len() <= MAX_EDGE_SEGMENTS || deviation > 1e6 {
+            return out;
+        }
+        deviation *= 2.0;
     }
-    out.truncate(MAX_EDGE_SEGMENTS);
-    out
 }
 
 fn split(c: &NurbsCurve, a: f64, b: f64, deviation: f64, depth: u32, out: &mut Vec<f64>) {
@@ -234,16 +316,6 @@ impl Chart<'_> {
         }
     }
 
-    /// How much shorter v is made for the triangulation: along a
-    /// cylinder's or cone's generator the surface is straight, so
-    /// triangles may be longer that way than across it.
-    fn stretch(&self) -> f64 {
-        match self {
-            Chart::Revolved { .. } => GENERATOR_STRETCH,
-            _ => 1.0,
-        }
-    }
-
     /// Where a face bounded by one loop around the axis closes: the pole
     /// (or apex) on the side `up` (larger v) or below, as v.
     fn cap(&self, up: bool) -> Option<f64> {
@@ -281,10 +353,46 @@ fn face_mesh(
         return out;
     };
     match triangulate(part, face, &chart, edge_points, deviation, points) {
-        Ok(t) => out.triangles = t,
+        Ok(t) => {
+            out.triangles = t;
+            // Drawn, but its outline is the file's: where a loop does not
+            // close, the triangles close it with a chord.
+            out.issue = open_loop(part, face);
+        }
         Err(why) => out.issue = Some(why),
     }
     out
+}
+
+/// Where one of the face's loops does not close in the file: an edge
+/// ending at another vertex than the next one starts at.
+pub fn open_loop(part: &Part, face: &Face) -> Option<String> {
+    for &l in &face.loops {
+        let coedges = &part.loop_(l).coedges;
+        let ends = |k: usize| {
+            let ce = &coedges[k];
+            let e = part.edge(ce.edge);
+            if ce.forward {
+                (e.start, e.end)
+            } else {
+                (e.end, e.start)
+            }
+        };
+        for k in 0..coedges.len() {
+            let next = (k + 1) % coedges.len();
+            let (end, start) = (ends(k).1, ends(next).0);
+            if end != start {
+                return Some(format!(
+                    "loop does not close in the file: edge #{} ends at vertex #{}, edge #{} starts at vertex #{}",
+                    part.edge(coedges[k].edge).step_id,
+                    part.vertex(end).step_id,
+                    part.edge(coedges[next].edge).step_id,
+                    part.vertex(start).step_id
+                ));
+            }
+        }
+    }
+    None
 }
 
 /// The loops of a face as point ids, in order (each edge's points once).
@@ -292,15 +400,25 @@ fn loop_ids(part: &Part, face: &Face, edge_points: &[Vec<u32>]) -> Vec<Vec<u32>>
     face.loops
         .iter()
         .map(|&l| {
+            let runs: Vec<Vec<u32>> = part
+                .loop_(l)
+                .coedges
+                .iter()
+                .map(|ce| {
+                    let mut run = edge_points[ce.edge.index()].clone();
+                    if !ce.forward {
+                        run.reverse();
+                    }
+                    run
+                })
+                .collect();
             let mut ids = Vec::new();
-            for ce in &part.loop_(l).coedges {
-                let pts = &edge_points[ce.edge.index()];
-                let mut run: Vec<u32> = pts.clone();
-                if !ce.forward {
-                    run.reverse();
-                }
-                run.pop();
-                ids.extend(run);
+            for (k, run) in runs.iter().enumerate() {
+                // A run's last point is the next run's first, but where the
+                // file leaves the loop open (`open_loop`).
+                let next = &runs[(k + 1) % runs.len()];
+                let shared = run.last() == next.first();
+                ids.extend(&run[..run.len() - usize::from(shared)]);
             }
             ids
         })
@@ -334,6 +452,8 @@ fn triangulate(
             wrapping.push(ring);
         }
     }
+    // Where a band or a cap is cut open: (ring, corner the cut starts at).
+    let mut cut = None;
     match wrapping.len() {
         0 => {}
         1 => {
@@ -348,6 +468,7 @@ fn triangulate(
                 .ok_or_else(|| "one loop goes round a surface with no pole there".to_string())?;
             let pole = points.len() as u32;
             points.push(lift(chart, [ring[0].0[0], v]));
+            cut = Some((rings.len(), ring.len()));
             rings.push(cap(ring, v, pole, chart.periodic().unwrap_or(TAU)));
         }
         2 => {
@@ -367,6 +488,7 @@ fn triangulate(
                     c.0[1] += turns * period;
                 }
             }
+            cut = Some((rings.len(), wrapping[0].len()));
             rings.push(band(
                 &wrapping[0],
                 &wrapping[1],
@@ -384,10 +506,14 @@ fn triangulate(
     let grid = Grid::of(chart, &rings, deviation);
     if let Some(g) = &grid {
         g.split_poles(&mut rings);
+        if let Some((r, k)) = cut {
+            g.split_cut(chart, &mut rings[r], k, points);
+        }
     }
     snap(&mut rings);
-    let steiner = grid.map_or_else(Vec::new, |g| g.points(&rings));
-    let tris = cdt(&rings, &steiner, chart.stretch())?;
+    let steiner = grid.as_ref().map_or_else(Vec::new, |g| g.points(&rings));
+    let stretch = grid.as_ref().map_or(1.0, Grid::stretch);
+    let tris = cdt(&rings, &steiner, stretch)?;
     // Interior points become points of the mesh.
     let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
     for uv in &steiner {
@@ -675,6 +801,69 @@ fn snap(rings: &mut [Ring]) {
     }
 }
 
+/// Cells of a free-form face's parameter box fine enough for
+/// `deviation`: the surface sampled on a coarse grid (four samples per
+/// knot span, at least 16), the largest second difference along each
+/// direction (the sagitta of a chord over two samples) scaled to the cell
+/// size whose chords stay within `deviation` (a sagitta grows with the
+/// square of the chord).
+fn freeform_cells(
+    nurbs: &thinwall_geom::NurbsSurface,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    deviation: f64,
+) -> (usize, usize) {
+    let spans = |knots: &[f64], a: f64, b: f64| {
+        let mut inner: Vec<f64> = knots.iter().copied().filter(|&k| k > a && k < b).collect();
+        inner.dedup();
+        inner.len() + 1
+    };
+    let nu = (4 * spans(&nurbs.knots_u, lo[0], hi[0])).clamp(16, MAX_GRID);
+    let nv = (4 * spans(&nurbs.knots_v, lo[1], hi[1])).clamp(16, MAX_GRID);
+    let at = |i: usize, j: usize| {
+        let u = lo[0] + (hi[0] - lo[0]) * i as f64 / nu as f64;
+        let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv as f64;
+        nurbs.eval(u, v).point
+    };
+    let grid: Vec<Vec<Point3>> = (0..=nu)
+        .map(|i| (0..=nv).map(|j| at(i, j)).collect())
+        .collect();
+    let (mut su, mut sv) = (0.0f64, 0.0f64);
+    for i in 0..=nu {
+        for j in 0..=nv {
+            if i > 0 && i < nu {
+                let d = grid[i - 1][j].coords - 2.0 * grid[i][j].coords + grid[i + 1][j].coords;
+                su = su.max(0.5 * d.norm());
+            }
+            if j > 0 && j < nv {
+                let d = grid[i][j - 1].coords - 2.0 * grid[i][j].coords + grid[i][j + 1].coords;
+                sv = sv.max(0.5 * d.norm());
+            }
+        }
+    }
+    // Chords over two samples have sagitta `sag`; over one cell of n,
+    // sag · (samples / 2n)².
+    let cells = |sag: f64, samples: usize| {
+        ((0.5 * samples as f64 * (sag / deviation).sqrt()).ceil() as usize).max(samples / 2)
+    };
+    (cells(su, nu), cells(sv, nv))
+}
+
+/// Columns and rows within `MAX_LINES` each and `MAX_CELLS` together,
+/// both scaled alike where they are not.
+fn cap_cells(nu: usize, nv: usize) -> (usize, usize) {
+    let (nu, nv) = (nu.clamp(1, MAX_LINES), nv.clamp(1, MAX_LINES));
+    let cells = (nu * nv) as f64;
+    if cells <= MAX_CELLS as f64 {
+        return (nu, nv);
+    }
+    let k = (MAX_CELLS as f64 / cells).sqrt();
+    (
+        ((nu as f64 * k).floor() as usize).max(1),
+        ((nv as f64 * k).floor() as usize).max(1),
+    )
+}
+
 /// The angle of an arc of radius `r` whose chord stays within `deviation`
 /// (the sagitta r(1 − cos(θ/2))), at most `MAX_ANGLE`.
 fn arc_step(deviation: f64, r: f64) -> f64 {
@@ -724,7 +913,7 @@ impl Grid {
                     ((hi[1] - lo[1]) / sv.max(1e-9)).ceil() as usize,
                 )
             }
-            Chart::Freeform { .. } => (16, 16),
+            Chart::Freeform { nurbs } => freeform_cells(nurbs, lo, hi, deviation),
             Chart::Sphere { radius, .. } => {
                 let angle = arc_step(deviation, *radius);
                 let step = (angle * radius).max(1e-9);
@@ -737,9 +926,23 @@ impl Grid {
         Some(Grid {
             lo,
             hi,
-            nu: nu.clamp(1, MAX_GRID),
-            nv: nv.clamp(1, MAX_GRID),
+            nu: cap_cells(nu, nv).0,
+            nv: cap_cells(nu, nv).1,
         })
+    }
+
+    /// Rows over columns apart: the triangulation shortens v by this, so
+    /// the grid is square there and Delaunay triangles join neighbours
+    /// (rows along a cylinder are several columns apart; a torus's tube
+    /// is much finer than its sweep in parameter units).
+    fn stretch(&self) -> f64 {
+        let du = (self.hi[0] - self.lo[0]) / self.nu as f64;
+        let dv = (self.hi[1] - self.lo[1]) / self.nv as f64;
+        if du > 0.0 && dv > 0.0 {
+            dv / du
+        } else {
+            1.0
+        }
     }
 
     fn u(&self, i: usize) -> f64 {
@@ -771,6 +974,40 @@ impl Grid {
             }
             *r = out;
         }
+    }
+
+    /// A band or a cap is cut open along a line of the surface, which the
+    /// ring runs twice: from corner `k` to the next, and back along the
+    /// closing side one turn over. Both get a corner at every row (the
+    /// same new points), so no triangle spans the cut's whole length.
+    fn split_cut(&self, chart: &Chart, ring: &mut Ring, k: usize, points: &mut Vec<Point3>) {
+        let n = ring.len();
+        if k + 1 >= n {
+            return;
+        }
+        let (p, q) = (ring[k].0, ring[k + 1].0);
+        let row = (self.hi[1] - self.lo[1]) / self.nv.max(1) as f64;
+        let m = ((q[1] - p[1]).abs() / row.max(1e-12)).ceil() as usize;
+        if m < 2 {
+            return;
+        }
+        let along: Vec<([f64; 2], u32)> = (1..m)
+            .map(|j| {
+                let t = j as f64 / m as f64;
+                let uv = [p[0] + (q[0] - p[0]) * t, p[1] + (q[1] - p[1]) * t];
+                points.push(lift(chart, uv));
+                (uv, points.len() as u32 - 1)
+            })
+            .collect();
+        // The closing side: the same line one turn back, the other way.
+        let shift = ring[0].0[0] - ring[k].0[0];
+        let back: Vec<([f64; 2], u32)> = along
+            .iter()
+            .rev()
+            .map(|&(uv, id)| ([uv[0] + shift, uv[1]], id))
+            .collect();
+        ring.extend(back);
+        ring.splice(k + 1..k + 1, along);
     }
 
     /// Interior points, strictly inside the rings and clear of them.
@@ -837,7 +1074,7 @@ enum Corner {
 /// Constrained Delaunay triangles of the rings (and interior points)
 /// whose centres lie inside.
 fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<[Corner; 3]>, String> {
-    // Triangulated with v shortened `stretch` times (`Chart::stretch`).
+    // Triangulated with v shortened `stretch` times (`Grid::stretch`).
     let at = |uv: &[f64; 2]| Point2::new(uv[0], uv[1] / stretch);
     let mut t: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
     let mut corner_of = std::collections::HashMap::new();

@@ -14,11 +14,7 @@ use std::time::Instant;
 use thinwall_report::expect::{compare, CheckTolerance};
 
 /// What `batch` writes per part.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum BatchFormat {
-    Json,
-    Text,
-}
+pub use crate::render::RecognitionFormat as BatchFormat;
 
 /// One line of the summary (`summary.jsonl`).
 #[derive(Debug, Serialize)]
@@ -172,11 +168,9 @@ fn recognize(b: &Batch, path: &Path, name: &str) -> Result<Done, Failure> {
     for f in &report.stiffness_features {
         *features.entry(f.feature.kind.to_string()).or_insert(0) += 1;
     }
-    let (text, ext) = match b.format {
-        BatchFormat::Json => (report.to_json(), "json"),
-        BatchFormat::Text => (report.to_text(), "txt"),
-    };
-    let file = b.out.join(format!("{name}.{ext}"));
+    let title = path.display().to_string();
+    let text = crate::render::recognition(b.format, &model, &outcome, &report, &title);
+    let file = b.out.join(format!("{name}.{}", b.format.extension()));
     std::fs::write(&file, &text).map_err(|e| Failure::Input(format!("{}: {e}", file.display())))?;
     let differences = match &b.expect {
         Some(dir) => Some(differences(

@@ -10,6 +10,7 @@ use thinwall_graph::AdjacencyGraph;
 mod batch;
 mod check;
 mod failure;
+mod render;
 use failure::Failure;
 
 #[derive(Parser)]
@@ -27,17 +28,6 @@ struct Cli {
 enum Format {
     Text,
     Json,
-}
-
-/// `recognize`'s formats: also a picture.
-#[derive(Clone, Copy, ValueEnum)]
-enum RecognizeFormat {
-    Text,
-    Json,
-    /// An isometric picture, faces coloured by feature kind, with a legend.
-    Svg,
-    /// One self-contained page: a 3D view, the features, the connections.
-    Html,
 }
 
 /// `plan`'s and `classify`'s formats: also a page.
@@ -71,7 +61,7 @@ enum Command {
         verbose: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
-        format: RecognizeFormat,
+        format: render::RecognitionFormat,
         /// Write to this file instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -532,29 +522,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     eprintln!("warning: {}", w.message);
                 }
             }
-            let text = match format {
-                RecognizeFormat::Text => report.to_text(),
-                RecognizeFormat::Json => report.to_json(),
-                RecognizeFormat::Svg => {
-                    let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
-                    let mesh = thinwall_report::html::part_mesh(&model);
-                    thinwall_report::svg::picture(
-                        &a,
-                        &mesh,
-                        &report.stiffness_features,
-                        &part.display().to_string(),
-                        1000.0,
-                    )
-                }
-                RecognizeFormat::Html => {
-                    let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
-                    thinwall_report::html::recognition_page(
-                        &part.display().to_string(),
-                        &a,
-                        &report,
-                    )
-                }
-            };
+            let title = part.display().to_string();
+            let text = render::recognition(format, &model, &outcome, &report, &title);
             write_to(output.as_deref(), &text)
         }
     }

@@ -813,5 +813,20 @@ fn recognize_plan_and_classify_write_html_pages() {
         };
         assert_eq!(data["view"], view);
     }
+    // A batch writes a page per part.
+    let out = bin()
+        .arg("batch")
+        .arg(&panel)
+        .arg(fixture("recognition/thin_plate.step"))
+        .args(["--format", "html", "--out"])
+        .arg(dir.join("batch"))
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    for name in ["rib_grid_panel", "thin_plate"] {
+        let page = std::fs::read_to_string(dir.join(format!("batch/{name}.html"))).unwrap();
+        let data = thinwall_report::html::data_of(&page).expect("data block");
+        assert_eq!(data["view"], "recognition");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -643,8 +643,14 @@ impl<'s, 'm> Builder<'s, 'm> {
         // step-io returns a closed edge (start = end vertex) as its whole
         // curve in the curve's own direction, even when the edge runs
         // against it.
+        let conic = matches!(curve, CurveKind::Circle { .. } | CurveKind::Ellipse { .. });
         let nurbs = match nurbs {
-            Some(n) if start == end && !edge.same_sense() => Some(n.reversed()),
+            // A closed circle or ellipse as step-io gives it starts at the
+            // curve's own origin, which need not be the edge's vertex: the
+            // full turn is built from the vertex instead.
+            Some(n) if start == end && conic => self
+                .conic_arc(&curve, start, end, edge.same_sense())
+                .or(Some(if edge.same_sense() { n } else { n.reversed() })),
             Some(n) => Some(n),
             None => {
                 let arc = self.conic_arc(&curve, start, end, edge.same_sense());
