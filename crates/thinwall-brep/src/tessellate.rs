@@ -75,54 +75,61 @@ const MAX_LINES: usize = 4096;
 /// A face's deviation is at most this part of its smallest radius
 /// (`face_deviation`).
 const NARROW_FACE: f64 = 0.002;
-/// A face's deviation is at most this part of its width (2·area /
-/// perimeter), measured on a first tessellation.
-const NARROW_WIDTH: f64 = 0.002;
+/// Where the area between a face's boundary curves and their chords is
+/// more than this part of the face's area, the face is made finer.
+const BOUNDARY_AREA: f64 = 0.001;
 
 /// Tessellate every face of `part` to within `deviation` mm of its
 /// surface (chords of curved edges, triangles across curved faces).
 ///
 /// A face narrower than a few deviations (a thin blend, a long sliver)
-/// would get chords as deep as it is wide: where the first pass finds one
-/// (width 2·area / perimeter), the faces concerned and their edges are
-/// made finer and the part is tessellated again.
+/// would get chords as deep as it is wide: where the first pass finds the
+/// area between a face's boundary curves and their chords more than
+/// `BOUNDARY_AREA` of the face's, that face and its edges are made finer
+/// and the part is tessellated again.
 pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
     let deviation = deviation.max(1e-9);
     let by_surface: Vec<f64> = part
         .face_ids()
         .map(|f| face_deviation(&part.face(f).surface, deviation))
         .collect();
-    let first = tessellate_with(part, &by_surface);
-    let by_width: Vec<f64> = first
+    let (first, chords) = tessellate_with(part, &by_surface);
+    // Where a face's boundary chords could change its area by more than
+    // `BOUNDARY_AREA` of it, the face (and so its edges) gets finer.
+    let refined: Vec<f64> = first
         .faces
         .iter()
         .zip(&by_surface)
         .map(|(fm, &d)| {
-            let perimeter: f64 = part
-                .face(fm.face)
-                .loops
-                .iter()
-                .flat_map(|&l| &part.loop_(l).coedges)
-                .flat_map(|ce| first.edges[ce.edge.index()].windows(2))
-                .map(|w| (first.points[w[1] as usize] - first.points[w[0] as usize]).norm())
-                .sum();
-            let width = 2.0 * first.face_area(fm) / perimeter.max(1e-300);
-            if width > 0.0 {
-                d.min(NARROW_WIDTH * width).max(1e-9)
+            let edges = || {
+                part.face(fm.face)
+                    .loops
+                    .iter()
+                    .flat_map(|&l| &part.loop_(l).coedges)
+                    .map(|ce| chords[ce.edge.index()])
+            };
+            let bound: f64 = edges().map(|c| c.area).sum();
+            let sagitta = edges().map(|c| c.sagitta).fold(0.0, f64::max);
+            let area = first.face_area(fm);
+            if area > 0.0 && bound > BOUNDARY_AREA * area {
+                // The chords as they came (the deviation or the angle
+                // bounded them), made as much shallower as needed.
+                d.min(sagitta * BOUNDARY_AREA * area / bound).max(1e-9)
             } else {
                 d
             }
         })
         .collect();
-    if by_width == by_surface {
+    if refined == by_surface {
         return first;
     }
-    tessellate_with(part, &by_width)
+    tessellate_with(part, &refined).0
 }
 
 /// Tessellate with a deviation per face (by `FaceId::index()`); an edge is
 /// as fine as the finest face it bounds.
-fn tessellate_with(part: &Part, face_deviation: &[f64]) -> Mesh {
+/// Also, per edge, how far its chords are off its curve.
+fn tessellate_with(part: &Part, face_deviation: &[f64]) -> (Mesh, Vec<ChordsOff>) {
     let mut edge_deviation = vec![f64::INFINITY; part.edges.len()];
     for f in part.face_ids() {
         for &l in &part.face(f).loops {
@@ -133,14 +140,18 @@ fn tessellate_with(part: &Part, face_deviation: &[f64]) -> Mesh {
         }
     }
     let mut points: Vec<Point3> = part.vertices.iter().map(|v| v.point).collect();
+    let mut chords = vec![ChordsOff::default(); part.edges.len()];
     let edge_points: Vec<Vec<u32>> = part
         .edges
         .iter()
         .zip(&edge_deviation)
-        .map(|(e, &deviation)| {
+        .zip(&mut chords)
+        .map(|((e, &deviation), off)| {
             let mut ids = vec![e.start.0];
             if let Some(c) = &e.nurbs {
-                for t in interior_params(c, deviation.min(1e9)) {
+                let params = interior_params(c, deviation.min(1e9));
+                *off = chords_off(c, &params);
+                for t in params {
                     ids.push(points.len() as u32);
                     points.push(c.point(t));
                 }
@@ -160,7 +171,43 @@ fn tessellate_with(part: &Part, face_deviation: &[f64]) -> Mesh {
         mesh.faces.push(fm);
     }
     mesh.edges = edge_points;
-    mesh
+    (mesh, chords)
+}
+
+/// How far an edge's chords are off its curve: the largest sagitta (mm)
+/// and the area between them (at most ⅔ × sagitta × chord per chord,
+/// mm²).
+#[derive(Clone, Copy, Debug, Default)]
+struct ChordsOff {
+    sagitta: f64,
+    area: f64,
+}
+
+/// How far a curve's chords at `inner` parameters (and its ends) are off
+/// it, the sagitta measured at each chord's middle parameter.
+fn chords_off(c: &NurbsCurve, inner: &[f64]) -> ChordsOff {
+    let spans = c.spans();
+    let (Some(first), Some(last)) = (spans.first(), spans.last()) else {
+        return ChordsOff::default();
+    };
+    let mut ts = vec![first.0];
+    ts.extend_from_slice(inner);
+    ts.push(last.1);
+    let mut off = ChordsOff::default();
+    for w in ts.windows(2) {
+        let (a, b) = (c.point(w[0]), c.point(w[1]));
+        let m = c.point(0.5 * (w[0] + w[1]));
+        let chord = b - a;
+        let len = chord.norm();
+        let sag = if len > 0.0 {
+            (m - a).cross(&chord).norm() / len
+        } else {
+            (m - a).norm()
+        };
+        off.sagitta = off.sagitta.max(sag);
+        off.area += 2.0 / 3.0 * sag * len;
+    }
+    off
 }
 
 /// A face's own deviation: at most a small part of its surface's

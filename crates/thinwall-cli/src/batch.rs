@@ -60,9 +60,12 @@ pub fn command(b: Batch) -> Result<(), Failure> {
     let names = report_names(&b.inputs);
     let t0 = Instant::now();
     let lines: Vec<PartLine> = pool.install(|| {
+        // One part a task: parts differ in cost a hundredfold (a few large
+        // parts at the end of a list must not all fall to one job).
         b.inputs
             .par_iter()
             .zip(names.par_iter())
+            .with_max_len(1)
             .map(|(path, name)| {
                 let line = one(&b, path, name);
                 progress.done(&line);
