@@ -30,11 +30,13 @@ enum Format {
     Json,
 }
 
-/// `plan`'s and `classify`'s formats: also a page.
+/// `plan`'s and `classify`'s formats: also a picture and a page.
 #[derive(Clone, Copy, ValueEnum)]
 enum PageFormat {
     Text,
     Json,
+    /// An isometric picture of the part and the volumes, with a legend.
+    Svg,
     /// One self-contained page: a 3D view with the volumes.
     Html,
 }
@@ -335,16 +337,22 @@ fn plan_command(
     let text = match format {
         PageFormat::Text => plan.to_text(),
         PageFormat::Json => plan.to_json(),
-        PageFormat::Html => {
+        PageFormat::Svg | PageFormat::Html => {
             let report =
                 thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome);
             let a = thinwall_analysis::PartAnalysis::new(&model, outcome.setup.clone());
-            thinwall_report::html::plan_page(
-                &format!("Plan: {}", part.display()),
-                &a,
-                &report,
-                &plan,
-            )
+            let title = format!("Plan: {}", part.display());
+            match format {
+                PageFormat::Svg => thinwall_report::svg::plan_picture(
+                    &a,
+                    &thinwall_report::html::part_mesh(&model),
+                    &report.stiffness_features,
+                    &plan,
+                    &title,
+                    1000.0,
+                ),
+                _ => thinwall_report::html::plan_page(&title, &a, &report, &plan),
+            }
         }
     };
     write_to(output.as_deref(), &text)
@@ -391,14 +399,15 @@ fn classify_command(
     let text = match format {
         PageFormat::Text => report.to_text(),
         PageFormat::Json => report.to_json(),
-        PageFormat::Html => {
+        PageFormat::Svg | PageFormat::Html => {
             let parts: Vec<&thinwall_brep::Part> = volumes.iter().map(|v| &v.part).collect();
-            thinwall_report::html::classification_page(
-                &format!("Classification: {}", part.display()),
-                &analysis,
-                &report,
-                &parts,
-            )
+            let title = format!("Classification: {}", part.display());
+            match format {
+                PageFormat::Svg => thinwall_report::svg::classification_picture(
+                    &analysis, &report, &parts, &title, 1000.0,
+                ),
+                _ => thinwall_report::html::classification_page(&title, &analysis, &report, &parts),
+            }
         }
     };
     write_to(output.as_deref(), &text)

@@ -813,6 +813,32 @@ fn recognize_plan_and_classify_write_html_pages() {
         };
         assert_eq!(data["view"], view);
     }
+    // Plan and classification pictures: the volumes numbered, a legend.
+    let file = dir.join("plan.svg");
+    let out = bin()
+        .arg("plan")
+        .arg(&panel)
+        .args(["--format", "svg", "-o"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let svg = std::fs::read_to_string(&file).unwrap();
+    assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(
+        svg.contains("large (") && svg.contains("bulk ("),
+        "legend of classes"
+    );
+    assert!(svg.contains(">1</text>") && svg.contains("fill-opacity"));
+    let file = dir.join("volumes.svg");
+    let out = classify_stacked()
+        .args(["--format", "svg", "-o"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let svg = std::fs::read_to_string(&file).unwrap();
+    assert!(svg.contains("closed face") && svg.contains(">0 pocket</text>"));
     // A batch writes a page per part.
     let out = bin()
         .arg("batch")

@@ -44,6 +44,23 @@ pub fn machining(kind: MachiningKind) -> [u8; 3] {
     }
 }
 
+/// A classified volume's closed and open faces.
+pub const CLOSED: [u8; 3] = [220, 60, 50];
+pub const OPEN: [u8; 3] = [90, 200, 110];
+
+/// A plan feature's class (`large`, `small`, `bulk`, `other_setup`,
+/// `detail`).
+pub fn plan_class(class: &str) -> [u8; 3] {
+    match class {
+        "large" => [70, 130, 230],
+        "small" => [120, 200, 240],
+        "bulk" => [180, 180, 120],
+        "other_setup" => [230, 120, 200],
+        "detail" => [60, 190, 200],
+        _ => OTHER,
+    }
+}
+
 /// `#rrggbb`.
 pub fn hex(c: [u8; 3]) -> String {
     format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
@@ -62,14 +79,14 @@ pub fn table() -> BTreeMap<String, String> {
     let named: [(&str, [u8; 3]); 11] = [
         ("other", OTHER),
         ("selected", [255, 60, 30]),
-        ("plan.large", [70, 130, 230]),
-        ("plan.small", [120, 200, 240]),
-        ("plan.bulk", [180, 180, 120]),
-        ("plan.other_setup", [230, 120, 200]),
-        ("plan.detail", [60, 190, 200]),
+        ("plan.large", plan_class("large")),
+        ("plan.small", plan_class("small")),
+        ("plan.bulk", plan_class("bulk")),
+        ("plan.other_setup", plan_class("other_setup")),
+        ("plan.detail", plan_class("detail")),
         ("plan.current", [255, 120, 0]),
-        ("volume.closed", [220, 60, 50]),
-        ("volume.open", [90, 200, 110]),
+        ("volume.closed", CLOSED),
+        ("volume.open", OPEN),
         ("volume.touched", [250, 200, 40]),
     ];
     for (n, c) in named {

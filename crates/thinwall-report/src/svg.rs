@@ -1,5 +1,5 @@
-//! A static picture of a recognized part for documents
-//! (`thinwall recognize --format svg`): an isometric view along the
+//! Static pictures for documents (`--format svg` of `recognize`, `plan`
+//! and `classify`): an isometric view along the
 //! set-up's stock axes, the part's triangles (`thinwall_brep::tessellate`)
 //! shaded and coloured by the kind of stiffness feature each face belongs
 //! to, hidden faces removed by drawing far to near (faces turned away are
@@ -28,7 +28,29 @@ pub(crate) fn face_kinds(features: &[crate::FeatureEntry]) -> HashMap<u64, Stiff
     m
 }
 
-/// The picture, `width` pixels wide.
+/// Something to draw: a mesh, a colour per face (by position in
+/// `mesh.faces`) and an opacity (1 opaque; volumes around a part are drawn
+/// see-through).
+pub struct Layer<'m> {
+    pub mesh: &'m Mesh,
+    pub colours: Vec<[u8; 3]>,
+    pub opacity: f64,
+}
+
+/// A text drawn on top, centred at a point (a feature's number).
+pub struct Label {
+    pub at: Point3,
+    pub text: String,
+}
+
+/// A line of the legend.
+pub struct Key {
+    pub text: String,
+    pub colour: [u8; 3],
+}
+
+/// The recognition's picture, `width` pixels wide: the part coloured by
+/// the kind of stiffness feature of each face.
 pub fn picture(
     a: &PartAnalysis,
     mesh: &Mesh,
@@ -36,7 +58,201 @@ pub fn picture(
     title: &str,
     width: f64,
 ) -> String {
-    let part = a.part();
+    let (colours, legend) = part_colours(a, mesh, features);
+    let layer = Layer {
+        mesh,
+        colours,
+        opacity: 1.0,
+    };
+    draw(a, &[layer], &[], &legend, title, width)
+}
+
+/// Each face's colour by the kind of stiffness feature it belongs to, and
+/// the legend of kinds with their face counts.
+fn part_colours(
+    a: &PartAnalysis,
+    mesh: &Mesh,
+    features: &[crate::FeatureEntry],
+) -> (Vec<[u8; 3]>, Vec<Key>) {
+    let kinds = face_kinds(features);
+    let mut used: BTreeMap<&'static str, (usize, [u8; 3])> = BTreeMap::new();
+    let colours = mesh
+        .faces
+        .iter()
+        .map(|fm| {
+            let kind = kinds.get(&a.part().face(fm.face).step_id).copied();
+            let c = crate::palette::stiffness(kind);
+            used.entry(kind.map_or("other", |k| k.name()))
+                .or_insert((0, c))
+                .0 += 1;
+            c
+        })
+        .collect();
+    let legend = used
+        .into_iter()
+        .map(|(name, (count, colour))| Key {
+            text: format!("{name} ({count} faces)"),
+            colour,
+        })
+        .collect();
+    (colours, legend)
+}
+
+/// A plan's picture: the part, and every machining feature's solids
+/// see-through in their class's colour, numbered in the plan's order
+/// (when there are few enough to read: `MAX_NUMBERS`).
+pub fn plan_picture(
+    a: &PartAnalysis,
+    part_mesh: &Mesh,
+    features: &[crate::FeatureEntry],
+    plan: &thinwall_plan::Plan,
+    title: &str,
+    width: f64,
+) -> String {
+    let (colours, mut legend) = part_colours(a, part_mesh, features);
+    let mut layers = vec![Layer {
+        mesh: part_mesh,
+        colours,
+        opacity: 1.0,
+    }];
+    let rank: HashMap<&str, usize> = plan
+        .feature_sequence
+        .order
+        .iter()
+        .enumerate()
+        .map(|(k, id)| (id.as_str(), k + 1))
+        .collect();
+    let meshes: Vec<(usize, Mesh, [u8; 3])> = plan
+        .machining_features
+        .iter()
+        .filter_map(|f| {
+            let part = thinwall_plan::volumes::feature_part(plan, f)?;
+            let colour = crate::palette::plan_class(f.size_class.name());
+            Some((
+                rank.get(f.id.as_str()).copied().unwrap_or(0),
+                crate::html::part_mesh(&part),
+                colour,
+            ))
+        })
+        .collect();
+    let numbered = meshes.len() <= MAX_NUMBERS;
+    let mut labels = Vec::new();
+    for (n, mesh, colour) in &meshes {
+        layers.push(Layer {
+            mesh,
+            colours: vec![*colour; mesh.faces.len()],
+            opacity: 0.45,
+        });
+        if numbered {
+            labels.push(Label {
+                at: centre(mesh),
+                text: n.to_string(),
+            });
+        }
+    }
+    for class in ["large", "small", "bulk", "other_setup", "detail"] {
+        let count = plan
+            .machining_features
+            .iter()
+            .filter(|f| f.size_class.name() == class)
+            .count();
+        if count > 0 {
+            legend.push(Key {
+                text: format!("{} ({count} features)", class.replace('_', " ")),
+                colour: crate::palette::plan_class(class),
+            });
+        }
+    }
+    draw(a, &layers, &labels, &legend, title, width)
+}
+
+/// A classification's picture: the part see-through, every volume with
+/// its closed faces red and its open faces green, numbered by index.
+pub fn classification_picture(
+    a: &PartAnalysis,
+    report: &crate::ClassificationReport,
+    volumes: &[&thinwall_brep::Part],
+    title: &str,
+    width: f64,
+) -> String {
+    let part_mesh = crate::html::part_mesh(a.part());
+    let mut layers = vec![Layer {
+        colours: vec![crate::palette::OTHER; part_mesh.faces.len()],
+        mesh: &part_mesh,
+        opacity: 0.3,
+    }];
+    let meshes: Vec<Mesh> = volumes.iter().map(|p| crate::html::part_mesh(p)).collect();
+    let (closed, open) = (crate::palette::CLOSED, crate::palette::OPEN);
+    let mut labels = Vec::new();
+    for ((c, part), mesh) in report.volumes.iter().zip(volumes).zip(&meshes) {
+        let colours = mesh
+            .faces
+            .iter()
+            .map(|fm| {
+                let step = part.face(fm.face).step_id;
+                match c.faces.iter().find(|f| f.step_id == step) {
+                    Some(f) if f.closed => closed,
+                    _ => open,
+                }
+            })
+            .collect();
+        layers.push(Layer {
+            mesh,
+            colours,
+            opacity: 0.85,
+        });
+        labels.push(Label {
+            at: centre(mesh),
+            text: format!("{} {}", c.index, c.kind.name()),
+        });
+    }
+    let legend = [
+        Key {
+            text: "closed face".into(),
+            colour: closed,
+        },
+        Key {
+            text: "open face".into(),
+            colour: open,
+        },
+        Key {
+            text: "part".into(),
+            colour: crate::palette::OTHER,
+        },
+    ];
+    draw(a, &layers, &labels, &legend, title, width)
+}
+
+/// More numbered volumes than this make an unreadable picture.
+const MAX_NUMBERS: usize = 80;
+
+/// The middle of a mesh's box.
+fn centre(mesh: &Mesh) -> Point3 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in &mesh.points {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    Point3::new(
+        0.5 * (lo[0] + hi[0]),
+        0.5 * (lo[1] + hi[1]),
+        0.5 * (lo[2] + hi[2]),
+    )
+}
+
+/// The picture of `layers`, `width` pixels wide: an isometric view along
+/// the set-up's stock axes, hidden faces removed by drawing far to near,
+/// `labels` on top, the legend at the right.
+pub fn draw(
+    a: &PartAnalysis,
+    layers: &[Layer],
+    labels: &[Label],
+    legend: &[Key],
+    title: &str,
+    width: f64,
+) -> String {
     let (e1, e2, up) = view_axes(a);
     // Looking down along −(e1 + e2 + up): the box's iso view.
     let view = -(e1 + e2 + up).normalize();
@@ -44,52 +260,55 @@ pub fn picture(
     let screen_up = view.cross(&right);
     let to_screen = |p: &Point3| [p.coords.dot(&right), -p.coords.dot(&screen_up)];
     let light = (-view + up * 0.6 + right * 0.3).normalize();
-    let kinds = face_kinds(features);
-    let size = part.bounding_box().diagonal().max(1e-9);
+    let size = a.part().bounding_box().diagonal().max(1e-9);
     let piece = 0.05 * size;
     let mut items: Vec<(f64, String)> = Vec::new();
-    let mut used: BTreeMap<&'static str, (usize, [u8; 3])> = BTreeMap::new();
-    for fm in &mesh.faces {
-        let step = part.face(fm.face).step_id;
-        let kind = kinds.get(&step).copied();
-        let c = crate::palette::stiffness(kind);
-        let name = kind.map_or("other", |k| k.name());
-        let entry = used.entry(name).or_insert((0, c));
-        entry.0 += 1;
-        let pieces = fm.triangles.iter().flat_map(|t| {
-            // Small pieces: far-to-near drawing orders large faces badly.
-            small_pieces(t.map(|i| mesh.points[i as usize]), piece)
-        });
-        for [p, q, r] in pieces {
-            let n = (q - p).cross(&(r - p));
-            let Some(n) = n.try_normalize(1e-300) else {
-                continue;
-            };
-            if n.dot(&view) >= 0.0 {
-                continue; // turned away
+    for layer in layers {
+        let mesh = layer.mesh;
+        for (fm, c) in mesh.faces.iter().zip(&layer.colours) {
+            let pieces = fm.triangles.iter().flat_map(|t| {
+                // Small pieces: far-to-near drawing orders large faces badly.
+                small_pieces(t.map(|i| mesh.points[i as usize]), piece)
+            });
+            for [p, q, r] in pieces {
+                let n = (q - p).cross(&(r - p));
+                let Some(n) = n.try_normalize(1e-300) else {
+                    continue;
+                };
+                if n.dot(&view) >= 0.0 {
+                    continue; // turned away
+                }
+                let shade = 0.45 + 0.55 * n.dot(&light).abs();
+                let fill = c.map(|x| (x as f64 * shade).round().min(255.0) as u8);
+                // Seen from above, a floor is never in front of the wall
+                // standing on it where the two overlap on the picture:
+                // floors go back half a piece, so those behind a wall stay
+                // behind it.
+                let floor = if n.dot(&up) > 0.5 { 0.5 * piece } else { 0.0 };
+                let depth = (p.coords + q.coords + r.coords).dot(&view) / 3.0 + floor;
+                let [a, b, cc] = [to_screen(&p), to_screen(&q), to_screen(&r)];
+                let hex = crate::palette::hex(fill);
+                // Opaque pieces get a hairline of their own colour to close
+                // the seams; see-through ones none (it would draw the mesh).
+                let style = if layer.opacity < 1.0 {
+                    format!("fill-opacity=\"{:.2}\" stroke=\"none\"", layer.opacity)
+                } else {
+                    format!("stroke=\"{hex}\" stroke-width=\"0.4\"")
+                };
+                items.push((
+                    depth,
+                    format!(
+                        "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{hex}\" {style}/>",
+                        a[0], a[1], b[0], b[1], cc[0], cc[1]
+                    ),
+                ));
             }
-            let shade = 0.45 + 0.55 * n.dot(&light).abs();
-            let fill = c.map(|x| (x as f64 * shade).round().min(255.0) as u8);
-            // Seen from above, a floor is never in front of the wall
-            // standing on it where the two overlap on the picture: floors
-            // go back half a piece, so those behind a wall stay behind it.
-            let floor = if n.dot(&up) > 0.5 { 0.5 * piece } else { 0.0 };
-            let depth = (p.coords + q.coords + r.coords).dot(&view) / 3.0 + floor;
-            let [a, b, cc] = [to_screen(&p), to_screen(&q), to_screen(&r)];
-            let hex = format!("#{:02x}{:02x}{:02x}", fill[0], fill[1], fill[2]);
-            items.push((
-                depth,
-                format!(
-                    "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{hex}\" stroke=\"{hex}\" stroke-width=\"0.4\"/>",
-                    a[0], a[1], b[0], b[1], cc[0], cc[1]
-                ),
-            ));
         }
     }
     // Far first.
     items.sort_by(|x, y| y.0.total_cmp(&x.0));
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in &mesh.points {
+    for p in layers.iter().flat_map(|l| &l.mesh.points) {
         let s = to_screen(p);
         for k in 0..2 {
             lo[k] = lo[k].min(s[k]);
@@ -98,7 +317,7 @@ pub fn picture(
     }
     let (w, h) = ((hi[0] - lo[0]).max(1e-9), (hi[1] - lo[1]).max(1e-9));
     let scale = (width - 220.0).max(100.0) / w;
-    let height = (h * scale + 40.0).max(40.0 + 22.0 * used.len() as f64);
+    let height = (h * scale + 40.0).max(40.0 + 22.0 * legend.len() as f64);
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -116,20 +335,35 @@ pub fn picture(
         s.push('\n');
     }
     s.push_str("</g>\n");
+    // Labels, on top, in picture pixels.
+    let _ = writeln!(s, "<g font-family=\"sans-serif\" font-size=\"12\" font-weight=\"bold\" text-anchor=\"middle\">");
+    for l in labels {
+        let p = to_screen(&l.at);
+        let (x, y) = (20.0 + (p[0] - lo[0]) * scale, 20.0 + (p[1] - lo[1]) * scale);
+        let w = 8.0 + 7.0 * l.text.chars().count() as f64;
+        let _ = writeln!(
+            s,
+            "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"{w:.0}\" height=\"16\" rx=\"5\" fill=\"white\" stroke=\"#1d232b\"/><text x=\"{x:.1}\" y=\"{:.1}\">{}</text>",
+            x - w / 2.0,
+            y - 8.0,
+            y + 4.0,
+            escape(&l.text)
+        );
+    }
+    s.push_str("</g>\n");
     // Legend.
     let x0 = width - 190.0;
     let _ = writeln!(s, "<g font-family=\"sans-serif\" font-size=\"13\">");
-    for (k, (name, (count, c))) in used.iter().enumerate() {
+    for (k, key) in legend.iter().enumerate() {
         let y = 24.0 + 22.0 * k as f64;
         let _ = writeln!(
             s,
-            "<rect x=\"{x0}\" y=\"{:.0}\" width=\"14\" height=\"14\" fill=\"#{:02x}{:02x}{:02x}\" stroke=\"#303030\"/><text x=\"{:.0}\" y=\"{:.0}\">{name} ({count} faces)</text>",
+            "<rect x=\"{x0}\" y=\"{:.0}\" width=\"14\" height=\"14\" fill=\"{}\" stroke=\"#303030\"/><text x=\"{:.0}\" y=\"{:.0}\">{}</text>",
             y - 11.0,
-            c[0],
-            c[1],
-            c[2],
+            crate::palette::hex(key.colour),
             x0 + 20.0,
-            y
+            y,
+            escape(&key.text)
         );
     }
     s.push_str("</g>\n</svg>\n");
