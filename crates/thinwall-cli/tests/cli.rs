@@ -257,6 +257,23 @@ fn classify_stacked() -> Command {
     c
 }
 
+/// Run `cmd` with `--format FORMAT -o FILE`; it must succeed and write
+/// nothing to stdout. The file's text.
+fn written(mut cmd: Command, format: &str, file: &std::path::Path) -> String {
+    let out = cmd
+        .args(["--format", format, "-o"])
+        .arg(file)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stdout.is_empty(), "wrote to stdout with -o");
+    std::fs::read_to_string(file).unwrap()
+}
+
 #[test]
 fn classify_json_and_errors() {
     let case = fixture("classify/stacked");
@@ -744,20 +761,10 @@ fn batch_reports_every_part_and_a_bad_file_is_a_line_not_the_end() {
 fn recognize_draws_an_svg_picture_with_a_legend() {
     let dir = std::env::temp_dir().join(format!("tw-svg-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("panel.svg");
-    let out = bin()
-        .arg("recognize")
-        .arg(fixture("recognition/rib_grid_panel.step"))
-        .args(["--format", "svg", "-o"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let svg = std::fs::read_to_string(&file).unwrap();
+    let mut cmd = bin();
+    cmd.arg("recognize")
+        .arg(fixture("recognition/rib_grid_panel.step"));
+    let svg = written(cmd, "svg", &dir.join("panel.svg"));
     assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
     assert!(svg.trim_end().ends_with("</svg>"));
     // Self-contained: the namespace is the only address in it.
@@ -789,20 +796,8 @@ fn recognize_plan_and_classify_write_html_pages() {
         }),
         ("classify", classify_stacked()),
     ];
-    for (name, mut cmd) in runs {
-        let file = dir.join(format!("{name}.html"));
-        let out = cmd
-            .args(["--format", "html", "-o"])
-            .arg(&file)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        assert!(out.stdout.is_empty(), "{name} wrote to stdout with -o");
-        let page = std::fs::read_to_string(&file).unwrap();
+    for (name, cmd) in runs {
+        let page = written(cmd, "html", &dir.join(format!("{name}.html")));
         assert!(page.starts_with("<!DOCTYPE html>"), "{name}");
         assert!(page.trim_end().ends_with("</html>"), "{name}");
         let data = thinwall_report::html::data_of(&page).expect("data block");
@@ -814,30 +809,16 @@ fn recognize_plan_and_classify_write_html_pages() {
         assert_eq!(data["view"], view);
     }
     // Plan and classification pictures: the volumes numbered, a legend.
-    let file = dir.join("plan.svg");
-    let out = bin()
-        .arg("plan")
-        .arg(&panel)
-        .args(["--format", "svg", "-o"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let svg = std::fs::read_to_string(&file).unwrap();
+    let mut cmd = bin();
+    cmd.arg("plan").arg(&panel);
+    let svg = written(cmd, "svg", &dir.join("plan.svg"));
     assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
     assert!(
         svg.contains("large (") && svg.contains("bulk ("),
         "legend of classes"
     );
     assert!(svg.contains(">1</text>") && svg.contains("fill-opacity"));
-    let file = dir.join("volumes.svg");
-    let out = classify_stacked()
-        .args(["--format", "svg", "-o"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let svg = std::fs::read_to_string(&file).unwrap();
+    let svg = written(classify_stacked(), "svg", &dir.join("volumes.svg"));
     assert!(svg.contains("closed face") && svg.contains(">0 pocket</text>"));
     // A batch writes a page per part.
     let out = bin()
