@@ -131,6 +131,27 @@ enum Command {
         #[command(flatten)]
         flags: RecognizeFlags,
     },
+    /// Accessibility of the part's faces: so far whether each planar face
+    /// can be flank milled (its G-zone, Harik & Ris; docs/ACCESS.md).
+    Access {
+        /// The STEP file.
+        part: PathBuf,
+        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+        up: Option<[f64; 3]>,
+        /// Tool diameter, mm: obstacles count this far above a face.
+        #[arg(long, default_value_t = 12.0, allow_hyphen_values = true)]
+        tool_diameter: f64,
+        /// Widen the unreachable zones by the tool's radius.
+        #[arg(long)]
+        tool_radius: bool,
+        /// Visibility ratio a face needs to be advisable.
+        #[arg(long, default_value_t = 0.95, allow_hyphen_values = true)]
+        threshold: f64,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "json")]
+        format: Format,
+    },
     /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
     /// step-approach bending model (docs/PLANNING.md).
     SizeWall(SizeWallArgs),
@@ -413,6 +434,45 @@ fn classify_command(
     write_to(output.as_deref(), &text)
 }
 
+fn access_command(
+    part: PathBuf,
+    up: Option<[f64; 3]>,
+    options: thinwall_access::FlankOptions,
+    format: Format,
+) -> Result<(), Failure> {
+    if !(options.tool_diameter.is_finite() && options.tool_diameter > 0.0) {
+        return Err(Failure::Usage(format!(
+            "--tool-diameter must be a positive length, got {}",
+            options.tool_diameter
+        )));
+    }
+    if !(0.0..=1.0).contains(&options.threshold) {
+        return Err(Failure::Usage(format!(
+            "--threshold must lie between 0 and 1, got {}",
+            options.threshold
+        )));
+    }
+    let (model, _) = thinwall_step::read_file(&part)?;
+    let setup = thinwall_analysis::Setup::new(
+        up.unwrap_or([0.0, 0.0, 1.0]),
+        thinwall_analysis::Machine::ThreeAxis,
+    )
+    .map_err(Failure::usage)?;
+    let a = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
+    let mesh = thinwall_report::html::part_mesh(&model);
+    let faces = thinwall_access::flank_milling(&a, &mesh, &options);
+    let report = thinwall_report::access::AccessReport::new(
+        &part.display().to_string(),
+        setup.up,
+        options,
+        faces,
+    );
+    write_out(&match format {
+        Format::Text => report.to_text(),
+        Format::Json => report.to_json(),
+    })
+}
+
 fn parse_vector(s: &str) -> Result<[f64; 3], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 3 {
@@ -458,6 +518,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
             output,
         } => plan_command(part, flags, rules, volumes_dir, format, output),
         Command::SizeWall(args) => size_wall_command(args),
+        Command::Access {
+            part,
+            up,
+            tool_diameter,
+            tool_radius,
+            threshold,
+            format,
+        } => {
+            let options = thinwall_access::FlankOptions {
+                tool_diameter,
+                tool_radius,
+                threshold,
+            };
+            access_command(part, up, options, format)
+        }
         Command::Batch {
             inputs,
             out,

@@ -419,6 +419,7 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     ));
     outputs.push(("plan", of(&["plan"], "recognition/rib_grid_panel.step")));
     outputs.push(("plan", of(&["plan"], "recognition/c_frame.step")));
+    outputs.push(("access", of(&["access"], "recognition/rib_grid_panel.step")));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
         assert!(problems.is_empty(), "{problems:#?}");
@@ -836,4 +837,33 @@ fn recognize_plan_and_classify_write_html_pages() {
         assert_eq!(data["view"], "recognition");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn access_reports_flank_milling_of_planar_faces() {
+    let panel = fixture("recognition/rib_grid_panel.step");
+    let json = json_of(bin().arg("access").arg(&panel));
+    assert_eq!(json["schema"], "thinwall/access/1");
+    let faces = json["planar_faces"].as_array().unwrap();
+    assert_eq!(faces.len(), 38);
+    for f in faces {
+        let v = f["visibility"].as_f64().unwrap();
+        assert_eq!(f["advisable"].as_bool().unwrap(), v >= 0.95);
+    }
+    assert!(!json["not_yet"].as_array().unwrap().is_empty());
+    let text = bin()
+        .arg("access")
+        .arg(&panel)
+        .args(["--format", "text"])
+        .output()
+        .unwrap();
+    assert!(text.status.success());
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(text.contains("38 planar face(s), 27 advisable"), "{text}");
+    for bad in [["--tool-diameter", "-3"], ["--threshold", "1.5"]] {
+        let out = bin().arg("access").arg(&panel).args(bad).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(bad[0]), "{err}");
+    }
 }

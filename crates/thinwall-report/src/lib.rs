@@ -2,6 +2,7 @@
 //! a part and its graph, for `inspect`), plus a text rendering a person can
 //! scan. Nothing here runs a recognizer: `thinwall-pipeline` does.
 
+pub mod access;
 pub mod classify;
 pub mod expect;
 pub mod html;
