@@ -241,3 +241,40 @@ fn a_title_cannot_break_out_of_the_page() {
     assert_eq!(data["title"], evil);
     assert_eq!(data["recognition"]["part"]["file"], evil);
 }
+
+#[test]
+fn access_page_colours_every_planar_face_and_outlines_g_zones() {
+    let path = common::root().join("fixtures/recognition/rib_grid_panel.step");
+    let part = read(&path);
+    let setup = Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap();
+    let a = PartAnalysis::new(&part, setup.clone());
+    let mesh = html::part_mesh(&part);
+    let options = thinwall_access::FlankOptions::default();
+    let faces = thinwall_access::flank_milling(&a, &mesh, &options);
+    let report =
+        thinwall_report::access::AccessReport::new("rib_grid_panel.step", setup.up, options, faces);
+    let page = html::access_page("access", &a, &report);
+    assert_self_contained(&page);
+    let data = html::data_of(&page).unwrap();
+    assert_eq!(data["view"], "access");
+    let drawn = assert_every_face_drawn(&part, &data["part"]);
+    let planar = data["access"]["planar_faces"].as_array().unwrap();
+    assert_eq!(planar.len(), report.planar_faces.len());
+    for f in planar {
+        let key = (f["body"].as_u64().unwrap(), f["face"].as_u64().unwrap());
+        assert!(drawn.contains(&key), "face {key:?} not drawn");
+        // A face left partly unreached carries its G-zone's outline.
+        let g = f["g_zone_mm2"].as_f64().unwrap();
+        if f["nature"] != "closed" && g > 1e-6 {
+            assert!(!f["g_zone"].as_array().unwrap().is_empty(), "{}", f["face"]);
+        }
+    }
+    for key in [
+        "access.advisable",
+        "access.partial",
+        "access.blocked",
+        "access.closed",
+    ] {
+        assert!(data["palette"][key].is_string());
+    }
+}

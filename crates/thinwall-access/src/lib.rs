@@ -126,6 +126,9 @@ pub struct PlanarFaceAccess {
     pub used: Vec<Used>,
     /// mm² no direction taken reaches.
     pub g_zone_mm2: f64,
+    /// The G-zone's outlines on the face (3-D points, mm), for pictures.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub g_zone: Vec<Vec<[f64; 3]>>,
     /// Reachable area / face area.
     pub visibility: f64,
     pub advisable: bool,
@@ -235,6 +238,7 @@ fn face_access(
             .collect(),
         used: Vec::new(),
         g_zone_mm2: area,
+        g_zone: Vec::new(),
         visibility: 0.0,
         advisable: false,
         note: None,
@@ -257,6 +261,16 @@ fn face_access(
         .collect();
     // The G-zone lies in the face: more is the booleans' rounding.
     out.g_zone_mm2 = g.unsigned_area().min(area);
+    let lift = |c: geo::Coord<f64>| -> [f64; 3] {
+        frame
+            .to_world(&thinwall_geom::Vector3::new(c.x, c.y, 0.0))
+            .into()
+    };
+    out.g_zone = g
+        .iter()
+        .flat_map(|p| std::iter::once(p.exterior()).chain(p.interiors()))
+        .map(|ring| ring.coords().map(|&c| lift(c)).collect())
+        .collect();
     out.visibility = if area > 0.0 {
         1.0 - out.g_zone_mm2 / area
     } else {

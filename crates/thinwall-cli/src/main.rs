@@ -30,6 +30,15 @@ enum Format {
     Json,
 }
 
+/// `access`'s formats: also a page.
+#[derive(Clone, Copy, ValueEnum)]
+enum AccessFormat {
+    Text,
+    Json,
+    /// One self-contained page: faces coloured by how much is reached.
+    Html,
+}
+
 /// `plan`'s and `classify`'s formats: also a picture and a page.
 #[derive(Clone, Copy, ValueEnum)]
 enum PageFormat {
@@ -150,7 +159,10 @@ enum Command {
         threshold: f64,
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
-        format: Format,
+        format: AccessFormat,
+        /// Write to this file instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
     },
     /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
     /// step-approach bending model (docs/PLANNING.md).
@@ -438,7 +450,8 @@ fn access_command(
     part: PathBuf,
     up: Option<[f64; 3]>,
     options: thinwall_access::FlankOptions,
-    format: Format,
+    format: AccessFormat,
+    output: Option<PathBuf>,
 ) -> Result<(), Failure> {
     if !(options.tool_diameter.is_finite() && options.tool_diameter > 0.0) {
         return Err(Failure::Usage(format!(
@@ -467,10 +480,16 @@ fn access_command(
         options,
         faces,
     );
-    write_out(&match format {
-        Format::Text => report.to_text(),
-        Format::Json => report.to_json(),
-    })
+    let text = match format {
+        AccessFormat::Text => report.to_text(),
+        AccessFormat::Json => report.to_json(),
+        AccessFormat::Html => thinwall_report::html::access_page(
+            &format!("Flank milling: {}", part.display()),
+            &a,
+            &report,
+        ),
+    };
+    write_to(output.as_deref(), &text)
 }
 
 fn parse_vector(s: &str) -> Result<[f64; 3], String> {
@@ -525,13 +544,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
             tool_radius,
             threshold,
             format,
+            output,
         } => {
             let options = thinwall_access::FlankOptions {
                 tool_diameter,
                 tool_radius,
                 threshold,
             };
-            access_command(part, up, options, format)
+            access_command(part, up, options, format, output)
         }
         Command::Batch {
             inputs,

@@ -567,6 +567,73 @@
     };
   }
 
+  // ------------------------------------------------- flank milling (access)
+  function accessTab() {
+    const rep = D.access;
+    const planar = rep.planar_faces;
+    const index = new Map(planar.map((f) => [f.body + ':' + f.face, f]));
+    const state = (f) => (f.nature === 'closed' ? 'closed' : f.advisable ? 'advisable' : f.visibility > 0.5 ? 'partial' : 'blocked');
+    const tint = (f) => P['access.' + state(f)];
+    const marks = new T.Group();
+    viewer.add(marks);
+    const line = (pts, colour) => {
+      const g = new T.BufferGeometry();
+      const arr = new Float32Array(pts.length * 3);
+      pts.forEach((p, k) => { for (let j = 0; j < 3; j++) arr[3 * k + j] = p[j] - origin[j]; });
+      g.setAttribute('position', new T.BufferAttribute(arr, 3));
+      return new T.LineSegments(g, new T.LineBasicMaterial({ color: colour, depthTest: false }));
+    };
+    function showMarks(f) {
+      marks.clear();
+      if (!f) return;
+      // The G-zone's outlines, and each direction used as a line into the
+      // face's middle (the tool's body comes from its far end).
+      for (const ring of f.g_zone || []) {
+        const pts = [];
+        for (let k = 0; k + 1 < ring.length; k++) pts.push(ring[k], ring[k + 1]);
+        marks.add(line(pts, 0xd0201a));
+      }
+      const i = faceIndex.get(f.body + ':' + f.face);
+      const pts = D.part.faces[i].points;
+      const c = [0, 0, 0];
+      for (let k = 0; k < pts.length; k += 3) for (let j = 0; j < 3; j++) c[j] += pts[k + j] / (pts.length / 3);
+      const len = 0.25 * D.size;
+      for (const u of f.used) marks.add(line([c.map((x, j) => x - u.direction[j] * len), c], 0x1b62c4));
+      viewer.render();
+    }
+    return {
+      name: 'Flank milling',
+      enter() {
+        part.group.visible = true;
+        legend([['advisable (≥ ' + Math.round(100 * rep.flank_milling.threshold) + ' % reached)', P['access.advisable']], ['partly reached', P['access.partial']], ['mostly blocked', P['access.blocked']], ['closed face', P['access.closed']], ['not planar', P.other]]);
+        this.list(); this.paint();
+        if (!selected) details('Flank milling', [['planar faces', String(planar.length)], ['advisable', String(planar.filter((f) => f.advisable).length)], ['tool', 'Ø' + fmt(rep.flank_milling.tool_diameter) + ' mm' + (rep.flank_milling.tool_radius ? ', radius widens the zones' : '')], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Choose a face: its unreachable G-zone is outlined red, the directions used are blue lines (the tool comes in along them).')]);
+      },
+      leave() { marks.clear(); },
+      list() { list(planar.map((f) => ({ key: f.body + ':' + f.face, id: '#' + f.face, what: f.nature.replace('_', '-') + ' · ' + fmt(100 * f.visibility, 1) + ' % · ' + (f.advisable ? 'advisable' : 'not advisable'), colour: tint(f) }))); },
+      paint() {
+        const on = selected && selected.faces ? new Set(selected.faces) : null;
+        part.paint((i) => {
+          const fd = D.part.faces[i];
+          const f = index.get(fd.body + ':' + fd.step_id);
+          const c = f ? new T.Color(tint(f)) : colour('other');
+          return on && !on.has(i) ? pale(c) : c;
+        });
+        viewer.render();
+      },
+      select(key) {
+        const f = index.get(key);
+        if (!f) return;
+        selected = { key, faces: [faceIndex.get(key)] };
+        this.paint(); this.list(); showMarks(f);
+        const table = el('table', null, el('tr', null, el('td', null, 'direction'), el('td', null, 'priority · rule · L-zone')));
+        for (const c of f.candidates) table.append(el('tr', null, el('td', null, vec(c.direction)), el('td', null, c.priority + ' · ' + c.rule + ' (edge #' + c.edge + ') · ' + fmt(c.l_zone_mm2) + ' mm²')));
+        details('Face #' + f.face + ' — ' + f.nature.replace('_', '-'), [['area', fmt(f.area_mm2) + ' mm²'], ['reached', fmt(100 * f.visibility, 1) + ' %'], ['G-zone (unreached)', fmt(f.g_zone_mm2) + ' mm²'], ['verdict', f.advisable ? 'advisable for flank milling' : 'not advisable'], ['obstacles within reach', String(f.obstacles)], ['closed edges', f.edges.filter((e) => e.sharpness.includes('closed')).length + ' of ' + f.edges.length], ['directions used', f.used.map((u) => vec(u.direction)).join(' ')], ['note', f.note]], [el('h3', null, 'Candidates, in the order tried'), table]);
+      },
+      pickFace(i) { const fd = D.part.faces[i]; const key = fd.body + ':' + fd.step_id; if (index.has(key)) this.select(key); else faceInfo(i); },
+    };
+  }
+
   // ------------------------------------------------------------ assemble
   const tabs = [];
   if (rec && D.view !== 'plan') {
@@ -579,6 +646,7 @@
     tabs.push(featureTab('Stiffness features', stiff, (f) => P['stiffness.' + f.kind] || P.other, stiffRows, kindLegend));
   }
   if (D.view === 'classification') tabs.push(classificationTab());
+  if (D.view === 'access') tabs.push(accessTab());
 
   function show(tab) {
     if (mode && mode.leave) mode.leave();
@@ -607,11 +675,11 @@
   );
   if (state.xray) part.opacity(0.28);
 
-  const file = rec ? rec.part.file : D.plan ? D.plan.file : D.classification ? D.classification.part : D.title;
+  const file = rec ? rec.part.file : D.plan ? D.plan.file : D.classification ? D.classification.part : D.access ? D.access.part : D.title;
   const faces = D.part.faces.length, missing = D.part.faces.filter((f) => !f.triangles.length).length;
   $('#title').replaceChildren(D.title, el('small', null, faces + ' faces' + (missing ? ', ' + missing + ' not drawn' : '') + ' · up ' + vec(D.up)));
   document.title = 'Thinwall: ' + file.split('/').pop();
-  if (D.view !== 'classification') graph.draw($('#bottom'));
+  if (D.view !== 'classification' && D.view !== 'access') graph.draw($('#bottom'));
   else $('#bottom').hidden = true;
   // `#wall=R2`, `#step=5`, `#select=H1`, `#tab=Machining features`: a
   // page opened at a chosen view (links in documents, screenshots).

@@ -73,6 +73,9 @@ enum View<'a> {
     Classification {
         classification: &'a ClassificationReport,
     },
+    Access {
+        access: &'a crate::access::AccessReport,
+    },
 }
 
 #[derive(Serialize)]
@@ -204,6 +207,12 @@ pub fn classification_page(
         },
         volumes,
     )
+}
+
+/// An accessibility report as a page: planar faces coloured by how much
+/// of them flank milling reaches, the G-zones drawn, the directions used.
+pub fn access_page(title: &str, a: &PartAnalysis, report: &crate::access::AccessReport) -> String {
+    page(title, a, None, View::Access { access: report }, Vec::new())
 }
 
 fn page(

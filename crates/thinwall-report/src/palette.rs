@@ -76,7 +76,11 @@ pub fn table() -> BTreeMap<String, String> {
     for k in MachiningKind::ALL {
         m.insert(format!("machining.{}", k.name()), hex(machining(*k)));
     }
-    let named: [(&str, [u8; 3]); 11] = [
+    let named: [(&str, [u8; 3]); 15] = [
+        ("access.advisable", [90, 190, 110]),
+        ("access.partial", [240, 170, 60]),
+        ("access.blocked", [215, 70, 60]),
+        ("access.closed", [120, 120, 130]),
         ("other", OTHER),
         ("selected", [255, 60, 30]),
         ("plan.large", plan_class("large")),
