@@ -178,6 +178,32 @@ int main(int argc, char **argv) {
                           "feature past the end is out of range");
         tw_plan_free(plan);
     }
+    /* Flank milling of the planar faces: which are advisable. */
+    tw_access_result *acc = NULL;
+    st = tw_access(part, NULL, 0.0, 0.0, &acc);
+    failures += check(st == TW_OK && acc != NULL, "access computed");
+    if (acc) {
+        size_t na = tw_access_face_count(acc), advisable = 0;
+        for (size_t i = 0; i < na; i++) {
+            uint64_t id = 0;
+            tw_face_nature nature;
+            double area = 0.0, reached = 0.0;
+            bool ok = false;
+            failures += check(tw_access_face(acc, i, &id, &nature, &area, &reached, &ok) == TW_OK,
+                              "access face read");
+            failures += check(reached >= 0.0 && reached <= 1.0 + 1e-9 && area > 0.0, "access figures");
+            advisable += ok ? 1 : 0;
+        }
+        printf("flank milling: %zu of %zu planar faces advisable\n", advisable, na);
+        failures += check(tw_access_face(acc, na, NULL, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
+                          "access face past the end is out of range");
+        tw_access_free(acc);
+    }
+    tw_access_result *bad_access = NULL;
+    failures += check(tw_access(part, NULL, -1.0, 0.0, &bad_access) == TW_ERR_INVALID_ARGUMENT &&
+                          bad_access == NULL,
+                      "a negative tool diameter is an invalid argument");
+
     tw_plan_result *bad = NULL;
     failures += check(tw_plan(part, NULL, "[[rule]]\nname = 1\n", &bad) == TW_ERR_INVALID_CONFIG && bad == NULL,
                       "a bad rule text is an invalid config");

@@ -30,6 +30,15 @@ typedef enum tw_connection_kind {
   TW_CONNECTION_CROSSING = 1,
 } tw_connection_kind;
 
+// A planar face's nature for flank milling.
+typedef enum tw_face_nature {
+  // Every edge rises: no way in along its plane.
+  TW_FACE_CLOSED = 0,
+  // No edge rises.
+  TW_FACE_OPEN = 1,
+  TW_FACE_SEMI_OPEN = 2,
+} tw_face_nature;
+
 // What a machining feature of the plan is.
 typedef enum tw_feature_class {
   // A step-approach layer `H_RF` tall.
@@ -90,6 +99,10 @@ typedef enum tw_status {
   TW_ERR_PANIC = 99,
 } tw_status;
 
+// An accessibility result (opaque). Immutable; safe to share between
+// threads.
+typedef struct tw_access_result tw_access_result;
+
 // The classification of some volumes (opaque). Immutable; safe to share
 // between threads. Strings it returns live as long as it does.
 typedef struct tw_classification tw_classification;
@@ -123,6 +136,39 @@ const char *tw_version(void);
 
 // Free a string returned by Thinwall (`tw_result_to_json`). NULL is allowed.
 void tw_string_free(char *s);
+
+// Flank milling of every planar face of `part` in the set-up of `opt`
+// (NULL for the defaults: up +Z): a tool of `tool_diameter` mm (0 for the
+// default Ø12; obstacles count that far above a face), a face advisable
+// when at least `threshold` of it is reached (0 for the default 0.95). A
+// negative diameter or a threshold above 1 is `TW_ERR_INVALID_ARGUMENT`.
+// On success `*out` owns a result to free with `tw_access_free`.
+enum tw_status tw_access(const struct tw_part *part,
+                         const struct tw_options *opt,
+                         double tool_diameter,
+                         double threshold,
+                         struct tw_access_result **out);
+
+// Free an accessibility result. NULL is allowed.
+void tw_access_free(struct tw_access_result *result);
+
+// The result as JSON (`thinwall/access/1`, as the CLI prints it).
+// `*out_json` is a new string to free with `tw_string_free`.
+enum tw_status tw_access_to_json(const struct tw_access_result *result, char **out_json);
+
+// Number of planar faces judged (0 for NULL).
+size_t tw_access_face_count(const struct tw_access_result *result);
+
+// Planar face `i`: its STEP entity id, nature, area (mm²), the fraction
+// of it flank milling reaches (0–1) and whether that makes it advisable.
+// Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+enum tw_status tw_access_face(const struct tw_access_result *result,
+                              size_t i,
+                              uint64_t *step_id,
+                              enum tw_face_nature *nature,
+                              double *area_mm2,
+                              double *reached,
+                              bool *advisable);
 
 // Classify `n_volumes` volumes (each a part read from its own STEP file)
 // against `part`. `before` holds `n_before` pairs `(a, b)` as `2·n_before`

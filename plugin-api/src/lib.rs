@@ -8,6 +8,7 @@
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)] // every function documents its contract in the header
 
+mod access;
 mod classify;
 mod error;
 mod options;
@@ -15,6 +16,7 @@ mod part;
 mod plan;
 mod result;
 
+pub use access::*;
 pub use classify::*;
 pub use error::{tw_last_error_message, tw_status};
 pub use options::*;

@@ -1,0 +1,145 @@
+//! `tw_access`: which planar faces of a part can be flank milled (their
+//! G-zones, issue 16), with per-face accessors and the same JSON as
+//! `thinwall access`.
+
+use crate::error::{construct, count, free, guard, json_into, null, tw_status};
+use crate::options::tw_options;
+use crate::part::tw_part;
+use std::ffi::c_char;
+use thinwall_access::{FlankOptions, Nature};
+use thinwall_analysis::PartAnalysis;
+use thinwall_report::access::AccessReport;
+
+/// An accessibility result (opaque). Immutable; safe to share between
+/// threads.
+pub struct tw_access_result {
+    report: AccessReport,
+}
+
+/// A planar face's nature for flank milling.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum tw_face_nature {
+    /// Every edge rises: no way in along its plane.
+    TW_FACE_CLOSED = 0,
+    /// No edge rises.
+    TW_FACE_OPEN = 1,
+    TW_FACE_SEMI_OPEN = 2,
+}
+
+/// Flank milling of every planar face of `part` in the set-up of `opt`
+/// (NULL for the defaults: up +Z): a tool of `tool_diameter` mm (0 for the
+/// default Ø12; obstacles count that far above a face), a face advisable
+/// when at least `threshold` of it is reached (0 for the default 0.95). A
+/// negative diameter or a threshold above 1 is `TW_ERR_INVALID_ARGUMENT`.
+/// On success `*out` owns a result to free with `tw_access_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_access(
+    part: *const tw_part,
+    opt: *const tw_options,
+    tool_diameter: f64,
+    threshold: f64,
+    out: *mut *mut tw_access_result,
+) -> tw_status {
+    construct(out, || {
+        if part.is_null() {
+            return Err(null("part"));
+        }
+        let mut options = FlankOptions::default();
+        if tool_diameter != 0.0 {
+            if !(tool_diameter.is_finite() && tool_diameter > 0.0) {
+                return Err((
+                    tw_status::TW_ERR_INVALID_ARGUMENT,
+                    format!("tool_diameter must be a positive length, got {tool_diameter}"),
+                ));
+            }
+            options.tool_diameter = tool_diameter;
+        }
+        if threshold != 0.0 {
+            if !(threshold > 0.0 && threshold <= 1.0) {
+                return Err((
+                    tw_status::TW_ERR_INVALID_ARGUMENT,
+                    format!("threshold must lie in (0, 1], got {threshold}"),
+                ));
+            }
+            options.threshold = threshold;
+        }
+        let defaults = tw_options::default();
+        let o = if opt.is_null() { &defaults } else { &*opt };
+        let p = &*part;
+        let setup = o.request.setup.clone();
+        let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
+        let mesh = thinwall_report::html::part_mesh(&p.part);
+        let faces = thinwall_access::flank_milling(&a, &mesh, &options);
+        Ok(tw_access_result {
+            report: AccessReport::new(&p.name, setup.up, options, faces),
+        })
+    })
+}
+
+/// Free an accessibility result. NULL is allowed.
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_free(result: *mut tw_access_result) {
+    free(result)
+}
+
+/// The result as JSON (`thinwall/access/1`, as the CLI prints it).
+/// `*out_json` is a new string to free with `tw_string_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_to_json(
+    result: *const tw_access_result,
+    out_json: *mut *mut c_char,
+) -> tw_status {
+    json_into(result, out_json, |r| r.report.to_json())
+}
+
+/// Number of planar faces judged (0 for NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_face_count(result: *const tw_access_result) -> usize {
+    count(result, |r| r.report.planar_faces.len())
+}
+
+/// Planar face `i`: its STEP entity id, nature, area (mm²), the fraction
+/// of it flank milling reaches (0–1) and whether that makes it advisable.
+/// Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_face(
+    result: *const tw_access_result,
+    i: usize,
+    step_id: *mut u64,
+    nature: *mut tw_face_nature,
+    area_mm2: *mut f64,
+    reached: *mut f64,
+    advisable: *mut bool,
+) -> tw_status {
+    guard(|| {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let faces = &(*result).report.planar_faces;
+        let f = faces.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("face {i} out of range ({} faces)", faces.len()),
+        ))?;
+        if !step_id.is_null() {
+            *step_id = f.face;
+        }
+        if !nature.is_null() {
+            *nature = match f.nature {
+                Nature::Closed => tw_face_nature::TW_FACE_CLOSED,
+                Nature::Open => tw_face_nature::TW_FACE_OPEN,
+                Nature::SemiOpen => tw_face_nature::TW_FACE_SEMI_OPEN,
+            };
+        }
+        if !area_mm2.is_null() {
+            *area_mm2 = f.area_mm2;
+        }
+        if !reached.is_null() {
+            *reached = f.visibility;
+        }
+        if !advisable.is_null() {
+            *advisable = f.advisable;
+        }
+        Ok(())
+    })
+}
