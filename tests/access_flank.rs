@@ -157,3 +157,70 @@ fn every_shared_thin_walled_part_runs() {
     }
     assert!(faces > 500, "{faces}");
 }
+
+/// `fixtures/access/plate_with_block.step` (scripts/make_access_fixtures.py):
+/// a 100 × 60 plate with a 10 × 10 block on its top at x 40..50, y 20..30.
+/// The top face (5900 mm²) is shaded behind the block, by construction:
+/// towards −y 200 mm², +y 300, −x 400, +x 500. The smallest comes first,
+/// and alone leaves 1 − 200/5900 = 96.6 % reached: advisable after one
+/// direction. With a Ø12 tool's radius widening the block by 6 to each
+/// side, −y shades x 34..56 from the block's far side down, y 0..30:
+/// 22 × 30 − the block's own 100 = 560 mm² (90.5 % reached: a second
+/// direction, +y, is needed: 22 × 40 − 100 = 780, together 2 × 6 × 10 =
+/// 120 left beside the block).
+#[test]
+fn a_block_on_a_plate_shades_its_strips_by_construction() {
+    let path = common::root().join("fixtures/access/plate_with_block.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let check = |part: &thinwall_brep::Part, up: [f64; 3], turn: &nalgebra::Rotation3<f64>| {
+        let top = access(part, up)
+            .into_iter()
+            .find(|f| (f.area_mm2 - 5900.0).abs() < 1e-6 * 5900.0)
+            .expect("the plate's top face");
+        assert_eq!(top.nature, Nature::SemiOpen);
+        let mut l: Vec<f64> = top
+            .candidates
+            .iter()
+            .filter(|c| c.priority == 1)
+            .map(|c| c.l_zone_mm2)
+            .collect();
+        l.sort_by(f64::total_cmp);
+        for (got, want) in l.iter().zip([200.0, 300.0, 400.0, 500.0]) {
+            assert!((got - want).abs() <= 1e-6 * want, "L-zones {l:?}");
+        }
+        assert_eq!(l.len(), 4, "{l:?}");
+        assert_eq!(top.used.len(), 1);
+        assert!((top.visibility - (1.0 - 200.0 / 5900.0)).abs() < 1e-9);
+        assert!(top.advisable);
+        let toward = turn * nalgebra::Vector3::new(0.0, -1.0, 0.0);
+        assert!(nalgebra::Vector3::from(top.used[0].direction).dot(&toward) > 1.0 - 1e-9);
+        let setup = Setup::new(up, Machine::ThreeAxis).unwrap();
+        let a = PartAnalysis::new(part, setup);
+        let mesh = thinwall_report::html::part_mesh(part);
+        let options = FlankOptions {
+            tool_radius: true,
+            ..FlankOptions::default()
+        };
+        let widened = flank_milling(&a, &mesh, &options)
+            .into_iter()
+            .find(|f| f.face == top.face)
+            .unwrap();
+        let want = [(560.0, 560.0), (780.0, 120.0)];
+        assert_eq!(widened.used.len(), 2, "{:?}", widened.used);
+        for (u, (l, g)) in widened.used.iter().zip(want) {
+            assert!((u.l_zone_mm2 - l).abs() <= 1e-6 * l, "{:?}", widened.used);
+            assert!((u.g_zone_mm2 - g).abs() <= 1e-6 * g, "{:?}", widened.used);
+        }
+        assert!(widened.advisable);
+    };
+    check(
+        &read(&path),
+        [0.0, 0.0, 1.0],
+        &nalgebra::Rotation3::identity(),
+    );
+    let (r, t) = common::rigid_motion(7);
+    let (turned, _) = common::turned_step(&text, &r, &t);
+    let (tpart, _) = thinwall_step::read_bytes(turned.as_bytes(), "turned").unwrap();
+    let up = r * nalgebra::Vector3::new(0.0, 0.0, 1.0);
+    check(&tpart, [up.x, up.y, up.z], &r);
+}
