@@ -143,8 +143,27 @@ pub fn flank_milling(
     mesh: &Mesh,
     options: &FlankOptions,
 ) -> Vec<PlanarFaceAccess> {
+    let boxes = mesh_boxes(mesh);
     a.planar_faces()
-        .map(|pf| face_access(a, mesh, pf.face, &pf.frame, options))
+        .map(|pf| face_access(a, mesh, &boxes, pf.face, &pf.frame, options))
+        .collect()
+}
+
+/// Each mesh face's box (min, max), to skip faces far from a slab.
+fn mesh_boxes(mesh: &Mesh) -> Vec<([f64; 3], [f64; 3])> {
+    mesh.faces
+        .iter()
+        .map(|fm| {
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            for &i in fm.triangles.iter().flatten() {
+                let p = mesh.points[i as usize];
+                for k in 0..3 {
+                    lo[k] = lo[k].min(p[k]);
+                    hi[k] = hi[k].max(p[k]);
+                }
+            }
+            (lo, hi)
+        })
         .collect()
 }
 
@@ -159,6 +178,7 @@ struct SketchEdge {
 fn face_access(
     a: &PartAnalysis,
     mesh: &Mesh,
+    boxes: &[([f64; 3], [f64; 3])],
     f: FaceId,
     frame: &Frame,
     options: &FlankOptions,
@@ -187,7 +207,7 @@ fn face_access(
             })
         })
         .collect();
-    let obstacles = obstacles(a, mesh, f, frame, &region, options.tool_diameter);
+    let obstacles = obstacles(a, mesh, boxes, f, frame, &region, options.tool_diameter);
     let n_obstacles = obstacles.len();
     barriers.extend(obstacles);
     let radius = if options.tool_radius {
@@ -468,9 +488,11 @@ fn outward(region: &MultiPolygon<f64>, p: [f64; 2], q: [f64; 2]) -> [f64; 2] {
 /// The part's material above the face (outward side) within `reach`, near
 /// it: each other face's triangles cut to the slab, projected, as a convex
 /// hull.
+#[allow(clippy::too_many_arguments)]
 fn obstacles(
     a: &PartAnalysis,
     mesh: &Mesh,
+    boxes: &[([f64; 3], [f64; 3])],
     f: FaceId,
     frame: &Frame,
     region: &MultiPolygon<f64>,
@@ -486,7 +508,39 @@ fn obstacles(
     };
     let height = |p: &Point3| frame.to_local(p).z;
     let mut out = Vec::new();
-    for fm in mesh.faces.iter().filter(|fm| fm.face != f) {
+    // A face whose box lies wholly below the slab, above it or beside the
+    // face's reach cannot give an obstacle.
+    let may_reach = |(lo3, hi3): &([f64; 3], [f64; 3])| {
+        if lo3[0] > hi3[0] {
+            return false;
+        }
+        let (mut l, mut h) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for c in 0..8 {
+            let p = Point3::new(
+                if c & 1 == 0 { lo3[0] } else { hi3[0] },
+                if c & 2 == 0 { lo3[1] } else { hi3[1] },
+                if c & 4 == 0 { lo3[2] } else { hi3[2] },
+            );
+            let q = frame.to_local(&p);
+            for (k, v) in [q.x, q.y, q.z].into_iter().enumerate() {
+                l[k] = l[k].min(v);
+                h[k] = h[k].max(v);
+            }
+        }
+        h[2] > eps
+            && l[2] <= reach
+            && h[0] >= lo.x - reach
+            && l[0] <= hi.x + reach
+            && h[1] >= lo.y - reach
+            && l[1] <= hi.y + reach
+    };
+    for fm in mesh
+        .faces
+        .iter()
+        .zip(boxes)
+        .filter(|(fm, b)| fm.face != f && may_reach(b))
+        .map(|(fm, _)| fm)
+    {
         // The face's triangles in the slab, grouped where they share a
         // point: each connected piece is an obstacle of its own (a ring's
         // two sides are two obstacles, not one across the face).
