@@ -10,7 +10,7 @@ use thinwall_analysis::{Machine, PartAnalysis, Setup};
 fn access(part: &thinwall_brep::Part, up: [f64; 3]) -> Vec<PlanarFaceAccess> {
     let setup = Setup::new(up, Machine::ThreeAxis).unwrap();
     let a = PartAnalysis::new(part, setup);
-    let mesh = thinwall_report::html::part_mesh(part);
+    let mesh = thinwall_brep::tessellate::part_mesh(part);
     flank_milling(&a, &mesh, &FlankOptions::default())
 }
 
@@ -81,7 +81,7 @@ fn the_rib_tops_are_shut_in_by_the_flanges_and_the_flange_top_is_not() {
     let part = read(&common::root().join("fixtures/recognition/rib_grid_panel.step"));
     let setup = Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap();
     let a = PartAnalysis::new(&part, setup);
-    let mesh = thinwall_report::html::part_mesh(&part);
+    let mesh = thinwall_brep::tessellate::part_mesh(&part);
     for d in [4.0, 12.0] {
         let options = FlankOptions {
             tool_diameter: d,
@@ -196,7 +196,7 @@ fn a_block_on_a_plate_shades_its_strips_by_construction() {
         assert!(nalgebra::Vector3::from(top.used[0].direction).dot(&toward) > 1.0 - 1e-9);
         let setup = Setup::new(up, Machine::ThreeAxis).unwrap();
         let a = PartAnalysis::new(part, setup);
-        let mesh = thinwall_report::html::part_mesh(part);
+        let mesh = thinwall_brep::tessellate::part_mesh(part);
         let options = FlankOptions {
             tool_radius: true,
             ..FlankOptions::default()

@@ -248,7 +248,7 @@ fn access_page_colours_every_planar_face_and_outlines_g_zones() {
     let part = read(&path);
     let setup = Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap();
     let a = PartAnalysis::new(&part, setup.clone());
-    let mesh = html::part_mesh(&part);
+    let mesh = thinwall_brep::tessellate::part_mesh(&part);
     let options = thinwall_access::FlankOptions::default();
     let faces = thinwall_access::flank_milling(&a, &mesh, &options);
     let report =

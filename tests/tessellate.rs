@@ -17,7 +17,7 @@ mod common;
 
 use std::collections::{HashMap, HashSet};
 use thinwall_analysis::{PartAnalysis, Setup};
-use thinwall_brep::tessellate::{open_loop, tessellate, Mesh};
+use thinwall_brep::tessellate::{open_loop, part_mesh, Mesh};
 use thinwall_brep::{FaceId, Part};
 
 fn parts() -> Vec<std::path::PathBuf> {
@@ -113,8 +113,7 @@ fn every_shared_part_is_watertight_and_of_its_area() {
                 continue;
             }
         };
-        let size = part.bounding_box().diagonal();
-        let mesh = tessellate(&part, 1e-3 * size);
+        let mesh = part_mesh(&part);
         let a = PartAnalysis::new(&part, Setup::default());
         for fm in &mesh.faces {
             let face = part.face(fm.face);

@@ -69,7 +69,7 @@ pub unsafe extern "C" fn tw_access(
         let p = &*part;
         let setup = o.request.setup.clone();
         let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
-        let mesh = thinwall_report::html::part_mesh(&p.part);
+        let mesh = thinwall_brep::tessellate::part_mesh(&p.part);
         let faces = thinwall_access::flank_milling(&a, &mesh, &options);
         Ok(tw_access_result {
             report: AccessReport::new(&p.name, setup.up, options, faces),

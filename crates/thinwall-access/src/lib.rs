@@ -215,10 +215,16 @@ fn face_access(
     } else {
         0.0
     };
-    let mut candidates = candidates(&loops, &region);
-    for c in &mut candidates {
-        c.1 = zones::l_zone(&region, &barriers, c.0, radius).unsigned_area();
-    }
+    // Each candidate's L-zone once: its area orders the candidates, and
+    // the G-zone intersects the zones themselves.
+    let mut candidates: Vec<(Proposal, MultiPolygon<f64>)> = candidates(&loops, &region)
+        .into_iter()
+        .map(|mut c| {
+            let l = zones::l_zone(&region, &barriers, c.0, radius);
+            c.1 = l.unsigned_area();
+            (c, l)
+        })
+        .collect();
     // Priority, then the smallest L-zone (equal within 1e-6 of the face:
     // rounding must not reorder a turned copy), then the proposing edge
     // and the order of its proposals.
@@ -231,7 +237,7 @@ fn face_access(
             c.5,
         )
     };
-    candidates.sort_by_key(key);
+    candidates.sort_by_key(|(c, _)| key(c));
     let to_3d = |r: [f64; 2]| -> [f64; 3] { (frame.x * r[0] + frame.y * r[1]).into() };
     let mut out = PlanarFaceAccess {
         face: face.step_id,
@@ -248,7 +254,7 @@ fn face_access(
         obstacles: n_obstacles,
         candidates: candidates
             .iter()
-            .map(|c| Candidate {
+            .map(|(c, _)| Candidate {
                 direction: to_3d(c.0),
                 priority: c.2,
                 rule: c.3,
@@ -267,8 +273,9 @@ fn face_access(
         out.note = Some("closed face: every edge rises, no way in along its plane".into());
         return out;
     }
-    let dirs: Vec<[f64; 2]> = candidates.iter().map(|c| c.0).collect();
-    let (g, steps) = zones::g_zone(&region, &barriers, &dirs, radius, options.threshold);
+    let dirs: Vec<[f64; 2]> = candidates.iter().map(|(c, _)| c.0).collect();
+    let l_zones: Vec<MultiPolygon<f64>> = candidates.into_iter().map(|(_, l)| l).collect();
+    let (g, steps) = zones::g_zone(&region, &l_zones, options.threshold);
     out.used = steps
         .iter()
         .zip(&dirs)

@@ -70,24 +70,21 @@ pub struct Step {
     pub visibility: f64,
 }
 
-/// Directions taken in order until the visibility ratio reaches
-/// `threshold`: the G-zone (the intersection of their L-zones), and each
+/// Directions' L-zones (`l_zone`) taken in order until the visibility
+/// ratio reaches `threshold`: the G-zone (their intersection), and each
 /// step's figures. Stops after the first direction reaching it.
 pub fn g_zone(
     face: &MultiPolygon<f64>,
-    barriers: &[Barrier],
-    directions: &[[f64; 2]],
-    radius: f64,
+    l_zones: &[MultiPolygon<f64>],
     threshold: f64,
 ) -> (MultiPolygon<f64>, Vec<Step>) {
     let area = face.unsigned_area().max(1e-300);
     let mut g: Option<MultiPolygon<f64>> = None;
     let mut steps = Vec::new();
-    for &r in directions {
-        let l = l_zone(face, barriers, r, radius);
+    for l in l_zones {
         let next = match &g {
             None => l.clone(),
-            Some(g) => g.intersection(&l),
+            Some(g) => g.intersection(l),
         };
         let left = next.unsigned_area().min(area);
         steps.push(Step {
@@ -133,7 +130,11 @@ mod tests {
         assert!(rel(lx, 600.0) < 1e-9, "{lx}");
         let ly = l_zone(&face, &bs, [0.0, 1.0], 0.0).unsigned_area();
         assert!(rel(ly, 400.0) < 1e-9, "{ly}");
-        let (g, steps) = g_zone(&face, &bs, &[[1.0, 0.0], [0.0, 1.0]], 0.0, 0.999);
+        let ls = [
+            l_zone(&face, &bs, [1.0, 0.0], 0.0),
+            l_zone(&face, &bs, [0.0, 1.0], 0.0),
+        ];
+        let (g, steps) = g_zone(&face, &ls, 0.999);
         assert_eq!(steps.len(), 2);
         assert!(rel(g.unsigned_area(), 100.0) < 1e-9);
         assert!(steps[1].g_zone < steps[0].g_zone);
@@ -176,7 +177,12 @@ mod tests {
             points: vec![[40.0, 20.0], [50.0, 20.0], [50.0, 30.0], [40.0, 30.0]],
         };
         // +x leaves 600 of 6000: 90 %; with 0.85 one direction is enough.
-        let (_, steps) = g_zone(&face, &[obstacle], &[[1.0, 0.0], [0.0, 1.0]], 0.0, 0.85);
+        let bs = [obstacle];
+        let ls = [
+            l_zone(&face, &bs, [1.0, 0.0], 0.0),
+            l_zone(&face, &bs, [0.0, 1.0], 0.0),
+        ];
+        let (_, steps) = g_zone(&face, &ls, 0.85);
         assert_eq!(steps.len(), 1);
         assert!(rel(steps[0].visibility, 0.9) < 1e-12);
     }

@@ -378,7 +378,7 @@ fn plan_command(
             match format {
                 PageFormat::Svg => thinwall_report::svg::plan_picture(
                     &a,
-                    &thinwall_report::html::part_mesh(&model),
+                    &thinwall_brep::tessellate::part_mesh(&model),
                     &report.stiffness_features,
                     &plan,
                     &title,
@@ -472,7 +472,7 @@ fn access_command(
     )
     .map_err(Failure::usage)?;
     let a = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
-    let mesh = thinwall_report::html::part_mesh(&model);
+    let mesh = thinwall_brep::tessellate::part_mesh(&model);
     let faces = thinwall_access::flank_milling(&a, &mesh, &options);
     let report = thinwall_report::access::AccessReport::new(
         &part.display().to_string(),

@@ -41,7 +41,7 @@ pub fn recognition(
         RecognitionFormat::Json => report.to_json(),
         RecognitionFormat::Svg => {
             let a = thinwall_analysis::PartAnalysis::new(part, outcome.setup.clone());
-            let mesh = thinwall_report::html::part_mesh(part);
+            let mesh = thinwall_brep::tessellate::part_mesh(part);
             thinwall_report::svg::picture(&a, &mesh, &report.stiffness_features, title, 1000.0)
         }
         RecognitionFormat::Html => {

@@ -262,9 +262,8 @@
   const stiff = rec ? rec.stiffness_features : [];
   const mach = rec ? rec.machining_features : [];
   const featureFaces = (f) => facesOf(f.faces.concat(f.top_end_faces || []), f.body);
-  // The kind each face shows: walls first, then what is in or on them.
-  const faceKind = new Array(D.part.faces.length).fill(null);
-  for (const pass of [true, false]) for (const f of stiff) if (isWall(f.kind) === pass) for (const i of featureFaces(f)) faceKind[i] = f.kind;
+  // The kind each face shows, by the report's own rule (svg::face_kinds).
+  const faceKind = D.face_kinds || new Array(D.part.faces.length).fill(null);
   const kindColour = (i) => colour(faceKind[i] ? 'stiffness.' + faceKind[i] : 'other');
 
   function stiffRows(f) {

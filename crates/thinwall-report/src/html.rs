@@ -13,15 +13,12 @@ use crate::{ClassificationReport, RecognitionReport};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use thinwall_analysis::PartAnalysis;
-use thinwall_brep::tessellate::{tessellate, Mesh};
+use thinwall_brep::tessellate::{part_mesh, Mesh};
 use thinwall_brep::Part;
 use thinwall_plan::Plan;
 
 /// Version tag of the data block inside the page (`<script id="tw-data">`).
 pub const HTML_DATA_SCHEMA: &str = "thinwall/html-report/1";
-
-/// Chordal deviation of the pictures, relative to the part's diagonal.
-pub const PICTURE_DEVIATION: f64 = 1e-3;
 
 const TEMPLATE: &str = include_str!("../assets/report.html");
 const STYLE: &str = include_str!("../assets/report.css");
@@ -92,6 +89,10 @@ struct PageData<'a> {
     /// The recognition (also under a plan: it names the part's faces).
     #[serde(skip_serializing_if = "Option::is_none")]
     recognition: Option<&'a RecognitionReport>,
+    /// With a recognition: the kind of stiffness feature each face of
+    /// `part` shows (`svg::face_kinds`, the pictures' one rule).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    face_kinds: Vec<Option<thinwall_analysis::StiffnessKind>>,
     #[serde(flatten)]
     view: View<'a>,
     volumes: Vec<VolumeGeometry>,
@@ -100,12 +101,6 @@ struct PageData<'a> {
 /// Round to 1e-4 mm: the page's coordinates.
 fn round(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
-}
-
-/// The part's (or a volume's) triangles at the pictures' deviation.
-pub fn part_mesh(part: &Part) -> Mesh {
-    let size = part.bounding_box().diagonal().max(1e-9);
-    tessellate(part, PICTURE_DEVIATION * size)
 }
 
 /// A mesh as the page's geometry: each face with its own points.
@@ -232,6 +227,9 @@ fn page(
         size: part.bounding_box().diagonal(),
         palette: crate::palette::table(),
         part: geometry(part, &part_mesh(part)),
+        face_kinds: recognition
+            .map(|r| crate::svg::face_kinds(part, &r.stiffness_features))
+            .unwrap_or_default(),
         recognition,
         view,
         volumes,

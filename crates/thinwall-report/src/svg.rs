@@ -13,19 +13,30 @@ use thinwall_analysis::{PartAnalysis, StiffnessKind};
 use thinwall_brep::tessellate::Mesh;
 use thinwall_geom::{Point3, Vector3};
 
-/// The kind of feature each face (by step id) belongs to: walls first,
-/// then what is in or on them.
-pub(crate) fn face_kinds(features: &[crate::FeatureEntry]) -> HashMap<u64, StiffnessKind> {
-    let mut m = HashMap::new();
+/// The kind of feature each face of `part` belongs to (by position in
+/// `part.face_ids()`), the one rule every picture colours by: what lies in
+/// or on the walls first, then the walls over them, so a face a wall and a
+/// detail share shows the wall. Faces are matched by body and STEP id
+/// (instances of one solid share ids).
+pub fn face_kinds(
+    part: &thinwall_brep::Part,
+    features: &[crate::FeatureEntry],
+) -> Vec<Option<StiffnessKind>> {
+    let mut m: HashMap<(u32, u64), StiffnessKind> = HashMap::new();
     for pass in [false, true] {
         for f in features.iter().filter(|f| f.feature.kind.is_wall() == pass) {
             let tops = f.feature.top_end_faces.iter().flatten();
             for &s in f.feature.faces.iter().chain(tops) {
-                m.insert(s, f.feature.kind);
+                m.insert((f.feature.body, s), f.feature.kind);
             }
         }
     }
-    m
+    part.face_ids()
+        .map(|id| {
+            let face = part.face(id);
+            m.get(&(face.body.0, face.step_id)).copied()
+        })
+        .collect()
 }
 
 /// Something to draw: a mesh, a colour per face (by position in
@@ -74,13 +85,13 @@ fn part_colours(
     mesh: &Mesh,
     features: &[crate::FeatureEntry],
 ) -> (Vec<[u8; 3]>, Vec<Key>) {
-    let kinds = face_kinds(features);
+    let kinds = face_kinds(a.part(), features);
     let mut used: BTreeMap<&'static str, (usize, [u8; 3])> = BTreeMap::new();
     let colours = mesh
         .faces
         .iter()
         .map(|fm| {
-            let kind = kinds.get(&a.part().face(fm.face).step_id).copied();
+            let kind = kinds[fm.face.index()];
             let c = crate::palette::stiffness(kind);
             used.entry(kind.map_or("other", |k| k.name()))
                 .or_insert((0, c))
@@ -130,7 +141,7 @@ pub fn plan_picture(
             let colour = crate::palette::plan_class(f.size_class.name());
             Some((
                 rank.get(f.id.as_str()).copied().unwrap_or(0),
-                crate::html::part_mesh(&part),
+                thinwall_brep::tessellate::part_mesh(&part),
                 colour,
             ))
         })
@@ -175,13 +186,16 @@ pub fn classification_picture(
     title: &str,
     width: f64,
 ) -> String {
-    let part_mesh = crate::html::part_mesh(a.part());
+    let part_mesh = thinwall_brep::tessellate::part_mesh(a.part());
     let mut layers = vec![Layer {
         colours: vec![crate::palette::OTHER; part_mesh.faces.len()],
         mesh: &part_mesh,
         opacity: 0.3,
     }];
-    let meshes: Vec<Mesh> = volumes.iter().map(|p| crate::html::part_mesh(p)).collect();
+    let meshes: Vec<Mesh> = volumes
+        .iter()
+        .map(|p| thinwall_brep::tessellate::part_mesh(p))
+        .collect();
     let (closed, open) = (crate::palette::CLOSED, crate::palette::OPEN);
     let mut labels = Vec::new();
     for ((c, part), mesh) in report.volumes.iter().zip(volumes).zip(&meshes) {
