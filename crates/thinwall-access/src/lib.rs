@@ -15,6 +15,7 @@
 //! Everything is measured in the face's own plane and reported in 3-D
 //! directions: a turned part gives the same faces, ratios and verdicts.
 
+pub mod reach;
 pub mod zones;
 
 use geo::{Area, BoundingRect, ConvexHull, Intersects, MultiPoint, MultiPolygon, Point};

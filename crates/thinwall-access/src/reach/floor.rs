@@ -1,0 +1,196 @@
+//! Reach of a floor (a planar face square to the tool axis), which the tool
+//! meets with its end: a point is reached when some free position of the
+//! tool's axis lies within one radius of it. The free positions are the
+//! plane less every obstacle grown by the cutter's radius (material above
+//! the floor within the cutting length) or the holder's (above that); the
+//! reached floor is the free positions grown again by the radius (a
+//! morphological opening). Disks are 128-gons with their corners on the
+//! circle, one on the face's own x axis: a straight boundary square to the
+//! face's axes comes out exact (others within 3·10⁻⁴ of the radius), a
+//! sharp inner corner's uncut area r²(1 − π/4) 0.15 % high.
+
+use super::scene::{clip, Scene};
+use super::{Ctx, Judged};
+use geo::{Area, BooleanOps, BoundingRect, ConvexHull, Coord, MultiPoint, MultiPolygon, Point};
+use geo::{Polygon, Rect};
+use std::collections::BTreeMap;
+use thinwall_analysis::PlanarFace;
+use thinwall_geom::{Frame, Vector3};
+
+/// Corners of the polygon standing for a disk.
+const DISK_CORNERS: usize = 128;
+
+pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
+    let axis = scene.frame.z;
+    let Some(frame) = Frame::from_axis(pf.frame.origin, axis, Some(pf.frame.x)) else {
+        return Judged::default();
+    };
+    let region = pf.polygon_in(&frame);
+    let area = region.unsigned_area();
+    let Some(rect) = region.bounding_rect() else {
+        return Judged::default();
+    };
+    let tool = &ctx.tool;
+    let r = 0.5 * tool.diameter;
+    let big = 0.5 * tool.holder_diameter;
+    let corners: Vec<[f64; 3]> = region
+        .iter()
+        .flat_map(|p| p.exterior().coords().copied().collect::<Vec<_>>())
+        .map(|c| scene.local(&frame.to_world(&Vector3::new(c.x, c.y, 0.0))))
+        .collect();
+    let h = corners
+        .iter()
+        .map(|c| c[2])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let reach = r + big;
+    let lo = [
+        corners.iter().map(|c| c[0]).fold(f64::INFINITY, f64::min) - reach,
+        corners.iter().map(|c| c[1]).fold(f64::INFINITY, f64::min) - reach,
+    ];
+    let hi = [
+        corners.iter().map(|c| c[0]).fold(f64::NEG_INFINITY, f64::max) + reach,
+        corners.iter().map(|c| c[1]).fold(f64::NEG_INFINITY, f64::max) + reach,
+    ];
+    let to_face = |p: [f64; 2]| -> [f64; 2] {
+        let w = scene.frame.to_world(&Vector3::new(p[0], p[1], h));
+        let l = frame.to_local(&w);
+        [l.x, l.y]
+    };
+    let (small_disk, holder_disk) = (disk(r), disk(big));
+    let mut groups: BTreeMap<(u32, bool), Vec<MultiPolygon<f64>>> = BTreeMap::new();
+    for k in scene.near(lo, hi, h + ctx.touch) {
+        let t = &scene.tris[k as usize];
+        if t.face == own {
+            continue;
+        }
+        let top = h + tool.cutting_length;
+        for (holder, a, b, d) in [
+            (false, h + ctx.touch, top, &small_disk),
+            (true, top + ctx.touch, f64::INFINITY, &holder_disk),
+        ] {
+            let pts: Vec<[f64; 2]> = clip(&t.p, a, b).into_iter().map(to_face).collect();
+            if let Some(p) = grown(&pts, d) {
+                groups
+                    .entry((t.face, holder))
+                    .or_default()
+                    .push(MultiPolygon::new(vec![p]));
+            }
+        }
+    }
+    let groups: Vec<((u32, bool), MultiPolygon<f64>)> = groups
+        .into_iter()
+        .map(|(k, v)| (k, union_all(v)))
+        .collect();
+    let stopped = union_all(groups.iter().map(|(_, g)| g.clone()).collect());
+    let margin = 1.01 * r + 1e-6;
+    let frame_box = Rect::new(
+        Coord {
+            x: rect.min().x - margin,
+            y: rect.min().y - margin,
+        },
+        Coord {
+            x: rect.max().x + margin,
+            y: rect.max().y + margin,
+        },
+    );
+    let free = MultiPolygon::new(vec![frame_box.to_polygon()]).difference(&stopped);
+    let mut pieces = vec![free.clone()];
+    for poly in &free {
+        for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
+            for l in ring.lines() {
+                if let Some(p) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], &small_disk) {
+                    pieces.push(MultiPolygon::new(vec![p]));
+                }
+            }
+        }
+    }
+    let reached = region.intersection(&union_all(pieces));
+    let lost = region.difference(&reached);
+    let mut out = Judged {
+        area,
+        reached: reached.unsigned_area().min(area),
+        ..Judged::default()
+    };
+    if area - out.reached > 1e-9 * area {
+        for (key, g) in &groups {
+            let a = lost.intersection(g).unsigned_area();
+            if a > 0.0 {
+                *out.blockers.entry(*key).or_default() += a;
+            }
+        }
+        out.unreachable = lost
+            .iter()
+            .flat_map(|p| std::iter::once(p.exterior()).chain(p.interiors()))
+            .map(|ring| {
+                ring.coords()
+                    .map(|c| frame.to_world(&Vector3::new(c.x, c.y, 0.0)).into())
+                    .collect()
+            })
+            .collect();
+    }
+    out
+}
+
+/// A disk of radius `r` as a polygon with its corners on the circle, one
+/// on the x axis.
+pub fn disk(r: f64) -> Vec<[f64; 2]> {
+    let step = std::f64::consts::TAU / DISK_CORNERS as f64;
+    (0..DISK_CORNERS)
+        .map(|k| {
+            let t = step * k as f64;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+/// The convex `pts` grown by the convex `disk` (the hull of their sums).
+fn grown(pts: &[[f64; 2]], disk: &[[f64; 2]]) -> Option<Polygon<f64>> {
+    if pts.is_empty() || disk.is_empty() {
+        return None;
+    }
+    let sums: Vec<Point<f64>> = pts
+        .iter()
+        .flat_map(|p| disk.iter().map(move |d| Point::new(p[0] + d[0], p[1] + d[1])))
+        .collect();
+    let hull = MultiPoint::from(sums).convex_hull();
+    (hull.unsigned_area() > 0.0).then_some(hull)
+}
+
+/// The union of many polygons, pairwise up a balanced tree.
+pub fn union_all(mut parts: Vec<MultiPolygon<f64>>) -> MultiPolygon<f64> {
+    if parts.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    while parts.len() > 1 {
+        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+        let mut it = parts.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => a.union(&b),
+                None => a,
+            });
+        }
+        parts = next;
+    }
+    parts.pop().unwrap_or_else(|| MultiPolygon::new(vec![]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_disk_polygon_spans_the_diameter() {
+        let d = disk(6.0);
+        let xs: Vec<f64> = d.iter().map(|c| c[0]).collect();
+        let ys: Vec<f64> = d.iter().map(|c| c[1]).collect();
+        let span = |v: &[f64]| v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min);
+        assert!((span(&xs) - 12.0).abs() < 1e-12 && (span(&ys) - 12.0).abs() < 1e-12);
+        let p = Polygon::new(
+            d.iter().map(|c| Coord { x: c[0], y: c[1] }).collect(),
+            vec![],
+        );
+        let a = p.unsigned_area();
+        assert!(a < std::f64::consts::PI * 36.0 && a > 0.9995 * std::f64::consts::PI * 36.0);
+    }
+}

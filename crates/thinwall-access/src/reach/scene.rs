@@ -1,0 +1,234 @@
+//! The part's triangles in a tool axis's frame (`z` along the axis, up),
+//! bucketed by their footprint, and what stops a tool whose tip runs along
+//! a level line.
+
+use super::interval::{line_near_convex, Span};
+use super::Tool;
+use thinwall_brep::tessellate::Mesh;
+use thinwall_geom::{Frame, Point3, Vector3};
+
+/// One triangle of the part, in the axis frame.
+pub struct Tri {
+    pub p: [[f64; 3]; 3],
+    /// Index into the mesh's faces.
+    pub face: u32,
+    lo: [f64; 3],
+    hi: [f64; 3],
+}
+
+/// Triangles in the frame of one tool axis.
+pub struct Scene {
+    pub frame: Frame,
+    pub tris: Vec<Tri>,
+    origin: [f64; 2],
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    cells: Vec<Vec<u32>>,
+}
+
+/// Buckets per side of the footprint grid, at most.
+const GRID_CELLS: f64 = 96.0;
+
+impl Scene {
+    /// `frame.z` is the tool axis; the origin near the part keeps the
+    /// coordinates small.
+    pub fn new(mesh: &Mesh, frame: Frame) -> Self {
+        let mut tris = Vec::new();
+        for (k, fm) in mesh.faces.iter().enumerate() {
+            for t in &fm.triangles {
+                let p = t.map(|i| {
+                    let l = frame.to_local(&mesh.points[i as usize]);
+                    [l.x, l.y, l.z]
+                });
+                let mut lo = p[0];
+                let mut hi = p[0];
+                for q in &p[1..] {
+                    for c in 0..3 {
+                        lo[c] = lo[c].min(q[c]);
+                        hi[c] = hi[c].max(q[c]);
+                    }
+                }
+                tris.push(Tri {
+                    p,
+                    face: k as u32,
+                    lo,
+                    hi,
+                });
+            }
+        }
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for t in &tris {
+            for c in 0..2 {
+                lo[c] = lo[c].min(t.lo[c]);
+                hi[c] = hi[c].max(t.hi[c]);
+            }
+        }
+        if tris.is_empty() {
+            lo = [0.0; 2];
+            hi = [1.0; 2];
+        }
+        let cell = ((hi[0] - lo[0]).max(hi[1] - lo[1]) / GRID_CELLS).max(1e-6);
+        let nx = ((hi[0] - lo[0]) / cell).floor() as usize + 1;
+        let ny = ((hi[1] - lo[1]) / cell).floor() as usize + 1;
+        let mut scene = Self {
+            frame,
+            tris,
+            origin: lo,
+            cell,
+            nx,
+            ny,
+            cells: vec![Vec::new(); nx * ny],
+        };
+        for k in 0..scene.tris.len() {
+            let (a, b) = scene.range(scene.tris[k].lo, scene.tris[k].hi);
+            for j in a[1]..=b[1] {
+                for i in a[0]..=b[0] {
+                    scene.cells[j * nx + i].push(k as u32);
+                }
+            }
+        }
+        scene
+    }
+
+    fn range(&self, lo: [f64; 3], hi: [f64; 3]) -> ([usize; 2], [usize; 2]) {
+        let idx = |v: f64, o: f64, n: usize| -> usize {
+            (((v - o) / self.cell).floor().max(0.0) as usize).min(n - 1)
+        };
+        (
+            [
+                idx(lo[0], self.origin[0], self.nx),
+                idx(lo[1], self.origin[1], self.ny),
+            ],
+            [
+                idx(hi[0], self.origin[0], self.nx),
+                idx(hi[1], self.origin[1], self.ny),
+            ],
+        )
+    }
+
+    pub fn local(&self, p: &Point3) -> [f64; 3] {
+        let l = self.frame.to_local(p);
+        [l.x, l.y, l.z]
+    }
+
+    pub fn local_vector(&self, v: &Vector3) -> [f64; 3] {
+        let l = self.frame.vector_to_local(v);
+        [l.x, l.y, l.z]
+    }
+
+    /// Triangles whose footprint meets the rectangle `lo..hi` and whose top
+    /// is above `zmin`, each once, in index order.
+    pub fn near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64) -> Vec<u32> {
+        let (a, b) = self.range([lo[0], lo[1], 0.0], [hi[0], hi[1], 0.0]);
+        let mut out = Vec::new();
+        for j in a[1]..=b[1] {
+            for i in a[0]..=b[0] {
+                for &k in &self.cells[j * self.nx + i] {
+                    let t = &self.tris[k as usize];
+                    if t.hi[2] > zmin
+                        && t.hi[0] >= lo[0]
+                        && t.lo[0] <= hi[0]
+                        && t.hi[1] >= lo[1]
+                        && t.lo[1] <= hi[1]
+                    {
+                        out.push(k);
+                    }
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
+    /// Heights of the corners of `tris`.
+    pub fn heights<'a>(&'a self, tris: &'a [u32]) -> impl Iterator<Item = f64> + 'a {
+        tris.iter()
+            .flat_map(|&k| self.tris[k as usize].p.iter().map(|p| p[2]))
+    }
+}
+
+/// What stops the tool along a line: the span of the line's parameter,
+/// the triangle, and whether the holder (not the cutter) meets it.
+#[derive(Clone, Copy, Debug)]
+pub struct Block {
+    pub span: Span,
+    pub tri: u32,
+    pub holder: bool,
+}
+
+/// Where a tool whose tip centre runs along `q0 + s·e` (`q0[2]` its height,
+/// `e` level and unit) would cut into the triangles `cands`: the cutter
+/// (radius r, from the tip up to the cutting length) or the holder above
+/// it. Material within `touch` of the tool's surface only touches it.
+pub fn blocked(
+    scene: &Scene,
+    cands: &[u32],
+    q0: [f64; 3],
+    e: [f64; 2],
+    tool: &Tool,
+    touch: f64,
+    out: &mut Vec<Block>,
+) {
+    let h = q0[2];
+    let (r, big) = (0.5 * tool.diameter, 0.5 * tool.holder_diameter);
+    let top = h + tool.cutting_length;
+    let q = [q0[0], q0[1]];
+    for &k in cands {
+        let t = &scene.tris[k as usize];
+        if t.hi[2] <= h + touch {
+            continue;
+        }
+        let low = clip(&t.p, h + touch, top);
+        if let Some(span) = line_near_convex(q, e, &low, r - touch) {
+            out.push(Block {
+                span,
+                tri: k,
+                holder: false,
+            });
+        }
+        if t.hi[2] > top + touch {
+            let high = clip(&t.p, top + touch, f64::INFINITY);
+            if let Some(span) = line_near_convex(q, e, &high, big - touch) {
+                out.push(Block {
+                    span,
+                    tri: k,
+                    holder: true,
+                });
+            }
+        }
+    }
+}
+
+/// The triangle's part with `lo < z ≤ hi`, its corners seen from above.
+pub(super) fn clip(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> Vec<[f64; 2]> {
+    let mut poly: Vec<[f64; 3]> = tri.to_vec();
+    for (limit, above) in [(lo, true), (hi, false)] {
+        if !limit.is_finite() {
+            continue;
+        }
+        let inside = |p: &[f64; 3]| if above { p[2] > limit } else { p[2] <= limit };
+        let mut next = Vec::with_capacity(poly.len() + 2);
+        for k in 0..poly.len() {
+            let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
+            let (ip, iq) = (inside(&p), inside(&q));
+            if ip {
+                next.push(p);
+            }
+            if ip != iq {
+                let t = (limit - p[2]) / (q[2] - p[2]);
+                next.push([
+                    p[0] + (q[0] - p[0]) * t,
+                    p[1] + (q[1] - p[1]) * t,
+                    limit,
+                ]);
+            }
+        }
+        poly = next;
+        if poly.is_empty() {
+            break;
+        }
+    }
+    poly.iter().map(|p| [p[0], p[1]]).collect()
+}

@@ -1,0 +1,257 @@
+//! Reach with obstruction (issue 16 §1) on fixtures whose answers follow
+//! from their construction (scripts/make_access_fixtures.py, hand values in
+//! docs/ACCESS.md), the same on turned copies.
+
+mod common;
+
+use thinwall_access::reach::{reach, Contact, FaceReach, ReachOptions, Tool, ToolPart};
+use thinwall_analysis::{Machine, PartAnalysis, Setup};
+use thinwall_brep::Part;
+
+fn read(name: &str) -> (Part, String) {
+    let path = common::root().join("fixtures/access").join(name);
+    let text = std::fs::read_to_string(&path).unwrap();
+    (thinwall_step::read_file(&path).unwrap().0, text)
+}
+
+fn run(part: &Part, up: [f64; 3], opts: &ReachOptions) -> Vec<FaceReach> {
+    let a = PartAnalysis::new(part, Setup::new(up, Machine::ThreeAxis).unwrap());
+    let mesh = thinwall_brep::tessellate::part_mesh(part);
+    reach(&a, &mesh, opts).unwrap()
+}
+
+/// The face whose centroid is `c` and whose normal is `n` (both moved by
+/// `m`), and its reach.
+struct Posed {
+    r: nalgebra::Rotation3<f64>,
+    t: nalgebra::Vector3<f64>,
+}
+
+impl Posed {
+    fn identity() -> Self {
+        Self {
+            r: nalgebra::Rotation3::identity(),
+            t: nalgebra::Vector3::zeros(),
+        }
+    }
+
+    fn up(&self) -> [f64; 3] {
+        let u = self.r * nalgebra::Vector3::z();
+        [u.x, u.y, u.z]
+    }
+
+    fn face<'a>(&self, part: &Part, faces: &'a [FaceReach], c: [f64; 3], n: [f64; 3]) -> &'a FaceReach {
+        let c = self.r * nalgebra::Vector3::new(c[0], c[1], c[2]) + self.t;
+        let n = self.r * nalgebra::Vector3::new(n[0], n[1], n[2]);
+        let props: Vec<_> = part.face_ids().map(|f| thinwall_brep::props::compute_face_props(part, f)).collect();
+        let hit = part
+            .face_ids()
+            .find(|&f| {
+                let p = &props[f.index()];
+                (p.centroid.coords - c).norm() < 1e-6 * 100.0
+                    && p.normal.is_some_and(|m| m.dot(&n) > 1.0 - 1e-9)
+            })
+            .unwrap_or_else(|| panic!("no face at {c:?} facing {n:?}"));
+        let step = part.face(hit).step_id;
+        faces.iter().find(|f| f.face == step).unwrap()
+    }
+}
+
+/// Poses: the part as built, and two turned copies (the set-up turned alike).
+fn poses() -> Vec<Posed> {
+    let mut out = vec![Posed::identity()];
+    for seed in [3, 11] {
+        let (r, t) = common::rigid_motion(seed);
+        out.push(Posed { r, t });
+    }
+    out
+}
+
+fn posed_part(text: &str, pose: &Posed) -> Part {
+    let (turned, _) = common::turned_step(text, &pose.r, &pose.t);
+    let dir = std::env::temp_dir().join(format!("tw-reach-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("p{}.step", pose.t.x.to_bits()));
+    std::fs::write(&path, turned).unwrap();
+    let part = thinwall_step::read_file(&path).unwrap().0;
+    let _ = std::fs::remove_file(&path);
+    part
+}
+
+fn close(got: f64, want: f64, rel: f64, what: &str) {
+    assert!(
+        (got - want).abs() <= rel * want.abs().max(1e-12),
+        "{what}: got {got}, want {want}"
+    );
+}
+
+/// Two ribs 8 mm apart, closer than the Ø12 tool (hand values in
+/// docs/ACCESS.md): the faces between them unreachable below the depth
+/// where the tool fits (the lower rib's top), and the holder (Ø24 from
+/// 36 mm above the tip) keeps the tool off the foot of the tall rib's
+/// outer side.
+#[test]
+fn two_ribs_closer_than_the_tool() {
+    let (_, text) = read("two_ribs.step");
+    for pose in poses() {
+        let part = posed_part(&text, &pose);
+        let faces = run(&part, pose.up(), &ReachOptions::default());
+        let a_inner = pose.face(&part, &faces, [25.0, 30.0, 30.0], [1.0, 0.0, 0.0]);
+        assert_eq!(a_inner.contact, Contact::Side);
+        close(a_inner.fraction, 0.5, 1e-6, "rib A's side towards B");
+        close(a_inner.unreachable_mm2, 1200.0, 1e-6, "its unreachable area");
+        let b_inner = pose.face(&part, &faces, [33.0, 30.0, 20.0], [-1.0, 0.0, 0.0]);
+        assert!(b_inner.fraction < 1e-9, "rib B's side towards A: {}", b_inner.fraction);
+        let gap_floor = pose.face(&part, &faces, [29.0, 30.0, 10.0], [0.0, 0.0, 1.0]);
+        assert_eq!(gap_floor.contact, Contact::Floor);
+        assert!(gap_floor.fraction < 1e-9);
+        // The tall rib's outer side: the holder meets the rib's top when
+        // the tip is lower than 50 − 36 = 14.
+        let a_outer = pose.face(&part, &faces, [20.0, 30.0, 30.0], [-1.0, 0.0, 0.0]);
+        close(a_outer.fraction, 0.9, 1e-6, "rib A's outer side");
+        assert_eq!(a_outer.blocked_by[0].by, ToolPart::Holder);
+        // The floor left of A: the holder keeps the axis 12 off the rib's
+        // top, so the tool's end reaches x ≤ 20 − 12 + 6 = 14 of 20.
+        let left = pose.face(&part, &faces, [10.0, 30.0, 10.0], [0.0, 0.0, 1.0]);
+        close(left.fraction, 0.7, 1e-6, "the floor left of A");
+        // B's top: the tool comes in from the right, its end overhanging.
+        let b_top = pose.face(&part, &faces, [35.5, 30.0, 30.0], [0.0, 0.0, 1.0]);
+        close(b_top.fraction, 1.0, 1e-9, "rib B's top");
+        // The bottom faces the table.
+        let bottom = pose.face(&part, &faces, [50.0, 30.0, 0.0], [0.0, 0.0, -1.0]);
+        assert!(bottom.fraction == 0.0 && bottom.note.is_some());
+        // A Ø6 tool cutting 40 fits the gap: everything between the ribs
+        // reached.
+        let tool = Tool { diameter: 6.0, cutting_length: 40.0, holder_diameter: 12.0 };
+        let small = run(&part, pose.up(), &ReachOptions { tool, ..Default::default() });
+        for c in [([25.0, 30.0, 30.0], [1.0, 0.0, 0.0]), ([33.0, 30.0, 20.0], [-1.0, 0.0, 0.0]), ([29.0, 30.0, 10.0], [0.0, 0.0, 1.0])] {
+            close(pose.face(&part, &small, c.0, c.1).fraction, 1.0, 1e-9, "with Ø6");
+        }
+    }
+}
+
+/// A closed pocket narrower than the tool (10 wide) and one wider (24):
+/// nothing of the narrow one; the wide one's sides up to a radius from
+/// its corners, its floor but the four corners' r²(1 − π/4).
+#[test]
+fn pockets_narrower_and_wider_than_the_tool() {
+    let (_, text) = read("pockets.step");
+    for pose in poses() {
+        let part = posed_part(&text, &pose);
+        let faces = run(&part, pose.up(), &ReachOptions::default());
+        let narrow = [
+            ([15.0, 20.0, 10.0], [0.0, 0.0, 1.0]),
+            ([10.0, 20.0, 15.0], [1.0, 0.0, 0.0]),
+            ([20.0, 20.0, 15.0], [-1.0, 0.0, 0.0]),
+            ([15.0, 5.0, 15.0], [0.0, 1.0, 0.0]),
+            ([15.0, 35.0, 15.0], [0.0, -1.0, 0.0]),
+        ];
+        for (c, n) in narrow {
+            let f = pose.face(&part, &faces, c, n);
+            assert!(f.fraction < 1e-9, "narrow pocket face at {c:?}: {}", f.fraction);
+            assert!(!f.blocked_by.is_empty());
+        }
+        // The wide pocket: long sides 30 long lose 6 at each end, the
+        // ends (24) likewise.
+        close(pose.face(&part, &faces, [30.0, 20.0, 15.0], [1.0, 0.0, 0.0]).fraction, 0.6, 1e-6, "long side");
+        close(pose.face(&part, &faces, [42.0, 5.0, 15.0], [0.0, 1.0, 0.0]).fraction, 0.5, 1e-6, "end");
+        let floor = pose.face(&part, &faces, [42.0, 20.0, 10.0], [0.0, 0.0, 1.0]);
+        let corners = 4.0 * 36.0 * (1.0 - std::f64::consts::FRAC_PI_4);
+        // The disk is a 128-gon: a corner's uncut area comes out 0.15 % high.
+        close(floor.unreachable_mm2, corners, 2e-3, "the wide floor's corners");
+        assert!(floor.unreachable_mm2 >= corners);
+        // The block's top is reached whole.
+        close(pose.face(&part, &faces, [27.0, 20.0, 20.0], [0.0, 0.0, 1.0]).fraction, 1.0, 1e-9, "top");
+    }
+}
+
+/// A shelf over a floor: the floor hidden under it, and the holder kept
+/// off the shelf's top unless the cutter is long enough.
+#[test]
+fn an_overhang_hides_part_of_a_floor() {
+    let (_, text) = read("overhang.step");
+    for pose in poses() {
+        let part = posed_part(&text, &pose);
+        let faces = run(&part, pose.up(), &ReachOptions::default());
+        let floor = |fs: &[FaceReach]| pose.face(&part, fs, [55.0, 30.0, 10.0], [0.0, 0.0, 1.0]).clone();
+        // Cutting length 36: the holder (from z 46) meets the shelf's top
+        // part (to z 50) until the axis is 12 beyond it: reached x ≥ 46.
+        let f = floor(&faces);
+        close(f.fraction, 54.0 / 90.0, 1e-6, "floor, holder in the way");
+        assert!(f
+            .blocked_by
+            .iter()
+            .any(|b| b.by == ToolPart::Holder && (b.unreachable_mm2 - 2160.0).abs() < 1e-3));
+        // Cutting length 40: the holder starts at the shelf's top; the
+        // shelf's shadow (x 10..40) is all that is lost.
+        let long = ReachOptions {
+            tool: Tool { cutting_length: 40.0, ..Tool::default() },
+            ..Default::default()
+        };
+        let f = floor(&run(&part, pose.up(), &long));
+        close(f.fraction, 60.0 / 90.0, 1e-6, "floor under the shelf");
+        close(f.unreachable_mm2, 1800.0, 1e-6, "the shelf's shadow");
+        // The wall's side under the shelf and the shelf's underside.
+        let under = pose.face(&part, &faces, [10.0, 30.0, 25.0], [1.0, 0.0, 0.0]);
+        assert!(under.fraction < 1e-9);
+        let ceiling = pose.face(&part, &faces, [25.0, 30.0, 40.0], [0.0, 0.0, -1.0]);
+        assert!(ceiling.fraction == 0.0 && ceiling.note.is_some());
+    }
+}
+
+/// Five axes: the shelf's wall, tilted towards, gains nothing (the shelf
+/// covers it); a face turned 20° below level is out of reach on three
+/// axes and reached within a 30° tilt limit.
+#[test]
+fn five_axes_report_the_axes_that_reach_a_face() {
+    let (part, _) = read("overhang.step");
+    let five = Machine::FiveAxis { tilt_limit_deg: 30.0 };
+    let a = PartAnalysis::new(&part, Setup::new([0.0, 0.0, 1.0], five).unwrap());
+    let mesh = thinwall_brep::tessellate::part_mesh(&part);
+    let faces = reach(&a, &mesh, &ReachOptions { machine: five, ..Default::default() }).unwrap();
+    let pose = Posed::identity();
+    // The outer side of the wall (x = 0) is reached whole by axes tilted
+    // away from the wall (the holder clears it), not by up.
+    let outer = pose.face(&part, &faces, [0.0, 30.0, 25.0], [-1.0, 0.0, 0.0]);
+    assert!(outer.whole(), "outer side: {}", outer.fraction);
+    assert!(!outer.whole_axes.is_empty());
+    assert!(outer.tilt_deg > 1.0, "the best axis is tilted");
+    for ax in &outer.whole_axes {
+        assert!(ax[0] < 0.0, "tilted away from the wall: {ax:?}");
+    }
+    // A bad tilt limit is an error of its own kind.
+    let bad = Machine::FiveAxis { tilt_limit_deg: 95.0 };
+    let err = reach(&a, &mesh, &ReachOptions { machine: bad, ..Default::default() }).unwrap_err();
+    assert_eq!(err.code(), "tilt_limit");
+    let err = reach(&a, &mesh, &ReachOptions { tool: Tool { holder_diameter: 5.0, ..Tool::default() }, ..Default::default() }).unwrap_err();
+    assert_eq!(err.code(), "holder_diameter");
+}
+
+/// Results do not depend on the order of the faces in the file.
+#[test]
+fn reach_does_not_depend_on_face_order() {
+    let (part, text) = read("two_ribs.step");
+    // The shell's faces listed the other way round.
+    let start = text.find("CLOSED_SHELL('',(").unwrap() + "CLOSED_SHELL('',(".len();
+    let end = start + text[start..].find(')').unwrap();
+    let mut ids: Vec<&str> = text[start..end].split(',').map(str::trim).collect();
+    ids.reverse();
+    let turned = format!("{}{}{}", &text[..start], ids.join(","), &text[end..]);
+    let path = std::env::temp_dir().join(format!("tw-reach-order-{}.step", std::process::id()));
+    std::fs::write(&path, turned).unwrap();
+    let reordered = thinwall_step::read_file(&path).unwrap().0;
+    let _ = std::fs::remove_file(&path);
+    assert_ne!(part.face(thinwall_brep::FaceId(0)).step_id, reordered.face(thinwall_brep::FaceId(0)).step_id);
+    let key = |fs: Vec<FaceReach>| {
+        let mut v: Vec<(u64, f64)> = fs.into_iter().map(|f| (f.face, f.fraction)).collect();
+        v.sort_by_key(|x| x.0);
+        v
+    };
+    let (x, y) = (key(run(&part, [0.0, 0.0, 1.0], &ReachOptions::default())), key(run(&reordered, [0.0, 0.0, 1.0], &ReachOptions::default())));
+    assert_eq!(x.len(), y.len());
+    for (p, q) in x.iter().zip(&y) {
+        assert_eq!(p.0, q.0);
+        close(q.1, p.1, 1e-9, &format!("face #{}", p.0));
+    }
+}
+
