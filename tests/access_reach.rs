@@ -40,10 +40,19 @@ impl Posed {
         [u.x, u.y, u.z]
     }
 
-    fn face<'a>(&self, part: &Part, faces: &'a [FaceReach], c: [f64; 3], n: [f64; 3]) -> &'a FaceReach {
+    fn face<'a>(
+        &self,
+        part: &Part,
+        faces: &'a [FaceReach],
+        c: [f64; 3],
+        n: [f64; 3],
+    ) -> &'a FaceReach {
         let c = self.r * nalgebra::Vector3::new(c[0], c[1], c[2]) + self.t;
         let n = self.r * nalgebra::Vector3::new(n[0], n[1], n[2]);
-        let props: Vec<_> = part.face_ids().map(|f| thinwall_brep::props::compute_face_props(part, f)).collect();
+        let props: Vec<_> = part
+            .face_ids()
+            .map(|f| thinwall_brep::props::compute_face_props(part, f))
+            .collect();
         let hit = part
             .face_ids()
             .find(|&f| {
@@ -99,9 +108,18 @@ fn two_ribs_closer_than_the_tool() {
         let a_inner = pose.face(&part, &faces, [25.0, 30.0, 30.0], [1.0, 0.0, 0.0]);
         assert_eq!(a_inner.contact, Contact::Side);
         close(a_inner.fraction, 0.5, 1e-6, "rib A's side towards B");
-        close(a_inner.unreachable_mm2, 1200.0, 1e-6, "its unreachable area");
+        close(
+            a_inner.unreachable_mm2,
+            1200.0,
+            1e-6,
+            "its unreachable area",
+        );
         let b_inner = pose.face(&part, &faces, [33.0, 30.0, 20.0], [-1.0, 0.0, 0.0]);
-        assert!(b_inner.fraction < 1e-9, "rib B's side towards A: {}", b_inner.fraction);
+        assert!(
+            b_inner.fraction < 1e-9,
+            "rib B's side towards A: {}",
+            b_inner.fraction
+        );
         let gap_floor = pose.face(&part, &faces, [29.0, 30.0, 10.0], [0.0, 0.0, 1.0]);
         assert_eq!(gap_floor.contact, Contact::Floor);
         assert!(gap_floor.fraction < 1e-9);
@@ -122,10 +140,30 @@ fn two_ribs_closer_than_the_tool() {
         assert!(bottom.fraction == 0.0 && bottom.note.is_some());
         // A Ø6 tool cutting 40 fits the gap: everything between the ribs
         // reached.
-        let tool = Tool { diameter: 6.0, cutting_length: 40.0, holder_diameter: 12.0 };
-        let small = run(&part, pose.up(), &ReachOptions { tool, ..Default::default() });
-        for c in [([25.0, 30.0, 30.0], [1.0, 0.0, 0.0]), ([33.0, 30.0, 20.0], [-1.0, 0.0, 0.0]), ([29.0, 30.0, 10.0], [0.0, 0.0, 1.0])] {
-            close(pose.face(&part, &small, c.0, c.1).fraction, 1.0, 1e-9, "with Ø6");
+        let tool = Tool {
+            diameter: 6.0,
+            cutting_length: 40.0,
+            holder_diameter: 12.0,
+        };
+        let small = run(
+            &part,
+            pose.up(),
+            &ReachOptions {
+                tool,
+                ..Default::default()
+            },
+        );
+        for c in [
+            ([25.0, 30.0, 30.0], [1.0, 0.0, 0.0]),
+            ([33.0, 30.0, 20.0], [-1.0, 0.0, 0.0]),
+            ([29.0, 30.0, 10.0], [0.0, 0.0, 1.0]),
+        ] {
+            close(
+                pose.face(&part, &small, c.0, c.1).fraction,
+                1.0,
+                1e-9,
+                "with Ø6",
+            );
         }
     }
 }
@@ -148,20 +186,47 @@ fn pockets_narrower_and_wider_than_the_tool() {
         ];
         for (c, n) in narrow {
             let f = pose.face(&part, &faces, c, n);
-            assert!(f.fraction < 1e-9, "narrow pocket face at {c:?}: {}", f.fraction);
+            assert!(
+                f.fraction < 1e-9,
+                "narrow pocket face at {c:?}: {}",
+                f.fraction
+            );
             assert!(!f.blocked_by.is_empty());
         }
         // The wide pocket: long sides 30 long lose 6 at each end, the
         // ends (24) likewise.
-        close(pose.face(&part, &faces, [30.0, 20.0, 15.0], [1.0, 0.0, 0.0]).fraction, 0.6, 1e-6, "long side");
-        close(pose.face(&part, &faces, [42.0, 5.0, 15.0], [0.0, 1.0, 0.0]).fraction, 0.5, 1e-6, "end");
+        close(
+            pose.face(&part, &faces, [30.0, 20.0, 15.0], [1.0, 0.0, 0.0])
+                .fraction,
+            0.6,
+            1e-6,
+            "long side",
+        );
+        close(
+            pose.face(&part, &faces, [42.0, 5.0, 15.0], [0.0, 1.0, 0.0])
+                .fraction,
+            0.5,
+            1e-6,
+            "end",
+        );
         let floor = pose.face(&part, &faces, [42.0, 20.0, 10.0], [0.0, 0.0, 1.0]);
         let corners = 4.0 * 36.0 * (1.0 - std::f64::consts::FRAC_PI_4);
         // The disk is a 128-gon: a corner's uncut area comes out 0.15 % high.
-        close(floor.unreachable_mm2, corners, 2e-3, "the wide floor's corners");
+        close(
+            floor.unreachable_mm2,
+            corners,
+            2e-3,
+            "the wide floor's corners",
+        );
         assert!(floor.unreachable_mm2 >= corners);
         // The block's top is reached whole.
-        close(pose.face(&part, &faces, [27.0, 20.0, 20.0], [0.0, 0.0, 1.0]).fraction, 1.0, 1e-9, "top");
+        close(
+            pose.face(&part, &faces, [27.0, 20.0, 20.0], [0.0, 0.0, 1.0])
+                .fraction,
+            1.0,
+            1e-9,
+            "top",
+        );
     }
 }
 
@@ -173,7 +238,10 @@ fn an_overhang_hides_part_of_a_floor() {
     for pose in poses() {
         let part = posed_part(&text, &pose);
         let faces = run(&part, pose.up(), &ReachOptions::default());
-        let floor = |fs: &[FaceReach]| pose.face(&part, fs, [55.0, 30.0, 10.0], [0.0, 0.0, 1.0]).clone();
+        let floor = |fs: &[FaceReach]| {
+            pose.face(&part, fs, [55.0, 30.0, 10.0], [0.0, 0.0, 1.0])
+                .clone()
+        };
         // Cutting length 36: the holder (from z 46) meets the shelf's top
         // part (to z 50) until the axis is 12 beyond it: reached x ≥ 46.
         let f = floor(&faces);
@@ -185,7 +253,10 @@ fn an_overhang_hides_part_of_a_floor() {
         // Cutting length 40: the holder starts at the shelf's top; the
         // shelf's shadow (x 10..40) is all that is lost.
         let long = ReachOptions {
-            tool: Tool { cutting_length: 40.0, ..Tool::default() },
+            tool: Tool {
+                cutting_length: 40.0,
+                ..Tool::default()
+            },
             ..Default::default()
         };
         let f = floor(&run(&part, pose.up(), &long));
@@ -205,10 +276,20 @@ fn an_overhang_hides_part_of_a_floor() {
 #[test]
 fn five_axes_report_the_axes_that_reach_a_face() {
     let (part, _) = read("overhang.step");
-    let five = Machine::FiveAxis { tilt_limit_deg: 30.0 };
+    let five = Machine::FiveAxis {
+        tilt_limit_deg: 30.0,
+    };
     let a = PartAnalysis::new(&part, Setup::new([0.0, 0.0, 1.0], five).unwrap());
     let mesh = thinwall_brep::tessellate::part_mesh(&part);
-    let faces = reach(&a, &mesh, &ReachOptions { machine: five, ..Default::default() }).unwrap();
+    let faces = reach(
+        &a,
+        &mesh,
+        &ReachOptions {
+            machine: five,
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let pose = Posed::identity();
     // The outer side of the wall (x = 0) is reached whole by axes tilted
     // away from the wall (the holder clears it), not by up.
@@ -220,10 +301,31 @@ fn five_axes_report_the_axes_that_reach_a_face() {
         assert!(ax[0] < 0.0, "tilted away from the wall: {ax:?}");
     }
     // A bad tilt limit is an error of its own kind.
-    let bad = Machine::FiveAxis { tilt_limit_deg: 95.0 };
-    let err = reach(&a, &mesh, &ReachOptions { machine: bad, ..Default::default() }).unwrap_err();
+    let bad = Machine::FiveAxis {
+        tilt_limit_deg: 95.0,
+    };
+    let err = reach(
+        &a,
+        &mesh,
+        &ReachOptions {
+            machine: bad,
+            ..Default::default()
+        },
+    )
+    .unwrap_err();
     assert_eq!(err.code(), "tilt_limit");
-    let err = reach(&a, &mesh, &ReachOptions { tool: Tool { holder_diameter: 5.0, ..Tool::default() }, ..Default::default() }).unwrap_err();
+    let err = reach(
+        &a,
+        &mesh,
+        &ReachOptions {
+            tool: Tool {
+                holder_diameter: 5.0,
+                ..Tool::default()
+            },
+            ..Default::default()
+        },
+    )
+    .unwrap_err();
     assert_eq!(err.code(), "holder_diameter");
 }
 
@@ -241,17 +343,22 @@ fn reach_does_not_depend_on_face_order() {
     std::fs::write(&path, turned).unwrap();
     let reordered = thinwall_step::read_file(&path).unwrap().0;
     let _ = std::fs::remove_file(&path);
-    assert_ne!(part.face(thinwall_brep::FaceId(0)).step_id, reordered.face(thinwall_brep::FaceId(0)).step_id);
+    assert_ne!(
+        part.face(thinwall_brep::FaceId(0)).step_id,
+        reordered.face(thinwall_brep::FaceId(0)).step_id
+    );
     let key = |fs: Vec<FaceReach>| {
         let mut v: Vec<(u64, f64)> = fs.into_iter().map(|f| (f.face, f.fraction)).collect();
         v.sort_by_key(|x| x.0);
         v
     };
-    let (x, y) = (key(run(&part, [0.0, 0.0, 1.0], &ReachOptions::default())), key(run(&reordered, [0.0, 0.0, 1.0], &ReachOptions::default())));
+    let (x, y) = (
+        key(run(&part, [0.0, 0.0, 1.0], &ReachOptions::default())),
+        key(run(&reordered, [0.0, 0.0, 1.0], &ReachOptions::default())),
+    );
     assert_eq!(x.len(), y.len());
     for (p, q) in x.iter().zip(&y) {
         assert_eq!(p.0, q.0);
         close(q.1, p.1, 1e-9, &format!("face #{}", p.0));
     }
 }
-

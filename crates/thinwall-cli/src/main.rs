@@ -678,6 +678,17 @@ struct RecognizeFlags {
     /// are faced.
     #[arg(long, allow_hyphen_values = true)]
     stock_offset: Option<f64>,
+    /// Reach of wall sides: the tool's cutting length, mm (default three
+    /// diameters of the preferred tool).
+    #[arg(long, allow_hyphen_values = true)]
+    cutting_length: Option<f64>,
+    /// Reach of wall sides: the holder's diameter, mm (default two
+    /// diameters).
+    #[arg(long, allow_hyphen_values = true)]
+    holder_diameter: Option<f64>,
+    /// Judge wall sides by direction only, not by what is in the way.
+    #[arg(long)]
+    no_reach: bool,
 }
 
 impl RecognizeFlags {
@@ -742,7 +753,15 @@ impl RecognizeFlags {
                 "--stock-offset must be a length of 0 mm or more, got {stock_offset}"
             )));
         }
+        let reach_tool = (!self.no_reach)
+            .then(|| reach_tool(
+                cfg.thresholds.preferred_tool_diameter_mm,
+                self.cutting_length,
+                self.holder_diameter,
+            ))
+            .transpose()?;
         Ok(thinwall_pipeline::Request {
+            reach_tool,
             setup,
             config: cfg,
             connect: thinwall_connect::Options {
@@ -758,6 +777,24 @@ impl RecognizeFlags {
             },
         })
     }
+}
+
+/// The reach tool from a diameter and the flags over its proportions,
+/// checked.
+fn reach_tool(
+    diameter: f64,
+    cutting_length: Option<f64>,
+    holder_diameter: Option<f64>,
+) -> Result<thinwall_access::reach::Tool, Failure> {
+    let mut tool = thinwall_access::reach::Tool::new(diameter);
+    if let Some(l) = cutting_length {
+        tool.cutting_length = l;
+    }
+    if let Some(h) = holder_diameter {
+        tool.holder_diameter = h;
+    }
+    tool.check().map_err(|e| Failure::Usage(e.to_string()))?;
+    Ok(tool)
 }
 
 /// Write to `path`, or to stdout without one.

@@ -1,6 +1,8 @@
-//! Can the tool reach a side of a wall in the set-up? Judged from the side's
-//! tool access direction (its outward normal) against the machine's tool
-//! axis; obstruction by other material is not checked here.
+//! Can the tool reach a side of a wall in the set-up? Judged here from the
+//! side's tool access direction (its outward normal) against the machine's
+//! tool axis. Obstruction by other material (`thinwall_access::reach`) is
+//! judged above this layer; the pipeline adds its `fraction`, `blocked_by`
+//! and reason to the verdict.
 
 use serde::{Deserialize, Serialize};
 use thinwall_analysis::Machine;
@@ -17,6 +19,16 @@ pub struct SideAccess {
     pub reachable: bool,
     /// Why, in a planner's words.
     pub reason: String,
+    /// The share of the side the tool reaches with material in the way
+    /// (the pipeline's reach judgement; absent when not judged).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fraction: Option<f64>,
+    /// The tool judged with, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tool_diameter: Option<f64>,
+    /// Features in the way, the worst first.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub blocked_by: Vec<thinwall_analysis::FeatureId>,
 }
 
 /// Judge a side with access direction `d` for a machine whose tool axis is `up`.
@@ -65,6 +77,9 @@ pub fn side_access(d: [f64; 3], up: &Vector3, machine: &Machine) -> SideAccess {
         direction: [dv.x, dv.y, dv.z],
         reachable,
         reason,
+        fraction: None,
+        tool_diameter: None,
+        blocked_by: Vec::new(),
     }
 }
 

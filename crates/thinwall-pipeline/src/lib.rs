@@ -40,6 +40,10 @@ pub struct Request {
     pub allow_open: bool,
     /// What the machining-feature layer is asked.
     pub machining: MachiningRequest,
+    /// Judge each wall side's reach with this tool, material in the way
+    /// (`thinwall_access::reach`); none (the default): by direction only.
+    /// The CLI asks for it with the preferred tool unless `--no-reach`.
+    pub reach_tool: Option<thinwall_access::reach::Tool>,
 }
 
 /// The machining-feature layer's part of a request.
@@ -70,6 +74,7 @@ impl Default for Request {
             parallel: true,
             allow_open: false,
             machining: MachiningRequest::default(),
+            reach_tool: None,
         }
     }
 }
@@ -121,6 +126,10 @@ pub enum PipelineError {
     /// does not contain the part).
     #[error(transparent)]
     Machining(#[from] thinwall_machining::MachiningError),
+    /// The reach tool is not a tool (a diameter of zero, a holder thinner
+    /// than the cutter).
+    #[error(transparent)]
+    Reach(#[from] thinwall_access::reach::ReachError),
 }
 
 impl PipelineError {
@@ -132,6 +141,7 @@ impl PipelineError {
             PipelineError::OpenShell { .. } => "input.open_shell".to_string(),
             PipelineError::Structure(e) => format!("structure.{}", e.code()),
             PipelineError::Machining(e) => format!("machining.{}", e.code()),
+            PipelineError::Reach(e) => format!("reach.{}", e.code()),
         }
     }
 }
@@ -145,6 +155,9 @@ pub fn run(
 ) -> Result<Outcome, PipelineError> {
     req.config.validate()?;
     req.setup.validate()?;
+    if let Some(tool) = &req.reach_tool {
+        tool.check()?;
+    }
     let mut clock = Clock::start();
     let a = match graph {
         Some(g) => PartAnalysis::with_graph(part, g, req.setup.clone()),
@@ -175,10 +188,14 @@ pub fn run(
     clock.record("machining features", t_mach);
     clock.lap("recognizers (wall time)");
     let mut recognition = recognition;
-    let structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
+    let mut structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
     structure.validate()?;
     relate(&mut machining, &mut recognition);
     clock.lap("connections and links");
+    if let Some(tool) = &req.reach_tool {
+        wall_reach(part, &a, &recognition, &mut structure, tool)?;
+        clock.lap("reach of wall sides");
+    }
     let warnings = a.warnings();
     let view_notes = disagreements(&machining, &recognition);
     let hole_patterns = thinwall_machining::hole_patterns(&a, &machining);
@@ -194,6 +211,52 @@ pub fn run(
         view_notes,
         timings: clock.laps,
     })
+}
+
+/// Each wall side's reach with material in the way, added to its verdict.
+fn wall_reach(
+    part: &Part,
+    a: &PartAnalysis,
+    recognition: &Recognition,
+    structure: &mut Structure,
+    tool: &thinwall_access::reach::Tool,
+) -> Result<(), PipelineError> {
+    use thinwall_access::reach;
+    if !recognition.features.iter().any(|f| f.sides.is_some()) {
+        return Ok(());
+    }
+    let mesh = thinwall_brep::tessellate::part_mesh(part);
+    let opts = reach::ReachOptions {
+        tool: tool.clone(),
+        machine: a.setup().machine,
+        largest_tool: false,
+    };
+    let part = a.part();
+    let sides: std::collections::BTreeSet<(u32, u64)> = recognition
+        .features
+        .iter()
+        .filter_map(|f| f.sides.as_ref().map(|s| (f.body, s)))
+        .flat_map(|(b, s)| s.iter().flatten().map(move |&id| (b, id)))
+        .collect();
+    let faces = reach::reach_of(a, &mesh, &opts, |f| {
+        let face = part.face(f);
+        sides.contains(&(face.body.0, face.step_id))
+    })?;
+    let sides = reach::walls::wall_sides(a, recognition, &faces, tool.diameter);
+    for (id, judged) in sides {
+        let Some(verdicts) = structure.access.get_mut(&id) else {
+            continue;
+        };
+        for (v, s) in verdicts.iter_mut().zip(judged) {
+            v.fraction = Some(s.fraction);
+            v.tool_diameter = Some(s.tool_diameter);
+            v.blocked_by = s.blocked_by;
+            if let Some(why) = s.reason {
+                v.reason = format!("{}; {why}", v.reason);
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The machining layer's options from the request.

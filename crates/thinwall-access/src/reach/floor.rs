@@ -48,8 +48,16 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
         corners.iter().map(|c| c[1]).fold(f64::INFINITY, f64::min) - reach,
     ];
     let hi = [
-        corners.iter().map(|c| c[0]).fold(f64::NEG_INFINITY, f64::max) + reach,
-        corners.iter().map(|c| c[1]).fold(f64::NEG_INFINITY, f64::max) + reach,
+        corners
+            .iter()
+            .map(|c| c[0])
+            .fold(f64::NEG_INFINITY, f64::max)
+            + reach,
+        corners
+            .iter()
+            .map(|c| c[1])
+            .fold(f64::NEG_INFINITY, f64::max)
+            + reach,
     ];
     let to_face = |p: [f64; 2]| -> [f64; 2] {
         let w = scene.frame.to_world(&Vector3::new(p[0], p[1], h));
@@ -77,10 +85,8 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
             }
         }
     }
-    let groups: Vec<((u32, bool), MultiPolygon<f64>)> = groups
-        .into_iter()
-        .map(|(k, v)| (k, union_all(v)))
-        .collect();
+    let groups: Vec<((u32, bool), MultiPolygon<f64>)> =
+        groups.into_iter().map(|(k, v)| (k, union_all(v))).collect();
     let stopped = union_all(groups.iter().map(|(_, g)| g.clone()).collect());
     let margin = 1.01 * r + 1e-6;
     let frame_box = Rect::new(
@@ -150,7 +156,10 @@ fn grown(pts: &[[f64; 2]], disk: &[[f64; 2]]) -> Option<Polygon<f64>> {
     }
     let sums: Vec<Point<f64>> = pts
         .iter()
-        .flat_map(|p| disk.iter().map(move |d| Point::new(p[0] + d[0], p[1] + d[1])))
+        .flat_map(|p| {
+            disk.iter()
+                .map(move |d| Point::new(p[0] + d[0], p[1] + d[1]))
+        })
         .collect();
     let hull = MultiPoint::from(sums).convex_hull();
     (hull.unsigned_area() > 0.0).then_some(hull)
@@ -184,7 +193,9 @@ mod tests {
         let d = disk(6.0);
         let xs: Vec<f64> = d.iter().map(|c| c[0]).collect();
         let ys: Vec<f64> = d.iter().map(|c| c[1]).collect();
-        let span = |v: &[f64]| v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min);
+        let span = |v: &[f64]| {
+            v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min)
+        };
         assert!((span(&xs) - 12.0).abs() < 1e-12 && (span(&ys) - 12.0).abs() < 1e-12);
         let p = Polygon::new(
             d.iter().map(|c| Coord { x: c[0], y: c[1] }).collect(),

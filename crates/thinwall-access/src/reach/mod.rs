@@ -21,9 +21,9 @@
 
 pub mod floor;
 pub mod interval;
+pub mod sampled;
 pub mod scene;
 pub mod side;
-pub mod sampled;
 pub mod walls;
 
 use rayon::prelude::*;
@@ -312,11 +312,25 @@ pub fn reach(
     mesh: &Mesh,
     opts: &ReachOptions,
 ) -> Result<Vec<FaceReach>, ReachError> {
+    reach_of(a, mesh, opts, |_| true)
+}
+
+/// The reach of the faces `wanted` accepts (every face is still in the
+/// way of the others).
+pub fn reach_of(
+    a: &PartAnalysis,
+    mesh: &Mesh,
+    opts: &ReachOptions,
+    wanted: impl Fn(FaceId) -> bool + Sync,
+) -> Result<Vec<FaceReach>, ReachError> {
     opts.tool.check()?;
     let axes = axes(a, &opts.machine)?;
     let ctx = Ctx::new(a, opts.tool.clone());
     let scenes = scenes(a, mesh, &axes);
-    let out = (0..mesh.faces.len())
+    let chosen: Vec<usize> = (0..mesh.faces.len())
+        .filter(|&k| wanted(mesh.faces[k].face))
+        .collect();
+    let out = chosen
         .into_par_iter()
         .with_max_len(1)
         .map(|k| face_reach(a, mesh, &ctx, &scenes, k as u32, opts.largest_tool))
@@ -342,7 +356,13 @@ pub fn scenes(a: &PartAnalysis, mesh: &Mesh, axes: &[Vector3]) -> Vec<Scene> {
 }
 
 /// How face `own` (mesh index) is judged on one scene.
-pub fn judge(a: &PartAnalysis, mesh: &Mesh, ctx: &Ctx, scene: &Scene, own: u32) -> (Contact, Judged) {
+pub fn judge(
+    a: &PartAnalysis,
+    mesh: &Mesh,
+    ctx: &Ctx,
+    scene: &Scene,
+    own: u32,
+) -> (Contact, Judged) {
     let f: FaceId = mesh.faces[own as usize].face;
     if let Some(pf) = a.planar(f) {
         let n = scene.local_vector(&pf.normal());
@@ -384,7 +404,8 @@ fn face_reach(
     let part = a.part();
     let f = mesh.faces[own as usize].face;
     let face = part.face(f);
-    let judged: Vec<(Contact, Judged)> = scenes.iter().map(|s| judge(a, mesh, ctx, s, own)).collect();
+    let judged: Vec<(Contact, Judged)> =
+        scenes.iter().map(|s| judge(a, mesh, ctx, s, own)).collect();
     let mut best = 0;
     for (k, j) in judged.iter().enumerate() {
         if j.1.fraction() > judged[best].1.fraction() + 1e-12 {
@@ -414,7 +435,11 @@ fn face_reach(
             Blocker {
                 face: g.step_id,
                 body: g.body.0,
-                by: if holder { ToolPart::Holder } else { ToolPart::Cutter },
+                by: if holder {
+                    ToolPart::Holder
+                } else {
+                    ToolPart::Cutter
+                },
                 unreachable_mm2: (mm2 * area / j.area.max(1e-300)).min((1.0 - j.fraction()) * area),
             }
         })
@@ -425,8 +450,9 @@ fn face_reach(
             .then(x.face.cmp(&y.face))
             .then(x.by.cmp(&y.by))
     });
-    let note = (j.away > 0.5 * j.area && j.area > 0.0)
-        .then(|| "turned away from the tool axis (an undercut): another set-up, or a tilted axis".to_string());
+    let note = (j.away > 0.5 * j.area && j.area > 0.0).then(|| {
+        "turned away from the tool axis (an undercut): another set-up, or a tilted axis".to_string()
+    });
     let largest_tool_mm = (largest && *contact == Contact::Floor)
         .then(|| largest_tool(a, mesh, ctx, &scenes[0], own))
         .flatten();
@@ -457,7 +483,13 @@ pub const SMALLEST_TOOL: f64 = 0.5;
 /// The largest tool (the run's proportions) that reaches the whole floor
 /// `own` on the scene's axis, to 0.01 mm: bisection between
 /// [`SMALLEST_TOOL`] and the face's size.
-pub fn largest_tool(a: &PartAnalysis, mesh: &Mesh, ctx: &Ctx, scene: &Scene, own: u32) -> Option<f64> {
+pub fn largest_tool(
+    a: &PartAnalysis,
+    mesh: &Mesh,
+    ctx: &Ctx,
+    scene: &Scene,
+    own: u32,
+) -> Option<f64> {
     let whole = |d: f64| {
         let c = Ctx {
             tool: ctx.tool.scaled(d),

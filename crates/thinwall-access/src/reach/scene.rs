@@ -142,6 +142,11 @@ impl Scene {
         out
     }
 
+    /// The height of triangle `k`'s highest corner.
+    pub fn top(&self, k: u32) -> f64 {
+        self.tris[k as usize].hi[2]
+    }
+
     /// Heights of the corners of `tris`.
     pub fn heights<'a>(&'a self, tris: &'a [u32]) -> impl Iterator<Item = f64> + 'a {
         tris.iter()
@@ -178,6 +183,11 @@ pub fn blocked(
     for &k in cands {
         let t = &scene.tris[k as usize];
         if t.hi[2] <= h + touch {
+            continue;
+        }
+        // Wholly to one side of the line, farther than the holder's radius.
+        let off = t.p.map(|p| e[0] * (p[1] - q[1]) - e[1] * (p[0] - q[0]));
+        if off.iter().all(|&d| d >= big) || off.iter().all(|&d| d <= -big) {
             continue;
         }
         let low = clip(&t.p, h + touch, top);
@@ -218,11 +228,7 @@ pub(super) fn clip(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> Vec<[f64; 2]> {
             }
             if ip != iq {
                 let t = (limit - p[2]) / (q[2] - p[2]);
-                next.push([
-                    p[0] + (q[0] - p[0]) * t,
-                    p[1] + (q[1] - p[1]) * t,
-                    limit,
-                ]);
+                next.push([p[0] + (q[0] - p[0]) * t, p[1] + (q[1] - p[1]) * t, limit]);
             }
         }
         poly = next;

@@ -17,7 +17,7 @@ use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 
 /// Bands per face, at most (a curved neighbour has many corner heights).
-const MAX_BANDS: usize = 400;
+const MAX_BANDS: usize = 200;
 
 /// Gauss–Legendre nodes and weights on [−1, 1] (three points); the middle
 /// one draws the unreachable region.
@@ -66,17 +66,49 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
         corners.iter().map(|c| c[1]).fold(f64::INFINITY, f64::min) - reach,
     ];
     let hi = [
-        corners.iter().map(|c| c[0]).fold(f64::NEG_INFINITY, f64::max) + reach,
-        corners.iter().map(|c| c[1]).fold(f64::NEG_INFINITY, f64::max) + reach,
+        corners
+            .iter()
+            .map(|c| c[0])
+            .fold(f64::NEG_INFINITY, f64::max)
+            + reach,
+        corners
+            .iter()
+            .map(|c| c[1])
+            .fold(f64::NEG_INFINITY, f64::max)
+            + reach,
     ];
     let zmin = z0 + v0 * rise + ctx.touch;
     let mut cands = scene.near(lo, hi, zmin);
     cands.retain(|&k| scene.tris[k as usize].face != own);
-    let bands = bands(&region, scene, &cands, z0, rise, tool.cutting_length, (v0, v1));
     let e_local = scene.local_vector(&e);
     let e2 = [e_local[0], e_local[1]];
     let norm = e2[0].hypot(e2[1]);
     let e2 = [e2[0] / norm, e2[1] / norm];
+    // Keep the triangles within the holder's radius of the tool's line at
+    // some height of the face (a corner's offset from the line changes
+    // linearly with the height: the two ends bound it).
+    let ends = [v0, v1].map(|v| scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r)));
+    let big = 0.5 * tool.holder_diameter;
+    cands.retain(|&k| {
+        let t = &scene.tris[k as usize];
+        let offs = ends.iter().flat_map(|q| {
+            t.p.iter()
+                .map(move |p| e2[0] * (p[1] - q[1]) - e2[1] * (p[0] - q[0]))
+        });
+        let (lo, hi) = offs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| (a.min(d), b.max(d)));
+        lo < big && hi > -big
+    });
+    // Highest first: a line skips the triangles below its tip at once.
+    cands.sort_by(|&x, &y| scene.top(y).total_cmp(&scene.top(x)).then(x.cmp(&y)));
+    let bands = bands(
+        &region,
+        scene,
+        &cands,
+        z0,
+        rise,
+        tool.cutting_length,
+        (v0, v1),
+    );
     let mut blocks: Vec<Block> = Vec::new();
     for w in bands.windows(2) {
         let (va, vb) = (w[0], w[1]);
@@ -89,7 +121,15 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
             }
             let p = frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r;
             blocks.clear();
-            blocked(scene, &cands, scene.local(&p), e2, tool, ctx.touch, &mut blocks);
+            blocked(
+                scene,
+                &cands,
+                scene.local(&p),
+                e2,
+                tool,
+                ctx.touch,
+                &mut blocks,
+            );
             let stop = merge(blocks.iter().map(|b| b.span).collect());
             let weight = wt * half;
             out.area += weight * length(&face);
@@ -97,7 +137,9 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
             for b in &blocks {
                 let lost = length(&intersect(&face, &[b.span]));
                 if lost > 0.0 {
-                    *out.blockers.entry((b.tri_face(scene), b.holder)).or_default() += weight * lost;
+                    *out.blockers
+                        .entry((b.tri_face(scene), b.holder))
+                        .or_default() += weight * lost;
                 }
             }
             if k == 1 {

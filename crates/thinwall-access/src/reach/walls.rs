@@ -35,7 +35,11 @@ pub fn wall_sides(
     // Each face's features, walls first.
     let mut owner: BTreeMap<(u32, u64), Vec<FeatureId>> = BTreeMap::new();
     for wall_first in [true, false] {
-        for f in rec.features.iter().filter(|f| f.kind.is_wall() == wall_first) {
+        for f in rec
+            .features
+            .iter()
+            .filter(|f| f.kind.is_wall() == wall_first)
+        {
             for &s in &f.faces {
                 owner.entry((f.body, s)).or_default().push(f.id);
             }
@@ -51,11 +55,15 @@ pub fn wall_sides(
             type Lost = (f64, ToolPart, Vec<(u64, u64)>);
             let mut lost: BTreeMap<FeatureId, Lost> = BTreeMap::new();
             for s in side {
-                let Some(r) = by_face.get(&(f.body, *s)) else { continue };
+                let Some(r) = by_face.get(&(f.body, *s)) else {
+                    continue;
+                };
                 area += r.area_mm2;
                 reached += r.fraction * r.area_mm2;
                 for b in &r.blocked_by {
-                    let Some(ids) = owner.get(&(b.body, b.face)) else { continue };
+                    let Some(ids) = owner.get(&(b.body, b.face)) else {
+                        continue;
+                    };
                     let Some(&id) = ids.iter().find(|&&id| id != f.id).or(ids.first()) else {
                         continue;
                     };
@@ -81,9 +89,9 @@ pub fn wall_sides(
                             .filter_map(|&(s, b)| gap(a, f.body, s, b))
                             .min_by(f64::total_cmp);
                         let why = match narrowest {
-                            Some(g) if g < tool_diameter => format!(
-                                "gap to {id} is {g:.1} mm, narrower than the tool"
-                            ),
+                            Some(g) if g < tool_diameter => {
+                                format!("gap to {id} is {g:.1} mm, narrower than the tool")
+                            }
                             _ if *by == ToolPart::Holder => format!("{id} is in the holder's way"),
                             _ => format!("{id} is in the tool's way"),
                         };
