@@ -251,13 +251,29 @@ fn access_page_colours_every_planar_face_and_outlines_g_zones() {
     let mesh = thinwall_brep::tessellate::part_mesh(&part);
     let options = thinwall_access::FlankOptions::default();
     let faces = thinwall_access::flank_milling(&a, &mesh, &options);
-    let report =
-        thinwall_report::access::AccessReport::new("rib_grid_panel.step", setup.up, options, faces);
+    let reach_opts = thinwall_access::reach::ReachOptions::default();
+    let reached = thinwall_access::reach::reach(&a, &mesh, &reach_opts).unwrap();
+    let settings = thinwall_report::access::ReachSettings {
+        tool: reach_opts.tool.clone(),
+        machine: reach_opts.machine,
+    };
+    let report = thinwall_report::access::AccessReport::new(
+        "rib_grid_panel.step",
+        setup.up,
+        options,
+        faces,
+        (settings, reached, Default::default()),
+    );
     let page = html::access_page("access", &a, &report);
     assert_self_contained(&page);
     let data = html::data_of(&page).unwrap();
     assert_eq!(data["view"], "access");
     let drawn = assert_every_face_drawn(&part, &data["part"]);
+    // Every face's reach travels with the page.
+    assert_eq!(
+        data["access"]["faces"].as_array().unwrap().len(),
+        part.face_ids().count()
+    );
     let planar = data["access"]["planar_faces"].as_array().unwrap();
     assert_eq!(planar.len(), report.planar_faces.len());
     for f in planar {

@@ -197,6 +197,19 @@ int main(int argc, char **argv) {
         printf("flank milling: %zu of %zu planar faces advisable\n", advisable, na);
         failures += check(tw_access_face(acc, na, NULL, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
                           "access face past the end is out of range");
+        /* Reach with material in the way: every face, the Ø12 tool. */
+        size_t nr = tw_access_reach_count(acc), whole = 0;
+        for (size_t i = 0; i < nr; i++) {
+            uint64_t id = 0;
+            double fraction = -1.0, lost = -1.0, largest = 0.0;
+            failures += check(tw_access_reach(acc, i, &id, &fraction, &lost, &largest) == TW_OK,
+                              "reach face read");
+            failures += check(fraction >= 0.0 && fraction <= 1.0 && lost >= 0.0 && id > 0, "reach figures");
+            whole += fraction >= 1.0 - 1e-4 ? 1 : 0;
+        }
+        printf("reach: %zu of %zu faces reached whole by the Ø12 tool\n", whole, nr);
+        failures += check(nr > 0 && tw_access_reach(acc, nr, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
+                          "reach face past the end is out of range");
         tw_access_free(acc);
     }
     tw_access_result *bad_access = NULL;

@@ -170,6 +170,23 @@ enum tw_status tw_access_face(const struct tw_access_result *result,
                               double *reached,
                               bool *advisable);
 
+// Number of faces whose reach was judged: every face of the part (0 for
+// NULL).
+size_t tw_access_reach_count(const struct tw_access_result *result);
+
+// Face `i`'s reach with the tool (its diameter as given to `tw_access`,
+// cutting length three diameters, holder two) on the set-up's axis, or on
+// five axes the best axis: its STEP entity id, the fraction reached
+// (0–1), the area not reached (mm²) and, for a floor, the largest tool of
+// those proportions reaching it whole (mm; NaN when not a floor or none
+// does). Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+enum tw_status tw_access_reach(const struct tw_access_result *result,
+                               size_t i,
+                               uint64_t *step_id,
+                               double *fraction,
+                               double *unreachable_mm2,
+                               double *largest_tool_mm);
+
 // Classify `n_volumes` volumes (each a part read from its own STEP file)
 // against `part`. `before` holds `n_before` pairs `(a, b)` as `2·n_before`
 // indices: volume `a` is removed before volume `b`. `opt` (may be NULL)

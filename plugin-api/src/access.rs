@@ -1,4 +1,5 @@
-//! `tw_access`: which planar faces of a part can be flank milled (their
+//! `tw_access`: how much of each face a tool and its holder reach with
+//! material in the way, and which planar faces can be flank milled (their
 //! G-zones, issue 16), with per-face accessors and the same JSON as
 //! `thinwall access`.
 
@@ -6,9 +7,10 @@ use crate::error::{construct, count, free, guard, json_into, null, tw_status};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::c_char;
+use thinwall_access::reach::{self, ReachOptions, Tool};
 use thinwall_access::{FlankOptions, Nature};
 use thinwall_analysis::PartAnalysis;
-use thinwall_report::access::AccessReport;
+use thinwall_report::access::{AccessReport, ReachSettings};
 
 /// An accessibility result (opaque). Immutable; safe to share between
 /// threads.
@@ -71,8 +73,32 @@ pub unsafe extern "C" fn tw_access(
         let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
         let mesh = thinwall_brep::tessellate::part_mesh(&p.part);
         let faces = thinwall_access::flank_milling(&a, &mesh, &options);
+        let tool = Tool::new(options.tool_diameter);
+        let reach_opts = ReachOptions {
+            tool: tool.clone(),
+            machine: setup.machine,
+            largest_tool: true,
+        };
+        let reached = reach::reach(&a, &mesh, &reach_opts)
+            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        let mut request = o.request.clone();
+        request.reach_tool = None;
+        request.allow_open = true;
+        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &request)
+            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
+        let sides = reach::walls::wall_sides(&a, &outcome.recognition, &reached, tool.diameter);
+        let settings = ReachSettings {
+            tool,
+            machine: setup.machine,
+        };
         Ok(tw_access_result {
-            report: AccessReport::new(&p.name, setup.up, options, faces),
+            report: AccessReport::new(
+                &p.name,
+                setup.up,
+                options,
+                faces,
+                (settings, reached, sides),
+            ),
         })
     })
 }
@@ -139,6 +165,53 @@ pub unsafe extern "C" fn tw_access_face(
         }
         if !advisable.is_null() {
             *advisable = f.advisable;
+        }
+        Ok(())
+    })
+}
+
+/// Number of faces whose reach was judged: every face of the part (0 for
+/// NULL).
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_reach_count(result: *const tw_access_result) -> usize {
+    count(result, |r| r.report.faces.len())
+}
+
+/// Face `i`'s reach with the tool (its diameter as given to `tw_access`,
+/// cutting length three diameters, holder two) on the set-up's axis, or on
+/// five axes the best axis: its STEP entity id, the fraction reached
+/// (0–1), the area not reached (mm²) and, for a floor, the largest tool of
+/// those proportions reaching it whole (mm; NaN when not a floor or none
+/// does). Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_access_reach(
+    result: *const tw_access_result,
+    i: usize,
+    step_id: *mut u64,
+    fraction: *mut f64,
+    unreachable_mm2: *mut f64,
+    largest_tool_mm: *mut f64,
+) -> tw_status {
+    guard(|| {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let faces = &(*result).report.faces;
+        let f = faces.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("face {i} out of range ({} faces)", faces.len()),
+        ))?;
+        if !step_id.is_null() {
+            *step_id = f.face;
+        }
+        if !fraction.is_null() {
+            *fraction = f.fraction;
+        }
+        if !unreachable_mm2.is_null() {
+            *unreachable_mm2 = f.unreachable_mm2;
+        }
+        if !largest_tool_mm.is_null() {
+            *largest_tool_mm = f.largest_tool_mm.unwrap_or(f64::NAN);
         }
         Ok(())
     })

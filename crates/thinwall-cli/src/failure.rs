@@ -67,7 +67,7 @@ impl From<thinwall_pipeline::PipelineError> for Failure {
     fn from(e: thinwall_pipeline::PipelineError) -> Self {
         use thinwall_pipeline::PipelineError as E;
         match e {
-            E::Config(_) | E::Setup(_) => Failure::Usage(e.to_string()),
+            E::Config(_) | E::Setup(_) | E::Reach(_) => Failure::Usage(e.to_string()),
             E::OpenShell { .. } | E::Machining(_) => Failure::Input(e.to_string()),
             _ => Failure::Internal(e.to_string()),
         }

@@ -140,17 +140,31 @@ enum Command {
         #[command(flatten)]
         flags: RecognizeFlags,
     },
-    /// Accessibility of the part's faces: so far whether each planar face
-    /// can be flank milled (its G-zone, Harik & Ris; docs/ACCESS.md).
+    /// Accessibility of the part's faces: how much of each face and wall
+    /// side a tool and its holder reach with material in the way, and
+    /// whether each planar face can be flank milled (its G-zone, Harik &
+    /// Ris; docs/ACCESS.md).
     Access {
         /// The STEP file.
         part: PathBuf,
         /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
         #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
         up: Option<[f64; 3]>,
+        /// Machine class: 3-axis (tool axis = up) or 5-axis.
+        #[arg(long, value_enum, default_value = "3-axis")]
+        machine: MachineArg,
+        /// 5-axis: largest tilt of the tool axis from up, degrees.
+        #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
+        tilt_limit: f64,
         /// Tool diameter, mm: obstacles count this far above a face.
         #[arg(long, default_value_t = 12.0, allow_hyphen_values = true)]
         tool_diameter: f64,
+        /// The tool's cutting length, mm (default three diameters).
+        #[arg(long, allow_hyphen_values = true)]
+        cutting_length: Option<f64>,
+        /// The holder's diameter, mm (default two tool diameters).
+        #[arg(long, allow_hyphen_values = true)]
+        holder_diameter: Option<f64>,
         /// Widen the unreachable zones by the tool's radius.
         #[arg(long)]
         tool_radius: bool,
@@ -446,10 +460,18 @@ fn classify_command(
     write_to(output.as_deref(), &text)
 }
 
+/// What `access` judges reach with.
+struct ReachArgs {
+    machine: thinwall_analysis::Machine,
+    cutting_length: Option<f64>,
+    holder_diameter: Option<f64>,
+}
+
 fn access_command(
     part: PathBuf,
     up: Option<[f64; 3]>,
     options: thinwall_access::FlankOptions,
+    reach: ReachArgs,
     format: AccessFormat,
     output: Option<PathBuf>,
 ) -> Result<(), Failure> {
@@ -465,20 +487,57 @@ fn access_command(
             options.threshold
         )));
     }
+    let tool = reach_tool(
+        options.tool_diameter,
+        reach.cutting_length,
+        reach.holder_diameter,
+    )?;
+    if let thinwall_analysis::Machine::FiveAxis { tilt_limit_deg } = reach.machine {
+        if !(tilt_limit_deg.is_finite() && (0.0..90.0).contains(&tilt_limit_deg)) {
+            return Err(Failure::Usage(format!(
+                "--tilt-limit must be within 0..90 degrees, got {tilt_limit_deg}"
+            )));
+        }
+    }
     let (model, _) = thinwall_step::read_file(&part)?;
-    let setup = thinwall_analysis::Setup::new(
-        up.unwrap_or([0.0, 0.0, 1.0]),
-        thinwall_analysis::Machine::ThreeAxis,
-    )
-    .map_err(Failure::usage)?;
+    let setup = thinwall_analysis::Setup::new(up.unwrap_or([0.0, 0.0, 1.0]), reach.machine)
+        .map_err(Failure::usage)?;
     let a = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
     let mesh = thinwall_brep::tessellate::part_mesh(&model);
     let faces = thinwall_access::flank_milling(&a, &mesh, &options);
+    let reach_opts = thinwall_access::reach::ReachOptions {
+        tool: tool.clone(),
+        machine: reach.machine,
+        largest_tool: true,
+    };
+    let reached = thinwall_access::reach::reach(&a, &mesh, &reach_opts)
+        .map_err(|e| Failure::Usage(e.to_string()))?;
+    // The walls, for their sides: the recognizer's, without its own reach.
+    let request = thinwall_pipeline::Request {
+        setup: setup.clone(),
+        allow_open: true,
+        ..Default::default()
+    };
+    let outcome = thinwall_pipeline::run(&model, None, &request)?;
+    let sides = thinwall_access::reach::walls::wall_sides(
+        &a,
+        &outcome.recognition,
+        &reached,
+        tool.diameter,
+    );
     let report = thinwall_report::access::AccessReport::new(
         &part.display().to_string(),
         setup.up,
         options,
         faces,
+        (
+            thinwall_report::access::ReachSettings {
+                tool,
+                machine: reach.machine,
+            },
+            reached,
+            sides,
+        ),
     );
     let text = match format {
         AccessFormat::Text => report.to_text(),
@@ -540,7 +599,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
         Command::Access {
             part,
             up,
+            machine,
+            tilt_limit,
             tool_diameter,
+            cutting_length,
+            holder_diameter,
             tool_radius,
             threshold,
             format,
@@ -551,7 +614,18 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 tool_radius,
                 threshold,
             };
-            access_command(part, up, options, format, output)
+            let machine = match machine {
+                MachineArg::ThreeAxis => thinwall_analysis::Machine::ThreeAxis,
+                MachineArg::FiveAxis => thinwall_analysis::Machine::FiveAxis {
+                    tilt_limit_deg: tilt_limit,
+                },
+            };
+            let reach = ReachArgs {
+                machine,
+                cutting_length,
+                holder_diameter,
+            };
+            access_command(part, up, options, reach, format, output)
         }
         Command::Batch {
             inputs,
@@ -754,11 +828,13 @@ impl RecognizeFlags {
             )));
         }
         let reach_tool = (!self.no_reach)
-            .then(|| reach_tool(
-                cfg.thresholds.preferred_tool_diameter_mm,
-                self.cutting_length,
-                self.holder_diameter,
-            ))
+            .then(|| {
+                reach_tool(
+                    cfg.thresholds.preferred_tool_diameter_mm,
+                    self.cutting_length,
+                    self.holder_diameter,
+                )
+            })
             .transpose()?;
         Ok(thinwall_pipeline::Request {
             reach_tool,

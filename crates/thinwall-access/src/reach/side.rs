@@ -87,7 +87,8 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
     // Keep the triangles within the holder's radius of the tool's line at
     // some height of the face (a corner's offset from the line changes
     // linearly with the height: the two ends bound it).
-    let ends = [v0, v1].map(|v| scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r)));
+    let ends =
+        [v0, v1].map(|v| scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r)));
     let big = 0.5 * tool.holder_diameter;
     cands.retain(|&k| {
         let t = &scene.tris[k as usize];
@@ -95,7 +96,9 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
             t.p.iter()
                 .map(move |p| e2[0] * (p[1] - q[1]) - e2[1] * (p[0] - q[0]))
         });
-        let (lo, hi) = offs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| (a.min(d), b.max(d)));
+        let (lo, hi) = offs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| {
+            (a.min(d), b.max(d))
+        });
         lo < big && hi > -big
     });
     // Highest first: a line skips the triangles below its tip at once.
