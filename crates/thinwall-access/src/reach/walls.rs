@@ -89,6 +89,9 @@ pub fn wall_sides(
                             .filter_map(|&(s, b)| gap(a, f.body, s, b))
                             .min_by(f64::total_cmp);
                         let why = match narrowest {
+                            _ if *id == f.id && *by == ToolPart::Holder => format!(
+                                "the holder meets {id}'s own top: the side is taller than the cutting length"
+                            ),
                             Some(g) if g < tool_diameter => {
                                 format!("gap to {id} is {g:.1} mm, narrower than the tool")
                             }
