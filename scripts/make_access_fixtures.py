@@ -17,12 +17,42 @@ values in docs/ACCESS.md):
   overhang.step: a 100 x 60 x 10 plate, a wall x 0..10 to z 50 and a shelf
     from its top x 10..40, z 40..50, over the plate's top face.
 
+Harik & Ris's worked case rebuilt (their figures 6 and 10-13 are not in the
+text we have: a semi-open planar face with three closed linear edges, so
+nine proposed directions, and one obstacle over it):
+  bay_with_lip.step: a block x -20..60, y -70..110, z -10..20 with a bay cut
+    from z 0 up, whose floor (z 0) is the trapezoid (0,0) (60,-60/sqrt3)
+    (60,40+60/sqrt3) (0,40): the back edge x = 0 is closed with both
+    neighbours closed, the two side edges at -30 and +30 degrees are closed
+    windows, the edge x = 60 is open (the block ends). A lip x 40..50,
+    from the lower side wall to y -10, z 4..8, hangs over the floor.
+
 usage: python3 scripts/make_access_fixtures.py [OUT_DIR]   (default fixtures/access)
 """
-import os, sys
+import math, os, sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from make_recognition_fixtures import box, cut, fuse, write  # noqa: E402
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakePolygon  # noqa: E402
+from OCP.BRepPrimAPI import BRepPrimAPI_MakePrism  # noqa: E402
+from OCP.gp import gp_Pnt, gp_Vec  # noqa: E402
+
+
+def prism_z(points, z0, z1):
+    """A prism of the polygon `points` (x, y) from z0 to z1."""
+    poly = BRepBuilderAPI_MakePolygon()
+    for x, y in points:
+        poly.Add(gp_Pnt(x, y, z0))
+    poly.Close()
+    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
+    return BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, z1 - z0)).Shape()
+
+
+def bay_with_lip():
+    s = 1.0 / math.sqrt(3.0)
+    bay = prism_z([(0, 0), (70, -70 * s), (70, 40 + 70 * s), (0, 40)], 0, 30)
+    block = cut(box(-20, -70, -10, 60, 110, 20), bay)
+    return fuse(block, box(40, -40, 4, 50, -10, 8))
 
 
 def main():
@@ -36,6 +66,7 @@ def main():
     write(pockets, os.path.join(out, "pockets.step"))
     shelf = fuse(box(0, 0, 0, 100, 60, 10), box(0, 0, 10, 10, 60, 50), box(10, 0, 40, 40, 60, 50))
     write(shelf, os.path.join(out, "overhang.step"))
+    write(bay_with_lip(), os.path.join(out, "bay_with_lip.step"))
 
 
 if __name__ == "__main__":

@@ -224,3 +224,141 @@ fn a_block_on_a_plate_shades_its_strips_by_construction() {
     let up = r * nalgebra::Vector3::new(0.0, 0.0, 1.0);
     check(&tpart, [up.x, up.y, up.z], &r);
 }
+
+/// Harik & Ris's worked case, rebuilt (their figures 6 and 10–13 are not
+/// in the text: `fixtures/access/bay_with_lip.step`,
+/// scripts/make_access_fixtures.py). The bay's floor is the trapezoid
+/// (0,0) (60,−60/√3) (60,40+60/√3) (0,40): the back edge E1 (x = 0) is
+/// closed with both neighbours closed, the side edges E0 (−30°) and E2
+/// (+30°) are closed windows, the edge x = 60 is open. A lip Λ (x 40..50,
+/// from E0 up to y = −10, z 4..8) hangs over it within the Ø12 slab.
+///
+/// Proposed, as the paper's rules give for three closed linear edges:
+/// nine directions, priorities 1 (across E1), 2, 2 (across E0, E2),
+/// 3, 3 (along E1), 4 × 4 (along E0, E2). L-zones by hand (a direction is
+/// the way the tool moves in; a barrier shades what lies beyond it):
+/// - across E1 (−x): Λ and the triangle T1 left of it between E0 and
+///   y = −10;
+/// - across E0: the part above the line from E2's open end at 240°
+///   (E2 shades it) S2, with Λ and the sliver τ Λ shades down to E0;
+/// - across E2: the mirror of S2, with the band Λ shades up to E2 beyond it;
+/// - along E1 (±y): the open edge is parallel, the whole face;
+/// - along E0 and E2 into the walls: the whole face; out of the walls:
+///   Λ's shadow along E0 (a band 50/√3 − 10 wide over x 0..50), or along
+///   E2 (Λ and 2τ).
+///
+/// The G-zone after E1's direction leaves Λ ∪ T1 (93.1 % reached), after
+/// E0's Λ ∪ τ (95.6 %): the threshold is reached with two directions, as in
+/// the paper's story. Asked for 99 %, every direction is tried, the
+/// reached share never falls, and Λ ∪ τ is all no direction reaches.
+#[test]
+fn the_papers_worked_case_proposes_nine_directions_and_grows_to_the_threshold() {
+    let r3 = 3f64.sqrt();
+    let area = 2400.0 + 3600.0 / r3;
+    let lip = 450.0 / r3 - 100.0;
+    let t1 = (40.0 - 10.0 * r3).powi(2) / (2.0 * r3);
+    let tau = 0.5 * (40.0 / r3 - 10.0) * (10.0 - 2.5 * r3);
+    let shoelace = |p: &[(f64, f64)]| {
+        let n = p.len();
+        0.5 * (0..n)
+            .map(|i| p[i].0 * p[(i + 1) % n].1 - p[(i + 1) % n].0 * p[i].1)
+            .sum::<f64>()
+            .abs()
+    };
+    // S2: the floor above the line through (60, 40 + 60/√3) at 240°.
+    let top = 40.0 + 60.0 / r3;
+    let x = (r3 * 60.0 - top) / (r3 + 1.0 / r3);
+    let s2 = shoelace(&[(60.0, top), (0.0, 40.0), (0.0, 0.0), (x, -x / r3)]);
+    // Across E2, beyond the mirror of S2: the band between the lines
+    // y + √3x = c through (60, −60/√3) and through Λ's corner (50, −10),
+    // from Λ's side x = 50 up to E2.
+    let (c1, c2) = (-60.0 / r3 + r3 * 60.0, -10.0 + r3 * 50.0);
+    let on_e2 = |c: f64| {
+        let x = (c - 40.0) / (r3 + 1.0 / r3);
+        (x, 40.0 + x / r3)
+    };
+    let band = shoelace(&[(50.0, c1 - r3 * 50.0), (50.0, -10.0), on_e2(c2), on_e2(c1)]);
+    // (direction in the floor's plane, priority, L-zone)
+    let want: [([f64; 2], u8, f64); 9] = [
+        ([-1.0, 0.0], 1, lip + t1),
+        ([-0.5, -0.5 * r3], 2, s2 + lip + tau),
+        ([-0.5, 0.5 * r3], 2, s2 + band),
+        ([0.0, -1.0], 3, area),
+        ([0.0, 1.0], 3, area),
+        ([-0.5 * r3, -0.5], 4, lip + 2.0 * tau),
+        ([-0.5 * r3, 0.5], 4, 50.0 * (50.0 / r3 - 10.0)),
+        ([0.5 * r3, -0.5], 4, area),
+        ([0.5 * r3, 0.5], 4, area),
+    ];
+    let path = common::root().join("fixtures/access/bay_with_lip.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let check = |part: &thinwall_brep::Part,
+                 turn: &nalgebra::Rotation3<f64>,
+                 threshold: f64|
+     -> PlanarFaceAccess {
+        let up = turn * nalgebra::Vector3::z();
+        let setup = Setup::new([up.x, up.y, up.z], Machine::ThreeAxis).unwrap();
+        let a = PartAnalysis::new(part, setup);
+        let mesh = thinwall_brep::tessellate::part_mesh(part);
+        let options = FlankOptions {
+            threshold,
+            ..FlankOptions::default()
+        };
+        let floor = flank_milling(&a, &mesh, &options)
+            .into_iter()
+            .find(|f| (f.area_mm2 - area).abs() <= 1e-6 * area)
+            .expect("the bay's floor");
+        assert_eq!(floor.nature, Nature::SemiOpen);
+        assert_eq!(floor.candidates.len(), 9, "{:?}", floor.candidates);
+        let priorities: Vec<u8> = floor.candidates.iter().map(|c| c.priority).collect();
+        assert_eq!(priorities, [1, 2, 2, 3, 3, 4, 4, 4, 4]);
+        for (d, priority, l) in want {
+            let d = turn * nalgebra::Vector3::new(d[0], d[1], 0.0);
+            let c = floor
+                .candidates
+                .iter()
+                .find(|c| nalgebra::Vector3::from(c.direction).dot(&d) > 1.0 - 1e-9)
+                .unwrap_or_else(|| panic!("no candidate along {d:?}"));
+            assert_eq!(c.priority, priority, "{d:?}");
+            assert!(
+                (c.l_zone_mm2 - l).abs() <= 1e-6 * l,
+                "{d:?}: L-zone {} mm², by hand {l}",
+                c.l_zone_mm2
+            );
+        }
+        floor
+    };
+    let reversed = common::faces_reversed(&text);
+    let (r, t) = common::rigid_motion(5);
+    let (turned, _) = common::turned_step(&text, &r, &t);
+    let poses = [
+        (text.as_str(), nalgebra::Rotation3::identity()),
+        (reversed.as_str(), nalgebra::Rotation3::identity()),
+        (turned.as_str(), r),
+    ];
+    for (text, turn) in &poses {
+        let part = thinwall_step::read_bytes(text.as_bytes(), "bay").unwrap().0;
+        let floor = check(&part, turn, 0.95);
+        let reached = [1.0 - (lip + t1) / area, 1.0 - (lip + tau) / area];
+        assert_eq!(floor.used.len(), 2, "{:?}", floor.used);
+        for (u, want) in floor.used.iter().zip(reached) {
+            assert!((u.visibility - want).abs() <= 1e-6, "{:?}", floor.used);
+        }
+        assert!(floor.advisable);
+        let all = check(&part, turn, 0.99);
+        assert_eq!(all.used.len(), 9);
+        assert!(
+            all.used
+                .windows(2)
+                .all(|w| w[1].visibility >= w[0].visibility - 1e-9),
+            "{:?}",
+            all.used.iter().map(|u| u.visibility).collect::<Vec<_>>()
+        );
+        assert!(
+            (all.visibility - reached[1]).abs() <= 1e-6,
+            "{}",
+            all.visibility
+        );
+        assert!(!all.advisable);
+    }
+}

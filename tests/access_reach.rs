@@ -333,16 +333,9 @@ fn five_axes_report_the_axes_that_reach_a_face() {
 #[test]
 fn reach_does_not_depend_on_face_order() {
     let (part, text) = read("two_ribs.step");
-    // The shell's faces listed the other way round.
-    let start = text.find("CLOSED_SHELL('',(").unwrap() + "CLOSED_SHELL('',(".len();
-    let end = start + text[start..].find(')').unwrap();
-    let mut ids: Vec<&str> = text[start..end].split(',').map(str::trim).collect();
-    ids.reverse();
-    let turned = format!("{}{}{}", &text[..start], ids.join(","), &text[end..]);
-    let path = std::env::temp_dir().join(format!("tw-reach-order-{}.step", std::process::id()));
-    std::fs::write(&path, turned).unwrap();
-    let reordered = thinwall_step::read_file(&path).unwrap().0;
-    let _ = std::fs::remove_file(&path);
+    let reordered = thinwall_step::read_bytes(common::faces_reversed(&text).as_bytes(), "reversed")
+        .unwrap()
+        .0;
     assert_ne!(
         part.face(thinwall_brep::FaceId(0)).step_id,
         reordered.face(thinwall_brep::FaceId(0)).step_id
@@ -360,5 +353,63 @@ fn reach_does_not_depend_on_face_order() {
     for (p, q) in x.iter().zip(&y) {
         assert_eq!(p.0, q.0);
         close(q.1, p.1, 1e-9, &format!("face #{}", p.0));
+    }
+}
+
+/// Every shared thin-walled part and recognition fixture runs (parts
+/// nobody tuned the reach model to): every face judged, its figures in
+/// range and adding up, floors with a largest tool that fits the part.
+/// A shared frame turned with its set-up gives the same fractions.
+#[test]
+fn every_thin_walled_part_runs_and_a_turned_frame_agrees() {
+    let opts = ReachOptions {
+        largest_tool: true,
+        ..ReachOptions::default()
+    };
+    let mut judged = 0;
+    for path in common::thin_walled_parts() {
+        let part = thinwall_step::read_file(&path).unwrap().0;
+        let faces = run(&part, [0.0, 0.0, 1.0], &opts);
+        assert_eq!(faces.len(), part.face_ids().count(), "{}", path.display());
+        let size = part.bounding_box().diagonal();
+        for f in &faces {
+            let what = format!("{} face #{}", path.display(), f.face);
+            assert!((0.0..=1.0).contains(&f.fraction), "{what}: {}", f.fraction);
+            let left = (1.0 - f.fraction) * f.area_mm2;
+            assert!(
+                (f.unreachable_mm2 - left).abs() <= 1e-6 * f.area_mm2.max(1.0),
+                "{what}: {} mm² unreached, {left} by the fraction",
+                f.unreachable_mm2
+            );
+            if let Some(d) = f.largest_tool_mm {
+                assert!(d > 0.0 && d <= 2.0 * size + 1e-9, "{what}: Ø{d}");
+            }
+            judged += 1;
+        }
+    }
+    assert!(judged > 600, "{judged}");
+
+    let path = common::shared_data().join("thinwall/frame_02.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let part = thinwall_step::read_file(&path).unwrap().0;
+    let before = run(&part, [0.0, 0.0, 1.0], &ReachOptions::default());
+    let pose = &poses()[1];
+    let after = run(
+        &posed_part(&text, pose),
+        pose.up(),
+        &ReachOptions::default(),
+    );
+    assert!(before
+        .iter()
+        .any(|f| f.fraction < 1.0 - 1e-4 && f.fraction > 0.0));
+    for (b, a) in before.iter().zip(&after) {
+        assert_eq!(b.face, a.face);
+        assert!(
+            (b.fraction - a.fraction).abs() <= 1e-6,
+            "face #{}: {} as built, {} turned",
+            b.face,
+            b.fraction,
+            a.fraction
+        );
     }
 }

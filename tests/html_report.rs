@@ -285,11 +285,27 @@ fn access_page_colours_every_planar_face_and_outlines_g_zones() {
             assert!(!f["g_zone"].as_array().unwrap().is_empty(), "{}", f["face"]);
         }
     }
+    // A planar face the tool does not reach whole (more than 1e-4 of it
+    // left) carries the outline of what it misses (the Reach view draws it).
+    let mut outlined = 0;
+    for f in data["access"]["faces"].as_array().unwrap() {
+        let planar = f["contact"] == "floor" || f["contact"] == "side";
+        if planar && f["fraction"].as_f64().unwrap() < 1.0 - 1e-4 {
+            let rings = f["unreachable"].as_array().map_or(0, Vec::len);
+            assert!(rings > 0, "face #{}", f["face"]);
+            outlined += 1;
+        }
+    }
+    assert!(outlined > 0);
     for key in [
         "access.advisable",
         "access.partial",
         "access.blocked",
         "access.closed",
+        "reach.whole",
+        "reach.most",
+        "reach.part",
+        "reach.none",
     ] {
         assert!(data["palette"][key].is_string());
     }

@@ -132,3 +132,13 @@ pub fn rigid_motion(seed: u64) -> (nalgebra::Rotation3<f64>, nalgebra::Vector3<f
     );
     (nalgebra::Rotation3::from_axis_angle(&axis, angle), t)
 }
+
+/// The STEP text with its first shell's faces listed the other way round
+/// (the same part; only the order in the file differs).
+pub fn faces_reversed(text: &str) -> String {
+    let start = text.find("CLOSED_SHELL('',(").expect("a closed shell") + "CLOSED_SHELL('',(".len();
+    let end = start + text[start..].find(')').expect("the shell's face list");
+    let mut ids: Vec<&str> = text[start..end].split(',').map(str::trim).collect();
+    ids.reverse();
+    format!("{}{}{}", &text[..start], ids.join(","), &text[end..])
+}

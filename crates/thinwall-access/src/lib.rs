@@ -216,9 +216,24 @@ fn face_access(
     } else {
         0.0
     };
+    // One direction once (within 1°), with its best priority, then the
+    // proposing edge's STEP id: neither face nor edge order decides which
+    // stays.
+    let mut proposals = candidates(&loops, &region);
+    proposals.sort_by_key(|c| (c.2, part.edge(c.4).step_id, c.5));
+    let same = 1.0f64.to_radians().cos();
+    let mut kept: Vec<Proposal> = Vec::with_capacity(proposals.len());
+    for c in proposals {
+        if !kept
+            .iter()
+            .any(|k| k.0[0] * c.0[0] + k.0[1] * c.0[1] > same)
+        {
+            kept.push(c);
+        }
+    }
     // Each candidate's L-zone once: its area orders the candidates, and
     // the G-zone intersects the zones themselves.
-    let mut candidates: Vec<(Proposal, MultiPolygon<f64>)> = candidates(&loops, &region)
+    let mut candidates: Vec<(Proposal, MultiPolygon<f64>)> = kept
         .into_iter()
         .map(|mut c| {
             let l = zones::l_zone(&region, &barriers, c.0, radius);
@@ -381,12 +396,6 @@ fn candidates(loops: &[Vec<SketchEdge>], region: &MultiPolygon<f64>) -> Vec<Prop
                 return;
             }
             let r = [r[0] / n, r[1] / n];
-            // One direction once, with its best priority.
-            if out.iter().any(|c| {
-                c.0[0] * r[0] + c.0[1] * r[1] > (1.0f64.to_radians()).cos() && c.2 <= priority
-            }) {
-                return;
-            }
             let nth = out.iter().filter(|c| c.4 == edge).count() as u8;
             out.push((r, 0.0, priority, rule, edge, nth));
         };

@@ -510,8 +510,32 @@ fn access_command(
         machine: reach.machine,
         largest_tool: true,
     };
-    let reached = thinwall_access::reach::reach(&a, &mesh, &reach_opts)
-        .map_err(|e| Failure::Usage(e.to_string()))?;
+    // Every face with largest tools takes minutes on large parts: a bar
+    // on a terminal.
+    let bar = std::io::IsTerminal::is_terminal(&std::io::stderr()).then(|| {
+        let b = indicatif::ProgressBar::new(mesh.faces.len() as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "reach {bar:40} {pos}/{len} faces, {elapsed} ({eta} left)",
+        ) {
+            b.set_style(style);
+        }
+        b
+    });
+    let reached = thinwall_access::reach::reach_observed(
+        &a,
+        &mesh,
+        &reach_opts,
+        |_| true,
+        |_, _| {
+            if let Some(b) = &bar {
+                b.inc(1);
+            }
+        },
+    )
+    .map_err(|e| Failure::Usage(e.to_string()))?;
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
     // The walls, for their sides: the recognizer's, without its own reach.
     let request = thinwall_pipeline::Request {
         setup: setup.clone(),
@@ -542,11 +566,9 @@ fn access_command(
     let text = match format {
         AccessFormat::Text => report.to_text(),
         AccessFormat::Json => report.to_json(),
-        AccessFormat::Html => thinwall_report::html::access_page(
-            &format!("Flank milling: {}", part.display()),
-            &a,
-            &report,
-        ),
+        AccessFormat::Html => {
+            thinwall_report::html::access_page(&format!("Access: {}", part.display()), &a, &report)
+        }
     };
     write_to(output.as_deref(), &text)
 }

@@ -566,13 +566,9 @@
     };
   }
 
-  // ------------------------------------------------- flank milling (access)
-  function accessTab() {
-    const rep = D.access;
-    const planar = rep.planar_faces;
-    const index = new Map(planar.map((f) => [f.body + ':' + f.face, f]));
-    const state = (f) => (f.nature === 'closed' ? 'closed' : f.advisable ? 'advisable' : f.visibility > 0.5 ? 'partial' : 'blocked');
-    const tint = (f) => P['access.' + state(f)];
+  // ------------------------------------------------- access: shared marks
+  // Lines drawn over the part (outlines, directions), cleared per choice.
+  function overlay() {
     const marks = new T.Group();
     viewer.add(marks);
     const line = (pts, colour) => {
@@ -582,16 +578,79 @@
       g.setAttribute('position', new T.BufferAttribute(arr, 3));
       return new T.LineSegments(g, new T.LineBasicMaterial({ color: colour, depthTest: false }));
     };
+    const rings = (list, colour) => {
+      for (const ring of list || []) {
+        const pts = [];
+        for (let k = 0; k < ring.length; k++) pts.push(ring[k], ring[(k + 1) % ring.length]);
+        marks.add(line(pts, colour));
+      }
+    };
+    return { marks, line, rings };
+  }
+
+  // ------------------------------------------------- reach (access)
+  function reachTab() {
+    const rep = D.access;
+    const faces = rep.faces;
+    const index = new Map(faces.map((f) => [f.body + ':' + f.face, f]));
+    const WHOLE = 1 - 1e-4;
+    const band = (f) => (f.fraction >= WHOLE ? 'whole' : f.fraction >= 0.75 ? 'most' : f.fraction > 0 ? 'part' : 'none');
+    const tint = (f) => P['reach.' + band(f)];
+    const { marks, rings } = overlay();
+    const tool = rep.reach.tool;
+    const toolText = 'Ø' + fmt(tool.diameter) + ' mm, cutting ' + fmt(tool.cutting_length) + ' mm, holder Ø' + fmt(tool.holder_diameter) + ' mm';
+    const machine = rep.reach.machine.class === 'five_axis' ? 'five axes, tilt ≤ ' + fmt(rep.reach.machine.tilt_limit_deg) + '°' : 'three axes';
+    return {
+      name: 'Reach',
+      enter() {
+        part.group.visible = true;
+        legend([['reached whole', P['reach.whole']], ['75 % or more', P['reach.most']], ['partly', P['reach.part']], ['not reached', P['reach.none']]]);
+        this.list(); this.paint();
+        if (!selected) details('Reach', [['tool', toolText], ['machine', machine], ['faces', String(faces.length)], ['reached whole', String(faces.filter((f) => f.fraction >= WHOLE).length)], ['not reached', String(faces.filter((f) => f.fraction <= 0).length)]], [el('p', { class: 'muted' }, 'Faces coloured by the share the tool reaches without the cutter or holder cutting into the part. Choose a face: the part it does not reach is outlined red.')]);
+      },
+      leave() { marks.clear(); },
+      list() {
+        const order = [...faces].sort((a, b) => a.fraction - b.fraction || a.face - b.face);
+        list(order.map((f) => ({ key: f.body + ':' + f.face, id: '#' + f.face, what: f.contact + ' · ' + fmt(100 * f.fraction, 1) + ' %' + (f.largest_tool_mm != null ? ' · largest Ø' + fmt(f.largest_tool_mm) : ''), colour: tint(f) })));
+      },
+      paint() {
+        const on = selected && selected.faces ? new Set(selected.faces) : null;
+        part.paint((i) => {
+          const fd = D.part.faces[i];
+          const f = index.get(fd.body + ':' + fd.step_id);
+          const c = f ? new T.Color(tint(f)) : colour('other');
+          return on && !on.has(i) ? pale(c) : c;
+        });
+        viewer.render();
+      },
+      select(key) {
+        const f = index.get(key);
+        if (!f) return;
+        selected = { key, faces: [faceIndex.get(key)] };
+        this.paint(); this.list();
+        marks.clear(); rings(f.unreachable, 0xd0201a); viewer.render();
+        const table = el('table', null, el('tr', null, el('td', null, 'face'), el('td', null, 'tool part · unreached mm²')));
+        for (const b of f.blocked_by || []) table.append(el('tr', null, el('td', null, '#' + b.face), el('td', null, b.by + ' · ' + fmt(b.unreachable_mm2))));
+        details('Face #' + f.face + ' — ' + f.contact, [['area', fmt(f.area_mm2) + ' mm²'], ['reached', fmt(100 * f.fraction, 1) + ' %'], ['not reached', fmt(f.unreachable_mm2) + ' mm²'], ['tool', toolText], ['tilt', f.tilt_deg ? fmt(f.tilt_deg) + '°' : null], ['largest tool reaching it whole', f.largest_tool_mm != null ? 'Ø' + fmt(f.largest_tool_mm) + ' mm' : null], ['note', f.note]], (f.blocked_by || []).length ? [el('h3', null, 'In the way'), table] : []);
+      },
+      pickFace(i) { const fd = D.part.faces[i]; const key = fd.body + ':' + fd.step_id; if (index.has(key)) this.select(key); else faceInfo(i); },
+    };
+  }
+
+  // ------------------------------------------------- flank milling (access)
+  function accessTab() {
+    const rep = D.access;
+    const planar = rep.planar_faces;
+    const index = new Map(planar.map((f) => [f.body + ':' + f.face, f]));
+    const state = (f) => (f.nature === 'closed' ? 'closed' : f.advisable ? 'advisable' : f.visibility > 0.5 ? 'partial' : 'blocked');
+    const tint = (f) => P['access.' + state(f)];
+    const { marks, line, rings } = overlay();
     function showMarks(f) {
       marks.clear();
       if (!f) return;
       // The G-zone's outlines, and each direction used as a line into the
       // face's middle (the tool's body comes from its far end).
-      for (const ring of f.g_zone || []) {
-        const pts = [];
-        for (let k = 0; k + 1 < ring.length; k++) pts.push(ring[k], ring[k + 1]);
-        marks.add(line(pts, 0xd0201a));
-      }
+      rings(f.g_zone, 0xd0201a);
       const i = faceIndex.get(f.body + ':' + f.face);
       const pts = D.part.faces[i].points;
       const c = [0, 0, 0];
@@ -645,7 +704,7 @@
     tabs.push(featureTab('Stiffness features', stiff, (f) => P['stiffness.' + f.kind] || P.other, stiffRows, kindLegend));
   }
   if (D.view === 'classification') tabs.push(classificationTab());
-  if (D.view === 'access') tabs.push(accessTab());
+  if (D.view === 'access') tabs.push(reachTab(), accessTab());
 
   function show(tab) {
     if (mode && mode.leave) mode.leave();

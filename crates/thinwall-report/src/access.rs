@@ -65,7 +65,9 @@ impl AccessReport {
             faces,
             wall_sides,
             not_yet: vec![
-                "the HTML page colours faces by flank-milling verdict, not yet by reach".into(),
+                "the largest tool is searched for floors only".into(),
+                "five axes: up and 24 tilted axes are tried, not every axis within the limit"
+                    .into(),
             ],
         }
     }

@@ -76,8 +76,12 @@ pub fn table() -> BTreeMap<String, String> {
     for k in MachiningKind::ALL {
         m.insert(format!("machining.{}", k.name()), hex(machining(*k)));
     }
-    let named: [(&str, [u8; 3]); 15] = [
+    let named: [(&str, [u8; 3]); 19] = [
         ("access.advisable", [90, 190, 110]),
+        ("reach.whole", [90, 190, 110]),
+        ("reach.most", [190, 200, 80]),
+        ("reach.part", [240, 150, 60]),
+        ("reach.none", [215, 70, 60]),
         ("access.partial", [240, 170, 60]),
         ("access.blocked", [215, 70, 60]),
         ("access.closed", [120, 120, 130]),

@@ -323,6 +323,18 @@ pub fn reach_of(
     opts: &ReachOptions,
     wanted: impl Fn(FaceId) -> bool + Sync,
 ) -> Result<Vec<FaceReach>, ReachError> {
+    reach_observed(a, mesh, opts, wanted, |_, _| {})
+}
+
+/// As [`reach_of`], telling `done(faces judged, faces wanted)` after each
+/// face (from any thread): a caller's progress bar on long runs.
+pub fn reach_observed(
+    a: &PartAnalysis,
+    mesh: &Mesh,
+    opts: &ReachOptions,
+    wanted: impl Fn(FaceId) -> bool + Sync,
+    done: impl Fn(usize, usize) + Sync,
+) -> Result<Vec<FaceReach>, ReachError> {
     opts.tool.check()?;
     let axes = axes(a, &opts.machine)?;
     let ctx = Ctx::new(a, opts.tool.clone());
@@ -330,10 +342,18 @@ pub fn reach_of(
     let chosen: Vec<usize> = (0..mesh.faces.len())
         .filter(|&k| wanted(mesh.faces[k].face))
         .collect();
+    let (total, count) = (chosen.len(), std::sync::atomic::AtomicUsize::new(0));
     let out = chosen
         .into_par_iter()
         .with_max_len(1)
-        .map(|k| face_reach(a, mesh, &ctx, &scenes, k as u32, opts.largest_tool))
+        .map(|k| {
+            let r = face_reach(a, mesh, &ctx, &scenes, k as u32, opts.largest_tool);
+            done(
+                count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
+                total,
+            );
+            r
+        })
         .collect();
     Ok(out)
 }
