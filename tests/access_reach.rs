@@ -366,10 +366,13 @@ fn every_thin_walled_part_runs_and_a_turned_frame_agrees() {
         largest_tool: true,
         ..ReachOptions::default()
     };
-    let mut judged = 0;
-    for path in common::thin_walled_parts() {
+    let (mut judged, mut pockets) = (0, 0);
+    let mut parts = common::thin_walled_parts();
+    parts.push(common::root().join("fixtures/access/pockets.step"));
+    for path in parts {
         let part = thinwall_step::read_file(&path).unwrap().0;
         let faces = run(&part, [0.0, 0.0, 1.0], &opts);
+        pockets += largest_tool_fits(&path, &part, &faces);
         assert_eq!(faces.len(), part.face_ids().count(), "{}", path.display());
         let size = part.bounding_box().diagonal();
         for f in &faces {
@@ -388,6 +391,7 @@ fn every_thin_walled_part_runs_and_a_turned_frame_agrees() {
         }
     }
     assert!(judged > 600, "{judged}");
+    assert!(pockets >= 1, "{pockets} pocket floors checked");
 
     let path = common::shared_data().join("thinwall/frame_02.step");
     let text = std::fs::read_to_string(&path).unwrap();
@@ -412,4 +416,46 @@ fn every_thin_walled_part_runs_and_a_turned_frame_agrees() {
             a.fraction
         );
     }
+}
+
+/// The largest tool reaching a closed pocket's floor whole never exceeds
+/// the machining feature's `largest_tool_diameter` (twice the floor's
+/// inscribed radius: a tool that reaches every point of a floor walled all
+/// round must fit in it). It is smaller where sharp inner corners keep
+/// material any round tool leaves (pockets.step's wide pocket: Ø24 fits,
+/// a much smaller tool reaches it whole). Returns the floors checked.
+fn largest_tool_fits(path: &std::path::Path, part: &Part, faces: &[FaceReach]) -> usize {
+    let req = thinwall_pipeline::Request {
+        setup: Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
+        allow_open: true,
+        ..Default::default()
+    };
+    let out = thinwall_pipeline::run(part, None, &req).unwrap();
+    let mut checked = 0;
+    for m in &out.machining {
+        // A closed pocket with one floor: walled all round, open only
+        // where the tool comes in. (A pocket spanning a rib grid has rib
+        // tops among its floors, which a larger tool reaches overhanging.)
+        let (thinwall_analysis::MachiningKind::Pocket, Some(fits), [_], [_]) = (
+            m.kind,
+            m.largest_tool_diameter,
+            m.bottom_faces.as_slice(),
+            m.open_to.as_slice(),
+        ) else {
+            continue;
+        };
+        for f in faces.iter().filter(|f| m.bottom_faces.contains(&f.face)) {
+            let Some(d) = f.largest_tool_mm else { continue };
+            // The search's step (0.01 mm) and the 128-gon disks.
+            assert!(
+                d <= fits * (1.0 + 1e-3) + 0.02,
+                "{} {}: floor #{} reached whole by Ø{d}, only Ø{fits} fits",
+                path.display(),
+                m.id,
+                f.face
+            );
+            checked += 1;
+        }
+    }
+    checked
 }
