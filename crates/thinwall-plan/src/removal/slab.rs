@@ -275,3 +275,22 @@ fn strip(p: &Polygon<f64>, q: &Polygon<f64>) -> Polygon<f64> {
     }
     Polygon::new(LineString::new(ring), vec![])
 }
+
+/// The block's cross-section at height `z`: where its lower bound lies at
+/// or below `z` and its upper bound above it (exact for planes and
+/// cylinders; a cone's bound counts as crossing its whole cell, as in
+/// [`cut`]).
+pub fn section(r: &Removal, b: &Block, z: f64) -> MultiPolygon<f64> {
+    let cell = &r.cells[b.cell];
+    let (lo_r, hi_r) = (r.bound_range(&b.lower), r.bound_range(&b.upper));
+    if z < lo_r[0] || z >= hi_r[1] {
+        return MultiPolygon::new(vec![]);
+    }
+    let (hl, hu) = (r.height_of(&b.lower), r.height_of(&b.upper));
+    let bbox = grow(cell.bbox);
+    let whole = MultiPolygon::new(vec![cell.poly.clone()]);
+    clip(
+        &whole,
+        &[&side(&hl, z, bbox, true), &side(&hu, z, bbox, false)],
+    )
+}

@@ -1,0 +1,245 @@
+//! Roughing layers and cutter fields (Schuster ch. 4–5): z-levels from
+//! the stock's top down at the axial depth of cut, plus a level exactly at
+//! the height of every flat face of the part facing up (so floors are not
+//! left with steps) or down (an undercut's ceiling); per layer the cross-section of the removal region
+//! (stock − part, [`thinwall_plan::removal`]) at the layer's bottom, as
+//! closed contours split into cutter fields: one outer contour each, its
+//! inner contours islands, every contour edge marked as blank (the stock's
+//! boundary) or part contour.
+
+use geo::{Area, BoundingRect, Contains, Coord, LineString, MultiPolygon, Point, Polygon, Rect};
+use serde::Serialize;
+use thinwall_plan::removal::pieces::{Facing, Height};
+use thinwall_plan::removal::{outline, slab, Removal};
+
+/// What the layers are cut with.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayerOptions {
+    /// Depth of cut between levels, mm (the roughing tool's a_p).
+    pub axial_depth_mm: f64,
+    /// The smallest tool's diameter, mm: a field it cannot enter is too
+    /// small.
+    pub smallest_tool_mm: f64,
+}
+
+/// What a contour edge runs along.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EdgeKind {
+    /// The stock's boundary: the tool may come in over it.
+    Blank,
+    /// The part: the tool must not cut past it.
+    Part,
+}
+
+/// A closed contour in the removal frame's (x, y), mm, and what each edge
+/// (from point i to point i + 1, the last back to the first) runs along.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Contour {
+    pub points: Vec<[f64; 2]>,
+    pub edges: Vec<EdgeKind>,
+}
+
+/// One cutter field: an outer contour and its islands.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CutterField {
+    pub outer: Contour,
+    pub islands: Vec<Contour>,
+    pub area_mm2: f64,
+    /// The widest circle inside it, mm.
+    pub inscribed_diameter_mm: f64,
+    /// Narrower than the smallest tool: no tool enters it.
+    pub too_small: bool,
+}
+
+/// One roughing layer.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RoughingLayer {
+    pub index: usize,
+    pub z_top_mm: f64,
+    pub z_bottom_mm: f64,
+    /// STEP ids of the part's flat faces facing up at the layer's bottom.
+    pub floors: Vec<u64>,
+    /// The removal region's cross-section at the bottom, mm².
+    pub area_mm2: f64,
+    pub fields: Vec<CutterField>,
+}
+
+/// The levels, top down: every `axial_depth_mm` below the stock's top and
+/// every upward flat face's height within the removal, down to its lowest
+/// point. Levels closer than `tol` are one (the flat face's wins).
+pub fn levels(r: &Removal, axial_depth_mm: f64, tol: f64) -> Vec<(f64, Vec<u64>)> {
+    let (mut top, mut bottom) = (f64::NEG_INFINITY, f64::INFINITY);
+    for b in &r.blocks {
+        top = top.max(r.bound_range(&b.upper)[1]);
+        bottom = bottom.min(r.bound_range(&b.lower)[0]);
+    }
+    if top.is_nan() || bottom.is_nan() || top <= bottom {
+        return Vec::new();
+    }
+    let mut flats: Vec<(f64, Vec<u64>)> = Vec::new();
+    for p in &r.part_pieces {
+        let Height::Plane { z0, gx, gy, .. } = p.height else {
+            continue;
+        };
+        if gx != 0.0 || gy != 0.0 || z0 <= bottom - tol || z0 >= top - tol {
+            continue;
+        }
+        // A flat face facing down (an undercut's ceiling) bounds a layer
+        // too, so no layer mixes material above and below it.
+        let floor = (p.facing == Facing::Up).then_some(p.step_id);
+        match flats.iter_mut().find(|f| (f.0 - z0).abs() <= tol) {
+            Some(f) => f.1.extend(floor),
+            None => flats.push((z0, floor.into_iter().collect())),
+        }
+    }
+    let mut out = flats;
+    let steps = ((top - bottom) / axial_depth_mm).ceil() as usize;
+    for k in 1..=steps {
+        let z = (top - k as f64 * axial_depth_mm).max(bottom);
+        if !out.iter().any(|f| (f.0 - z).abs() <= tol) {
+            out.push((z, Vec::new()));
+        }
+    }
+    out.retain(|f| f.0 >= bottom - tol);
+    out.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for f in &mut out {
+        f.1.sort_unstable();
+        f.1.dedup();
+    }
+    out
+}
+
+/// The roughing layers of the removal `r`.
+pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
+    let tol = 1e-6 * r.size.max(1.0);
+    let levels = levels(r, opts.axial_depth_mm, tol);
+    let Some(top) = r
+        .blocks
+        .iter()
+        .map(|b| r.bound_range(&b.upper)[1])
+        .max_by(f64::total_cmp)
+    else {
+        return Vec::new();
+    };
+    let footprint = footprint(r);
+    let mut out = Vec::with_capacity(levels.len());
+    let mut above = top;
+    for (index, (z, floors)) in levels.into_iter().enumerate() {
+        let polygons = section(r, z + tol);
+        let fields: Vec<CutterField> = polygons
+            .iter()
+            .map(|p| field(p, r, &footprint, opts.smallest_tool_mm))
+            .collect();
+        out.push(RoughingLayer {
+            index,
+            z_top_mm: above,
+            z_bottom_mm: z,
+            floors,
+            area_mm2: fields.iter().map(|f| f.area_mm2).sum(),
+            fields,
+        });
+        above = z;
+    }
+    out
+}
+
+/// The removal region's cross-section at `z`: every block's, joined where
+/// they meet.
+pub fn section(r: &Removal, z: f64) -> Vec<Polygon<f64>> {
+    let pieces: Vec<Polygon<f64>> = r
+        .blocks
+        .iter()
+        .flat_map(|b| slab::section(r, b, z).0)
+        .collect();
+    outline::union(&pieces, 1e-9 * r.size.max(1.0))
+}
+
+/// The sum of every block's cross-section at `z`, mm² (the joined
+/// section must keep it).
+pub fn section_area_by_blocks(r: &Removal, z: f64) -> f64 {
+    r.blocks
+        .iter()
+        .map(|b| slab::section(r, b, z).unsigned_area())
+        .sum()
+}
+
+/// Where the stock is, seen from up: the block's rectangle, or a given
+/// solid's pieces.
+enum Footprint {
+    Rect(Rect<f64>),
+    Pieces(Vec<MultiPolygon<f64>>),
+}
+
+fn footprint(r: &Removal) -> Footprint {
+    if r.stock_pieces.is_empty() {
+        let cells = MultiPolygon::new(r.cells.iter().map(|c| c.poly.clone()).collect());
+        Footprint::Rect(cells.bounding_rect().unwrap_or(Rect::new(
+            Coord { x: 0.0, y: 0.0 },
+            Coord { x: 0.0, y: 0.0 },
+        )))
+    } else {
+        Footprint::Pieces(r.stock_pieces.iter().map(|p| p.region.clone()).collect())
+    }
+}
+
+impl Footprint {
+    fn holds(&self, q: Coord<f64>) -> bool {
+        match self {
+            Footprint::Rect(rect) => {
+                q.x > rect.min().x && q.x < rect.max().x && q.y > rect.min().y && q.y < rect.max().y
+            }
+            Footprint::Pieces(ps) => ps.iter().any(|p| p.contains(&Point::from(q))),
+        }
+    }
+}
+
+fn field(p: &Polygon<f64>, r: &Removal, stock: &Footprint, smallest: f64) -> CutterField {
+    let step = 1e-4 * r.size.max(1.0);
+    let contour = |ring: &LineString<f64>| {
+        let mut pts: Vec<Coord<f64>> = ring.0.clone();
+        if pts.len() > 1 && pts.first() == pts.last() {
+            pts.pop();
+        }
+        let n = pts.len();
+        let edges = (0..n)
+            .map(|k| {
+                let (a, b) = (pts[k], pts[(k + 1) % n]);
+                let (dx, dy) = (b.x - a.x, b.y - a.y);
+                let len = dx.hypot(dy).max(1e-300);
+                let mid = Coord {
+                    x: 0.5 * (a.x + b.x),
+                    y: 0.5 * (a.y + b.y),
+                };
+                // Just across the edge, away from the field.
+                let across = |s: f64| Coord {
+                    x: mid.x + s * dy / len * step,
+                    y: mid.y - s * dx / len * step,
+                };
+                let out = if p.contains(&Point::from(across(1.0))) {
+                    across(-1.0)
+                } else {
+                    across(1.0)
+                };
+                if stock.holds(out) {
+                    EdgeKind::Part
+                } else {
+                    EdgeKind::Blank
+                }
+            })
+            .collect();
+        Contour {
+            points: pts.iter().map(|c| [c.x, c.y]).collect(),
+            edges,
+        }
+    };
+    let region = MultiPolygon::new(vec![p.clone()]);
+    let inscribed = 2.0 * thinwall_analysis::polygon::inscribed_radius(&region);
+    CutterField {
+        outer: contour(p.exterior()),
+        islands: p.interiors().iter().map(contour).collect(),
+        area_mm2: p.unsigned_area(),
+        inscribed_diameter_mm: inscribed,
+        too_small: inscribed < smallest,
+    }
+}

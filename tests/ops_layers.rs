@@ -1,0 +1,162 @@
+//! Roughing layers and cutter fields (issue 17, Schuster): a level at
+//! every upward flat face, sections that keep every block's area, fields
+//! with blank and part contours; hand values on a fixture with two closed
+//! pockets.
+
+mod common;
+
+use thinwall_analysis::{Machine, PartAnalysis, Setup};
+use thinwall_geom::Vector3;
+use thinwall_ops::layers::{
+    levels, roughing_layers, section_area_by_blocks, EdgeKind, LayerOptions,
+};
+use thinwall_plan::removal::pieces::{Facing, Height};
+use thinwall_plan::removal::{frame_of, Removal, RemovalError, StockShape};
+
+fn removal(part: &thinwall_brep::Part) -> Result<Removal, RemovalError> {
+    let a = PartAnalysis::new(
+        part,
+        Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
+    );
+    let (frame, lo, hi) = frame_of(&a, Vector3::z());
+    Removal::new(
+        part,
+        frame,
+        &StockShape::Block { lo, hi },
+        &[],
+        a.bounding_box().diagonal(),
+    )
+}
+
+/// `fixtures/access/pockets.step`: a 60 × 40 × 20 block with two closed
+/// pockets 10 deep, 10 × 30 and 24 × 30 (the stock is the block itself).
+/// With a_p = 4 the levels are 16, 12 and the floors at 10; every layer's
+/// section is the two pockets, 300 + 720 = 1020 mm², two fields walled by
+/// the part all round; 1020 × 10 = 10,200 mm³ is the removal. A smallest
+/// tool of Ø12 cannot enter the 10 mm pocket.
+#[test]
+fn two_closed_pockets_by_hand() {
+    let part = thinwall_step::read_file(common::root().join("fixtures/access/pockets.step"))
+        .unwrap()
+        .0;
+    let r = removal(&part).unwrap();
+    let opts = LayerOptions {
+        axial_depth_mm: 4.0,
+        smallest_tool_mm: 12.0,
+    };
+    let layers = roughing_layers(&r, &opts);
+    let z: Vec<f64> = layers.iter().map(|l| l.z_bottom_mm).collect();
+    let want = [16.0, 12.0, 10.0];
+    assert_eq!(z.len(), 3, "{z:?}");
+    for (got, want) in z.iter().zip(want) {
+        assert!((got - want).abs() < 1e-9, "{z:?}");
+    }
+    assert_eq!(layers[2].floors.len(), 2, "both pocket floors at 10");
+    assert!(layers[0].floors.is_empty());
+    let mut volume = 0.0;
+    for l in &layers {
+        assert!(
+            (l.area_mm2 - 1020.0).abs() < 1e-6 * 1020.0,
+            "{}",
+            l.area_mm2
+        );
+        assert_eq!(l.fields.len(), 2);
+        for f in &l.fields {
+            assert!(f.islands.is_empty());
+            assert!(f.outer.edges.iter().all(|&e| e == EdgeKind::Part));
+            let narrow = (f.area_mm2 - 300.0).abs() < 1e-6 * 300.0;
+            assert_eq!(f.too_small, narrow, "{f:?}");
+            let d = if narrow { 10.0 } else { 24.0 };
+            assert!(
+                (f.inscribed_diameter_mm - d).abs() < 1e-3 * d,
+                "{}",
+                f.inscribed_diameter_mm
+            );
+        }
+        volume += l.area_mm2 * (l.z_top_mm - l.z_bottom_mm);
+    }
+    assert!((volume - 10_200.0).abs() < 1e-6 * 10_200.0, "{volume}");
+    assert!((r.removed_volume() - 10_200.0).abs() < 1e-6 * 10_200.0);
+}
+
+/// Every thin-walled part and recognition fixture: a level at every flat
+/// face facing up within the removal, each layer's joined section keeps
+/// the area of every block's section (1e-6), its fields add up to it,
+/// every contour edge is marked; where every face is flat or vertical the
+/// layers stack up to the removal's volume exactly.
+#[test]
+fn every_thin_walled_part_gets_levels_at_its_floors_and_exact_sections() {
+    let (mut prismatic, mut parts, mut unsupported) = (0, 0, 0);
+    for path in common::thin_walled_parts() {
+        let part = thinwall_step::read_file(&path).unwrap().0;
+        // The removal decomposition takes faces that are graphs over the
+        // set-up plane; a cylinder tilted to the axis is refused by name.
+        let r = match removal(&part) {
+            Ok(r) => r,
+            Err(e) => {
+                assert_eq!(e.code(), "unsupported_face", "{}: {e}", path.display());
+                unsupported += 1;
+                continue;
+            }
+        };
+        parts += 1;
+        let opts = LayerOptions {
+            axial_depth_mm: 6.0,
+            smallest_tool_mm: 4.0,
+        };
+        let layers = roughing_layers(&r, &opts);
+        let what = path.display().to_string();
+        let tol = 1e-6 * r.size;
+        let lv = levels(&r, 6.0, tol);
+        let (top, bottom) = (
+            layers.first().map_or(0.0, |l| l.z_top_mm),
+            layers.last().map_or(0.0, |l| l.z_bottom_mm),
+        );
+        for p in &r.part_pieces {
+            if let (Facing::Up, Height::Plane { z0, gx, gy, .. }) = (p.facing, p.height) {
+                if gx == 0.0 && gy == 0.0 && z0 > bottom + tol && z0 < top - tol {
+                    assert!(
+                        lv.iter()
+                            .any(|l| (l.0 - z0).abs() <= tol && l.1.contains(&p.step_id)),
+                        "{what}: no level at face #{} (z {z0})",
+                        p.step_id
+                    );
+                }
+            }
+        }
+        let mut volume = 0.0;
+        for l in &layers {
+            let blocks = section_area_by_blocks(&r, l.z_bottom_mm + tol);
+            assert!(
+                (l.area_mm2 - blocks).abs() <= 1e-6 * blocks.max(1.0),
+                "{what}: layer {} joined {} mm², blocks {blocks}",
+                l.index,
+                l.area_mm2
+            );
+            for f in &l.fields {
+                assert_eq!(f.outer.points.len(), f.outer.edges.len(), "{what}");
+                assert!(f.area_mm2 > 0.0, "{what}");
+            }
+            volume += l.area_mm2 * (l.z_top_mm - l.z_bottom_mm);
+        }
+        let flat_or_vertical = part.face_ids().all(|f| {
+            let p = thinwall_brep::props::compute_face_props(&part, f);
+            matches!(part.face(f).surface, thinwall_geom::Surface::Plane { .. })
+                && p.normal
+                    .is_some_and(|n| n.z.abs() < 1e-9 || n.z.abs() > 1.0 - 1e-9)
+        });
+        if flat_or_vertical && !layers.is_empty() {
+            let removed = r.removed_volume();
+            assert!(
+                (volume - removed).abs() <= 1e-6 * removed,
+                "{what}: layers {volume} mm³, removal {removed}"
+            );
+            prismatic += 1;
+        }
+    }
+    assert!(prismatic >= 3, "{prismatic}");
+    assert!(
+        parts >= 4 * unsupported,
+        "{parts} parts layered, {unsupported} refused"
+    );
+}
