@@ -160,3 +160,72 @@ fn every_thin_walled_part_gets_levels_at_its_floors_and_exact_sections() {
         "{parts} parts layered, {unsupported} refused"
     );
 }
+
+/// `fixtures/ops/pocket_islands.step` (scripts/make_ops_fixtures.py): a
+/// pocket 100 × 80 with 3 mm corner radii and two 20 × 20 islands 14 mm
+/// apart, tools {Ø20, Ø12, Ø6}. By hand (docs/OPERATIONS.md):
+/// - the field: 100 · 80 − 4 · 3²(1 − π/4) − 2 · 400 = 7192.27 mm²;
+/// - Ø20 does not fit between the islands. Its centre reaches (50, 30 − √51)
+///   below the gap (10 from both island corners), and as far above it, so
+///   it cuts into the gap two circular segments of radius 10 whose chord
+///   is the gap's 14 mm: 100 acos(√51/10) − 7√51 = 27.55 mm² each. In each
+///   corner it leaves (10² − 3²)(1 − π/4). It leaves 280 − 2 · 27.55 +
+///   4 · 91 (1 − π/4) = 302.99 mm²;
+/// - Ø12 fits the gap (its centre anywhere on x 49..51) and leaves only the
+///   corners: 4 · (6² − 3²)(1 − π/4) = 23.18 mm²;
+/// - Ø6 fits the corners' 3 mm radii: nothing is left.
+///
+/// With 128-gon disks the areas are within 0.3 % of these (and the rest
+/// within 0.05 mm²).
+#[test]
+fn a_pocket_with_islands_takes_three_tools_by_hand() {
+    use thinwall_ops::rest::select;
+    let part = thinwall_step::read_file(common::root().join("fixtures/ops/pocket_islands.step"))
+        .unwrap()
+        .0;
+    let r = removal(&part).unwrap();
+    let layers = roughing_layers(
+        &r,
+        &LayerOptions {
+            axial_depth_mm: 10.0,
+            smallest_tool_mm: 6.0,
+        },
+    );
+    assert_eq!(layers.len(), 1, "one layer down to the floor at 10");
+    let l = &layers[0];
+    assert_eq!(l.fields.len(), 1);
+    let field = &l.fields[0];
+    assert_eq!(field.islands.len(), 2);
+    let k = 1.0 - std::f64::consts::FRAC_PI_4;
+    let area = 8000.0 - 4.0 * 9.0 * k - 800.0;
+    assert!(
+        (field.area_mm2 - area).abs() < 1e-3 * area,
+        "{}",
+        field.area_mm2
+    );
+    let lib = thinwall_ops::ToolLibrary::default_tools();
+    let mills: Vec<_> = lib
+        .end_mills()
+        .filter(|t| [20.0, 12.0, 6.0].contains(&t.diameter_mm))
+        .collect();
+    assert_eq!(mills.len(), 3);
+    let picked = select(field, &mills);
+    let names: Vec<&str> = picked.shares.iter().map(|s| s.tool.as_str()).collect();
+    assert_eq!(names, ["EM20", "EM12", "EM6"]);
+    let segment = 100.0 * (51f64.sqrt() / 10.0).acos() - 7.0 * 51f64.sqrt();
+    let left20 = 280.0 - 2.0 * segment + 4.0 * 91.0 * k;
+    let left12 = 4.0 * 27.0 * k;
+    let want = [area - left20, left20 - left12, left12];
+    for (s, w) in picked.shares.iter().zip(want) {
+        assert!(
+            (s.cleared_mm2 - w).abs() < 3e-3 * w,
+            "{}: {} mm², by hand {w}",
+            s.tool,
+            s.cleared_mm2
+        );
+    }
+    assert!(picked.rest_mm2 < 0.05, "{}", picked.rest_mm2);
+    // The shares and the rest make up the field.
+    let total: f64 = picked.shares.iter().map(|s| s.cleared_mm2).sum::<f64>() + picked.rest_mm2;
+    assert!((total - field.area_mm2).abs() < 1e-6 * field.area_mm2);
+}

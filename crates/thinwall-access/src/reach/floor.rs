@@ -150,7 +150,7 @@ pub fn disk(r: f64) -> Vec<[f64; 2]> {
 }
 
 /// The convex `pts` grown by the convex `disk` (the hull of their sums).
-fn grown(pts: &[[f64; 2]], disk: &[[f64; 2]]) -> Option<Polygon<f64>> {
+pub fn grown(pts: &[[f64; 2]], disk: &[[f64; 2]]) -> Option<Polygon<f64>> {
     if pts.is_empty() || disk.is_empty() {
         return None;
     }

@@ -1,0 +1,155 @@
+//! Tool selection with rest areas (Matsuda & Kimura §4.3–4.4): per cutter
+//! field, the largest end mill that fits, the area it clears (the field
+//! opened by its radius: the tool's centre kept a radius off every part
+//! contour, free to overhang blank contours), and the rest left for the
+//! next smaller tool, down the library. Smaller disks open a superset, so
+//! each tool clears what the larger ones left and more; what the smallest
+//! leaves is the rest no tool reaches, with its size and outline.
+//!
+//! Disks are 128-gons with their corners on the circle
+//! ([`thinwall_access::reach::floor::disk`]): an area bounded by a tool's
+//! arc comes out within about 0.1 % of the circle's.
+
+use crate::layers::{CutterField, EdgeKind};
+use crate::tools::CuttingTool;
+use geo::{Area, BooleanOps, Coord, LineString, MultiPolygon, Polygon};
+use serde::Serialize;
+use thinwall_access::reach::floor::{disk, grown, union_all};
+
+/// One tool's share of a field.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ToolShare {
+    pub tool: String,
+    pub diameter_mm: f64,
+    /// What this tool clears that the larger ones left, mm².
+    pub cleared_mm2: f64,
+}
+
+/// A field's tools, largest first, and what none of them reaches.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FieldTools {
+    pub shares: Vec<ToolShare>,
+    /// Left by the smallest tool, mm².
+    pub rest_mm2: f64,
+    /// Its outlines (x, y in the removal frame), mm.
+    pub rest: Vec<Vec<[f64; 2]>>,
+    /// The widest piece of the rest, mm (0 when none).
+    pub rest_width_mm: f64,
+}
+
+/// The field as a polygon, and its part and blank edges as segments.
+struct Shape {
+    region: MultiPolygon<f64>,
+    part: Vec<[[f64; 2]; 2]>,
+    blank: Vec<[[f64; 2]; 2]>,
+}
+
+fn shape(f: &CutterField) -> Shape {
+    let ring = |c: &crate::layers::Contour| {
+        let mut pts: Vec<Coord<f64>> = c
+            .points
+            .iter()
+            .map(|p| Coord { x: p[0], y: p[1] })
+            .collect();
+        if let Some(&first) = pts.first() {
+            pts.push(first);
+        }
+        LineString::new(pts)
+    };
+    let mut part = Vec::new();
+    let mut blank = Vec::new();
+    for c in std::iter::once(&f.outer).chain(&f.islands) {
+        let n = c.points.len();
+        for (k, kind) in c.edges.iter().enumerate() {
+            let seg = [c.points[k], c.points[(k + 1) % n]];
+            match kind {
+                EdgeKind::Part => part.push(seg),
+                EdgeKind::Blank => blank.push(seg),
+            }
+        }
+    }
+    Shape {
+        region: MultiPolygon::new(vec![Polygon::new(
+            ring(&f.outer),
+            f.islands.iter().map(ring).collect(),
+        )]),
+        part,
+        blank,
+    }
+}
+
+/// Where a tool of radius `r` clears the field: its centre anywhere in
+/// the field or past a blank contour, at least `r` from every part
+/// contour; the positions grown back by `r`, within the field.
+fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
+    let d = disk(r);
+    let grow = |segs: &[[[f64; 2]; 2]]| -> Vec<MultiPolygon<f64>> {
+        segs.iter()
+            .filter_map(|s| grown(s, &d))
+            .map(|p| MultiPolygon::new(vec![p]))
+            .collect()
+    };
+    let mut domain = grow(&s.blank);
+    domain.push(s.region.clone());
+    let free = union_all(domain).difference(&union_all(grow(&s.part)));
+    if free.unsigned_area() <= 0.0 {
+        return MultiPolygon::new(vec![]);
+    }
+    let mut pieces = vec![free.clone()];
+    for p in &free {
+        for ring in std::iter::once(p.exterior()).chain(p.interiors()) {
+            for l in ring.lines() {
+                if let Some(g) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], &d) {
+                    pieces.push(MultiPolygon::new(vec![g]));
+                }
+            }
+        }
+    }
+    s.region.intersection(&union_all(pieces))
+}
+
+/// The tools for one field: `mills` largest first; a tool that clears
+/// nothing new is skipped, and the descent stops once nothing is left
+/// (within 1e-9 of the field).
+pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
+    let s = shape(field);
+    let area = s.region.unsigned_area();
+    let tiny = 1e-9 * area.max(1.0);
+    let mut shares = Vec::new();
+    let mut done = MultiPolygon::new(vec![]);
+    let mut done_area = 0.0;
+    for t in mills {
+        if area - done_area <= tiny {
+            break;
+        }
+        let c = cleared(&s, 0.5 * t.diameter_mm);
+        let now = c.unsigned_area().max(done_area);
+        if now - done_area > tiny {
+            shares.push(ToolShare {
+                tool: t.name.clone(),
+                diameter_mm: t.diameter_mm,
+                cleared_mm2: now - done_area,
+            });
+            done = c;
+            done_area = now;
+        }
+    }
+    let rest = s.region.difference(&done);
+    let rest_mm2 = (area - done_area).max(0.0);
+    FieldTools {
+        shares,
+        rest_mm2,
+        rest_width_mm: if rest_mm2 > tiny {
+            2.0 * thinwall_analysis::polygon::inscribed_radius(&rest)
+        } else {
+            0.0
+        },
+        rest: if rest_mm2 > tiny {
+            rest.iter()
+                .map(|p| p.exterior().coords().map(|c| [c.x, c.y]).collect())
+                .collect()
+        } else {
+            Vec::new()
+        },
+    }
+}
