@@ -5,6 +5,7 @@
     x 0..100, y 0..80, 10 deep (floor z 10) whose vertical corners have
     3 mm radii, and two square islands 20 x 20 standing to the top at
     x 23..43 and 57..77, y 30..50: 14 mm apart.
+  plain_block.step: a 60 x 40 x 20 block, its own stock: nothing to remove.
 
 usage: python3 scripts/make_ops_fixtures.py [OUT_DIR]   (default fixtures/ops)
 """
@@ -39,6 +40,7 @@ def main():
     block = cut(box(-10, -10, 0, 110, 90, 20), rounded_box(0, 0, 10, 100, 80, 30, 3.0))
     part = fuse(block, box(23, 30, 10, 43, 50, 20), box(57, 30, 10, 77, 50, 20))
     write(part, os.path.join(out, "pocket_islands.step"))
+    write(box(0, 0, 0, 60, 40, 20), os.path.join(out, "plain_block.step"))
 
 
 if __name__ == "__main__":

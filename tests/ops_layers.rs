@@ -229,3 +229,51 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
     let total: f64 = picked.shares.iter().map(|s| s.cleared_mm2).sum::<f64>() + picked.rest_mm2;
     assert!((total - field.area_mm2).abs() < 1e-6 * field.area_mm2);
 }
+
+/// The roughing operations of every thin-walled part: the order never
+/// breaks a precedence, has no more tool changes than the plain layer by
+/// layer order, and in every layer what the tools clear plus the rest is
+/// the layer's section (1e-6).
+#[test]
+fn roughing_operations_keep_their_order_and_add_up() {
+    use thinwall_ops::operations::roughing;
+    let lib = thinwall_ops::ToolLibrary::default_tools();
+    let mut parts = common::thin_walled_parts();
+    parts.push(common::root().join("fixtures/ops/pocket_islands.step"));
+    let (mut fewer, mut ran) = (0, 0);
+    for path in parts {
+        let part = thinwall_step::read_file(&path).unwrap().0;
+        let Ok(r) = removal(&part) else { continue };
+        let plan = roughing(&r, &lib, None);
+        let what = path.display().to_string();
+        for op in &plan.operations {
+            assert!(
+                op.after.iter().all(|&s| s < op.step),
+                "{what}: step {}",
+                op.step
+            );
+            assert!(op.time_min.is_finite() && op.time_min >= 0.0, "{what}");
+        }
+        assert!(plan.tool_changes <= plan.plain_tool_changes, "{what}");
+        fewer += usize::from(plan.tool_changes < plan.plain_tool_changes);
+        for (k, l) in plan.layers.iter().enumerate() {
+            let cleared: f64 = plan
+                .operations
+                .iter()
+                .filter(|o| o.layer == k)
+                .map(|o| o.area_mm2)
+                .sum();
+            // Every field's rest, the listed ones and those below the
+            // disks' polygon noise alike.
+            let rest: f64 = plan.field_tools[k].iter().map(|f| f.rest_mm2).sum();
+            assert!(
+                (cleared + rest - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
+                "{what}: layer {k}: {cleared} cleared + {rest} rest, section {}",
+                l.area_mm2
+            );
+        }
+        ran += 1;
+    }
+    eprintln!("OPS {ran} parts, fewer changes on {fewer}");
+    assert!(ran >= 30);
+}

@@ -10,6 +10,7 @@ use thinwall_graph::AdjacencyGraph;
 mod batch;
 mod check;
 mod failure;
+mod operations;
 mod render;
 use failure::Failure;
 
@@ -174,6 +175,29 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: AccessFormat,
+        /// Write to this file instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Roughing operations of a set-up: layers from the stock's top (and
+    /// at every flat face), cutter fields, the largest tools that fit with
+    /// their rest areas, in an order that cuts tool changes
+    /// (docs/OPERATIONS.md).
+    Operations {
+        /// The STEP file.
+        part: PathBuf,
+        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+        up: Option<[f64; 3]>,
+        /// A tool library (TOML; default: the shipped one, docs/OPERATIONS.md).
+        #[arg(long)]
+        tools: Option<PathBuf>,
+        /// Depth of cut between levels, mm (default: the largest end mill's).
+        #[arg(long, allow_hyphen_values = true)]
+        axial_depth: Option<f64>,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
         /// Write to this file instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -648,6 +672,23 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 holder_diameter,
             };
             access_command(part, up, options, reach, format, output)
+        }
+        Command::Operations {
+            part,
+            up,
+            tools,
+            axial_depth,
+            format,
+            output,
+        } => {
+            let text = operations::run(operations::OperationsArgs {
+                part,
+                up,
+                tools,
+                axial_depth,
+                json: matches!(format, Format::Json),
+            })?;
+            write_to(output.as_deref(), &text)
         }
         Command::Batch {
             inputs,

@@ -420,6 +420,13 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     outputs.push(("plan", of(&["plan"], "recognition/rib_grid_panel.step")));
     outputs.push(("plan", of(&["plan"], "recognition/c_frame.step")));
     outputs.push(("access", of(&["access"], "recognition/rib_grid_panel.step")));
+    outputs.push((
+        "operations",
+        of(
+            &["operations", "--format", "json"],
+            "ops/pocket_islands.step",
+        ),
+    ));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
         assert!(problems.is_empty(), "{problems:#?}");
@@ -866,4 +873,71 @@ fn access_reports_flank_milling_of_planar_faces() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(bad[0]), "{err}");
     }
+}
+
+#[test]
+fn operations_sheet_json_and_errors() {
+    let pocket = fixture("ops/pocket_islands.step");
+    let json = json_of(
+        bin()
+            .arg("operations")
+            .arg(&pocket)
+            .args(["--format", "json"]),
+    );
+    assert_eq!(json["schema"], "thinwall/operations/1");
+    let ops = json["roughing"]["operations"].as_array().unwrap();
+    assert_eq!(ops[0]["tool"], "EM20");
+    assert!(
+        json["roughing"]["tool_changes"].as_u64().unwrap()
+            <= json["roughing"]["plain_tool_changes"].as_u64().unwrap()
+    );
+    assert!(!json["not_yet"].as_array().unwrap().is_empty());
+    let text = bin().arg("operations").arg(&pocket).output().unwrap();
+    assert!(text.status.success());
+    assert!(String::from_utf8_lossy(&text.stdout).contains("EM12"));
+
+    // Nothing to remove: an empty list, not an error.
+    let plain = json_of(
+        bin()
+            .arg("operations")
+            .arg(fixture("ops/plain_block.step"))
+            .args(["--format", "json"]),
+    );
+    assert!(plain["roughing"]["operations"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+    assert!(plain["roughing"]["layers"].as_array().unwrap().is_empty());
+
+    // A tool file with a negative diameter, or an unknown key: exit 2 and
+    // the line.
+    let dir = std::env::temp_dir().join(format!("tw-tools-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = "[[tool]]\nname = \"EM10\"\nkind = \"flat_end_mill\"\ndiameter = 10.0\ncutting_length = 30.0\nstick_out = 50.0\nteeth = 3\ncutting_speed_m_min = 600.0\nfeed_per_tooth_mm = 0.07\naxial_depth_mm = 5.0\nradial_depth_mm = 6.0\n";
+    for (name, text, want) in [
+        (
+            "negative.toml",
+            good.replace("diameter = 10.0", "diameter = -10.0"),
+            ":1: tool 'EM10'",
+        ),
+        (
+            "unknown.toml",
+            good.replace("teeth = 3", "teeth = 3\nhelix = 30"),
+            "line 8",
+        ),
+    ] {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let out = bin()
+            .arg("operations")
+            .arg(&pocket)
+            .arg("--tools")
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{name}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(want), "{name}: {err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -4,6 +4,7 @@
 //! Schuster ch. 4–5).
 
 pub mod layers;
+pub mod operations;
 pub mod rest;
 pub mod tools;
 

@@ -29,6 +29,10 @@ pub struct ToolShare {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FieldTools {
     pub shares: Vec<ToolShare>,
+    /// Per share, what it and the larger tools clear together (the
+    /// field opened by its radius), in the removal frame.
+    #[serde(skip)]
+    pub cleared: Vec<MultiPolygon<f64>>,
     /// Left by the smallest tool, mm².
     pub rest_mm2: f64,
     /// Its outlines (x, y in the removal frame), mm.
@@ -108,6 +112,14 @@ fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
     s.region.intersection(&union_all(pieces))
 }
 
+/// The area a tool of diameter `d` may seem to clear or leave from its
+/// disk being a polygon alone: twice the 128-gon's shortfall of the
+/// circle's area (about 4·10⁻⁴ of it). A share or a rest below it is noise,
+/// not an operation.
+fn noise(d: f64) -> f64 {
+    2.0 * 4e-4 * std::f64::consts::PI * (0.5 * d).powi(2)
+}
+
 /// The tools for one field: `mills` largest first; a tool that clears
 /// nothing new is skipped, and the descent stops once nothing is left
 /// (within 1e-9 of the field).
@@ -116,6 +128,7 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
     let area = s.region.unsigned_area();
     let tiny = 1e-9 * area.max(1.0);
     let mut shares = Vec::new();
+    let mut regions = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
     for t in mills {
@@ -124,20 +137,29 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
         }
         let c = cleared(&s, 0.5 * t.diameter_mm);
         let now = c.unsigned_area().max(done_area);
-        if now - done_area > tiny {
+        // Slivers the larger tools' polygons left count as noise too.
+        let first = shares
+            .first()
+            .map_or(t.diameter_mm, |s: &ToolShare| s.diameter_mm);
+        if now - done_area > tiny.max(noise(first)) {
             shares.push(ToolShare {
                 tool: t.name.clone(),
                 diameter_mm: t.diameter_mm,
                 cleared_mm2: now - done_area,
             });
+            regions.push(c.clone());
             done = c;
             done_area = now;
         }
     }
     let rest = s.region.difference(&done);
     let rest_mm2 = (area - done_area).max(0.0);
+    // Less than the disks' polygon error: no rest worth a word.
+    let largest = shares.first().map_or(0.0, |s| s.diameter_mm);
+    let tiny = tiny.max(noise(largest));
     FieldTools {
         shares,
+        cleared: regions,
         rest_mm2,
         rest_width_mm: if rest_mm2 > tiny {
             2.0 * thinwall_analysis::polygon::inscribed_radius(&rest)

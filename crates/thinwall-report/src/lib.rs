@@ -7,6 +7,7 @@ pub mod classify;
 pub mod expect;
 pub mod html;
 pub mod inspect;
+pub mod operations;
 pub mod palette;
 pub mod recognize;
 pub mod svg;

@@ -1,0 +1,130 @@
+//! The operations report (`thinwall operations`, schema
+//! `thinwall/operations/1`): the tool library in force and the roughing of
+//! one set-up (layers, cutter fields, tools with rest areas, operations in
+//! order); `not_yet` says what the issue asks that the report does not
+//! cover yet.
+
+use serde::Serialize;
+use std::fmt::Write;
+use thinwall_ops::operations::Roughing;
+use thinwall_ops::ToolLibrary;
+
+pub const OPERATIONS_SCHEMA: &str = "thinwall/operations/1";
+
+#[derive(Clone, Debug, Serialize)]
+pub struct OperationsReport {
+    pub schema: String,
+    pub thinwall_version: String,
+    pub part: String,
+    pub up: [f64; 3],
+    /// The removal frame: origin, x, y, z (= up); contours are in its
+    /// (x, y), mm.
+    pub frame: [[f64; 3]; 4],
+    pub tools: ToolLibrary,
+    pub roughing: Roughing,
+    pub not_yet: Vec<String>,
+}
+
+impl OperationsReport {
+    pub fn new(
+        part: &str,
+        up: [f64; 3],
+        frame: [[f64; 3]; 4],
+        tools: ToolLibrary,
+        roughing: Roughing,
+    ) -> Self {
+        Self {
+            schema: OPERATIONS_SCHEMA.to_string(),
+            thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
+            part: part.to_string(),
+            up,
+            frame,
+            tools,
+            roughing,
+            not_yet: vec![
+                "drilling operations for holes (their material is roughed with the layers)".into(),
+                "semi-finish and finish operations".into(),
+                "region subdivision of walls' features (boundary, full-cut, rest; Popma §4.3)"
+                    .into(),
+                "the plan's sequence constraints between stiffness features in the order".into(),
+            ],
+        }
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+            + "\n"
+    }
+
+    /// A readable operation sheet.
+    pub fn to_text(&self) -> String {
+        let r = &self.roughing;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "{}: roughing in {} layer(s) of at most {:.2} mm, {} operation(s), {} tool change(s) ({} layer by layer), about {:.1} min",
+            self.part,
+            r.layers.len(),
+            r.axial_depth_mm,
+            r.operations.len(),
+            r.tool_changes,
+            r.plain_tool_changes,
+            r.time_min
+        );
+        let _ = writeln!(
+            s,
+            "tools: {} ({} in the library)",
+            self.tools.source,
+            self.tools.tools.len()
+        );
+        let _ = writeln!(
+            s,
+            "{:>4}  {:<8} {:>6}  {:>5}  {:>17}  {:>12}  {:>13}  {:>8}  after",
+            "step", "tool", "Ø mm", "layer", "z mm", "area mm²", "volume mm³", "min"
+        );
+        for o in &r.operations {
+            let after = if o.after.is_empty() {
+                "-".to_string()
+            } else {
+                o.after
+                    .iter()
+                    .map(|a| a.to_string())
+                    .collect::<Vec<_>>()
+                    .join(",")
+            };
+            let _ = writeln!(
+                s,
+                "{:>4}  {:<8} {:>6.1}  {:>5}  {:>8.2}..{:<8.2} {:>12.1}  {:>13.0}  {:>8.2}  {after}",
+                o.step,
+                o.tool,
+                o.diameter_mm,
+                o.layer + 1,
+                o.z_top_mm,
+                o.z_bottom_mm,
+                o.area_mm2,
+                o.volume_mm3,
+                o.time_min
+            );
+        }
+        let small: usize = r
+            .layers
+            .iter()
+            .map(|l| l.fields.iter().filter(|f| f.too_small).count())
+            .sum();
+        if small > 0 {
+            let _ = writeln!(s, "{small} field(s) narrower than the smallest tool");
+        }
+        for x in &r.rest {
+            let _ = writeln!(
+                s,
+                "rest: layer {} field {}: {:.2} mm², {:.2} mm wide, no tool of the library reaches it",
+                x.layer + 1,
+                x.field + 1,
+                x.area_mm2,
+                x.width_mm
+            );
+        }
+        let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
+        s
+    }
+}
