@@ -3,9 +3,10 @@
 //!
 //! Every layer's fields get their tools ([`crate::rest`]); an operation is
 //! one tool in one layer. A tool may rough a layer once what lies above
-//! what it clears is gone: when what tool T clears in layer k + 1 lies
-//! within what T and the larger tools cleared in layer k, it follows those
-//! operations only; otherwise it follows all of layer k. The order is a
+//! what it clears is gone: when layer k + 1's section lies within layer
+//! k's, what tool T clears in it lies within what T cleared in layer k (an
+//! opening keeps inclusion), so T's operation follows the same and larger
+//! tools' of layer k only; otherwise it follows all of layer k. The order is a
 //! topological order of that graph that keeps the tool in the spindle
 //! while it has work, shallow layers first; the plain order is layer by
 //! layer, the largest tool first.
@@ -17,7 +18,6 @@ use geo::{Area, BooleanOps, MultiPolygon};
 use petgraph::graph::{DiGraph, NodeIndex};
 use rayon::prelude::*;
 use serde::Serialize;
-use thinwall_access::reach::floor::union_all;
 use thinwall_plan::removal::Removal;
 
 /// One roughing operation: a tool in a layer.
@@ -96,13 +96,11 @@ pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> 
                 layer: k,
                 fields: Vec::new(),
                 area: 0.0,
-                region: Vec::new(),
             };
             for (j, ft) in fts.iter().enumerate() {
                 if let Some(s) = ft.shares.iter().position(|s| s.tool == t.name) {
                     d.fields.push(j);
                     d.area += ft.shares[s].cleared_mm2;
-                    d.region.push(ft.cleared[s].clone());
                 }
             }
             if !d.fields.is_empty() {
@@ -110,9 +108,7 @@ pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> 
             }
         }
     }
-    let cumulative: Vec<MultiPolygon<f64>> =
-        ops.iter().map(|d| union_all(d.region.clone())).collect();
-    let graph = precedence(&ops, &cumulative, r.size);
+    let graph = precedence(&ops, &nested(&layers, r.size));
     // Layer by layer, the largest tool first: always allowed.
     let plain: Vec<usize> = (0..ops.len()).collect();
     let changes = |o: &[usize]| {
@@ -191,31 +187,55 @@ struct Draft<'a> {
     layer: usize,
     fields: Vec<usize>,
     area: f64,
-    /// Per field, what this tool and the larger ones clear.
-    region: Vec<MultiPolygon<f64>>,
 }
 
-/// Edges from each operation to those that must follow it.
-fn precedence(ops: &[Draft], cumulative: &[MultiPolygon<f64>], size: f64) -> DiGraph<usize, ()> {
+/// Per layer, whether its section lies within the one above (walls going
+/// straight down or closing in): then what any tool clears in it lies
+/// within what the same tool cleared above (an opening keeps inclusion).
+fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
+    let section = |l: &RoughingLayer| -> MultiPolygon<f64> {
+        let ring = |c: &crate::layers::Contour| {
+            let mut pts: Vec<geo::Coord<f64>> = c
+                .points
+                .iter()
+                .map(|p| geo::Coord { x: p[0], y: p[1] })
+                .collect();
+            if let Some(&first) = pts.first() {
+                pts.push(first);
+            }
+            geo::LineString::new(pts)
+        };
+        MultiPolygon::new(
+            l.fields
+                .iter()
+                .map(|f| geo::Polygon::new(ring(&f.outer), f.islands.iter().map(ring).collect()))
+                .collect(),
+        )
+    };
+    let sections: Vec<MultiPolygon<f64>> = layers.iter().map(section).collect();
+    let tiny = (1e-6 * size).powi(2);
+    (0..layers.len())
+        .map(|k| {
+            k > 0 && {
+                let extra = sections[k].difference(&sections[k - 1]).unsigned_area();
+                extra <= tiny.max(1e-9 * layers[k].area_mm2)
+            }
+        })
+        .collect()
+}
+
+/// Edges from each operation to those that must follow it: an operation
+/// follows the larger or same tools' of the layer above when its layer is
+/// `nested` in that one, else every operation of the layer above.
+fn precedence(ops: &[Draft], nested: &[bool]) -> DiGraph<usize, ()> {
     let mut g = DiGraph::new();
     let nodes: Vec<NodeIndex> = (0..ops.len()).map(|i| g.add_node(i)).collect();
-    let tiny = (1e-6 * size).powi(2);
     for (i, d) in ops.iter().enumerate() {
         let Some(prev) = d.layer.checked_sub(1) else {
             continue;
         };
-        let above: Vec<usize> = (0..ops.len()).filter(|&j| ops[j].layer == prev).collect();
-        // The same tool or a larger one above, if it cleared all of it.
-        let covering = above
-            .iter()
-            .filter(|&&j| ops[j].tool.diameter_mm >= d.tool.diameter_mm)
-            .max_by(|&&a, &&b| ops[b].tool.diameter_mm.total_cmp(&ops[a].tool.diameter_mm));
-        let within = covering.is_some_and(|&j| {
-            cumulative[i].difference(&cumulative[j]).unsigned_area()
-                <= tiny.max(1e-9 * cumulative[i].unsigned_area())
-        });
-        for &j in &above {
-            if !within || ops[j].tool.diameter_mm >= d.tool.diameter_mm {
+        for j in (0..ops.len()).filter(|&j| ops[j].layer == prev) {
+            if !nested[d.layer] || ops[j].tool.diameter_mm >= d.tool.diameter_mm {
                 g.add_edge(nodes[j], nodes[i], ());
             }
         }

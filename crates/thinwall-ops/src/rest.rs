@@ -29,10 +29,6 @@ pub struct ToolShare {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FieldTools {
     pub shares: Vec<ToolShare>,
-    /// Per share, what it and the larger tools clear together (the
-    /// field opened by its radius), in the removal frame.
-    #[serde(skip)]
-    pub cleared: Vec<MultiPolygon<f64>>,
     /// Left by the smallest tool, mm².
     pub rest_mm2: f64,
     /// Its outlines (x, y in the removal frame), mm.
@@ -63,9 +59,7 @@ fn shape(f: &CutterField) -> Shape {
     let mut part = Vec::new();
     let mut blank = Vec::new();
     for c in std::iter::once(&f.outer).chain(&f.islands) {
-        let n = c.points.len();
-        for (k, kind) in c.edges.iter().enumerate() {
-            let seg = [c.points[k], c.points[(k + 1) % n]];
+        for (seg, kind) in straight_runs(&c.points, &c.edges) {
             match kind {
                 EdgeKind::Part => part.push(seg),
                 EdgeKind::Blank => blank.push(seg),
@@ -80,6 +74,37 @@ fn shape(f: &CutterField) -> Shape {
         part,
         blank,
     }
+}
+
+/// A closed contour's edges with runs of collinear edges of one kind
+/// joined (cell boundaries split a straight contour into many edges; each
+/// grown edge costs a boolean): (segment, kind).
+fn straight_runs(points: &[[f64; 2]], kinds: &[EdgeKind]) -> Vec<([[f64; 2]; 2], EdgeKind)> {
+    let n = points.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    let turns = |k: usize| {
+        // Whether the contour turns (or changes kind) at point k.
+        let (a, b, c) = (points[(k + n - 1) % n], points[k], points[(k + 1) % n]);
+        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+        let cross = u[0] * v[1] - u[1] * v[0];
+        let dot = u[0] * v[0] + u[1] * v[1];
+        let scale = u[0].hypot(u[1]) * v[0].hypot(v[1]);
+        kinds[(k + n - 1) % n] != kinds[k] || cross.abs() > 1e-9 * scale || dot <= 0.0
+    };
+    let corners: Vec<usize> = (0..n).filter(|&k| turns(k)).collect();
+    if corners.is_empty() {
+        return (0..n)
+            .map(|k| ([points[k], points[(k + 1) % n]], kinds[k]))
+            .collect();
+    }
+    (0..corners.len())
+        .map(|i| {
+            let (a, b) = (corners[i], corners[(i + 1) % corners.len()]);
+            ([points[a], points[b]], kinds[a])
+        })
+        .collect()
 }
 
 /// Where a tool of radius `r` clears the field: its centre anywhere in
@@ -102,8 +127,11 @@ fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
     let mut pieces = vec![free.clone()];
     for p in &free {
         for ring in std::iter::once(p.exterior()).chain(p.interiors()) {
-            for l in ring.lines() {
-                if let Some(g) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], &d) {
+            let mut pts: Vec<[f64; 2]> = ring.coords().map(|c| [c.x, c.y]).collect();
+            pts.pop();
+            let kinds = vec![EdgeKind::Part; pts.len()];
+            for (seg, _) in straight_runs(&pts, &kinds) {
+                if let Some(g) = grown(&seg, &d) {
                     pieces.push(MultiPolygon::new(vec![g]));
                 }
             }
@@ -128,7 +156,6 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
     let area = s.region.unsigned_area();
     let tiny = 1e-9 * area.max(1.0);
     let mut shares = Vec::new();
-    let mut regions = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
     for t in mills {
@@ -147,7 +174,6 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
                 diameter_mm: t.diameter_mm,
                 cleared_mm2: now - done_area,
             });
-            regions.push(c.clone());
             done = c;
             done_area = now;
         }
@@ -159,7 +185,6 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
     let tiny = tiny.max(noise(largest));
     FieldTools {
         shares,
-        cleared: regions,
         rest_mm2,
         rest_width_mm: if rest_mm2 > tiny {
             2.0 * thinwall_analysis::polygon::inscribed_radius(&rest)
