@@ -419,7 +419,7 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     ));
     outputs.push(("plan", of(&["plan"], "recognition/rib_grid_panel.step")));
     outputs.push(("plan", of(&["plan"], "recognition/c_frame.step")));
-    outputs.push(("access", of(&["access"], "recognition/rib_grid_panel.step")));
+    outputs.push(("access", of(&["access"], "access/two_ribs.step")));
     outputs.push((
         "operations",
         of(
@@ -848,11 +848,19 @@ fn recognize_plan_and_classify_write_html_pages() {
 
 #[test]
 fn access_reports_flank_milling_of_planar_faces() {
-    let panel = fixture("recognition/rib_grid_panel.step");
+    // Two ribs 8 mm apart on a plate (docs/ACCESS.md): quick to judge.
+    let panel = fixture("access/two_ribs.step");
     let json = json_of(bin().arg("access").arg(&panel));
     assert_eq!(json["schema"], "thinwall/access/1");
     let faces = json["planar_faces"].as_array().unwrap();
-    assert_eq!(faces.len(), 38);
+    assert_eq!(faces.len(), 14);
+    // Every face's reach travels with it; the gap's floor is not reached.
+    assert_eq!(json["faces"].as_array().unwrap().len(), 14);
+    assert!(json["faces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|f| f["contact"] == "floor" && f["fraction"].as_f64() == Some(0.0)));
     for f in faces {
         let v = f["visibility"].as_f64().unwrap();
         assert_eq!(f["advisable"].as_bool().unwrap(), v >= 0.95);
@@ -866,7 +874,7 @@ fn access_reports_flank_milling_of_planar_faces() {
         .unwrap();
     assert!(text.status.success());
     let text = String::from_utf8_lossy(&text.stdout);
-    assert!(text.contains("38 planar face(s), 27 advisable"), "{text}");
+    assert!(text.contains("14 planar face(s), 13 advisable"), "{text}");
     for bad in [["--tool-diameter", "-3"], ["--threshold", "1.5"]] {
         let out = bin().arg("access").arg(&panel).args(bad).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{bad:?}");
