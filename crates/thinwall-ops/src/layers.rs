@@ -52,6 +52,31 @@ pub struct CutterField {
     pub too_small: bool,
 }
 
+impl Contour {
+    /// The closed ring of its points.
+    pub fn ring(&self) -> LineString<f64> {
+        let mut pts: Vec<Coord<f64>> = self
+            .points
+            .iter()
+            .map(|p| Coord { x: p[0], y: p[1] })
+            .collect();
+        if let Some(&first) = pts.first() {
+            pts.push(first);
+        }
+        LineString::new(pts)
+    }
+}
+
+impl CutterField {
+    /// The field as a polygon, its islands as holes.
+    pub fn polygon(&self) -> Polygon<f64> {
+        Polygon::new(
+            self.outer.ring(),
+            self.islands.iter().map(Contour::ring).collect(),
+        )
+    }
+}
+
 /// One roughing layer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct RoughingLayer {

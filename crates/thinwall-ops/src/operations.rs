@@ -194,23 +194,7 @@ struct Draft<'a> {
 /// within what the same tool cleared above (an opening keeps inclusion).
 fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
     let section = |l: &RoughingLayer| -> MultiPolygon<f64> {
-        let ring = |c: &crate::layers::Contour| {
-            let mut pts: Vec<geo::Coord<f64>> = c
-                .points
-                .iter()
-                .map(|p| geo::Coord { x: p[0], y: p[1] })
-                .collect();
-            if let Some(&first) = pts.first() {
-                pts.push(first);
-            }
-            geo::LineString::new(pts)
-        };
-        MultiPolygon::new(
-            l.fields
-                .iter()
-                .map(|f| geo::Polygon::new(ring(&f.outer), f.islands.iter().map(ring).collect()))
-                .collect(),
-        )
+        MultiPolygon::new(l.fields.iter().map(|f| f.polygon()).collect())
     };
     let sections: Vec<MultiPolygon<f64>> = layers.iter().map(section).collect();
     let tiny = (1e-6 * size).powi(2);

@@ -12,7 +12,7 @@
 
 use crate::layers::{CutterField, EdgeKind};
 use crate::tools::CuttingTool;
-use geo::{Area, BooleanOps, Coord, LineString, MultiPolygon, Polygon};
+use geo::{Area, BooleanOps, MultiPolygon};
 use serde::Serialize;
 use thinwall_access::reach::floor::{disk, grown, union_all};
 
@@ -45,17 +45,6 @@ struct Shape {
 }
 
 fn shape(f: &CutterField) -> Shape {
-    let ring = |c: &crate::layers::Contour| {
-        let mut pts: Vec<Coord<f64>> = c
-            .points
-            .iter()
-            .map(|p| Coord { x: p[0], y: p[1] })
-            .collect();
-        if let Some(&first) = pts.first() {
-            pts.push(first);
-        }
-        LineString::new(pts)
-    };
     let mut part = Vec::new();
     let mut blank = Vec::new();
     for c in std::iter::once(&f.outer).chain(&f.islands) {
@@ -67,10 +56,7 @@ fn shape(f: &CutterField) -> Shape {
         }
     }
     Shape {
-        region: MultiPolygon::new(vec![Polygon::new(
-            ring(&f.outer),
-            f.islands.iter().map(ring).collect(),
-        )]),
+        region: MultiPolygon::new(vec![f.polygon()]),
         part,
         blank,
     }
@@ -178,8 +164,10 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
             done_area = now;
         }
     }
+    // Measured on the difference itself: the layer check (cleared + rest
+    // = section) then compares two booleans, not one number with itself.
     let rest = s.region.difference(&done);
-    let rest_mm2 = (area - done_area).max(0.0);
+    let rest_mm2 = rest.unsigned_area();
     // Less than the disks' polygon error: no rest worth a word.
     let largest = shares.first().map_or(0.0, |s| s.diameter_mm);
     let tiny = tiny.max(noise(largest));

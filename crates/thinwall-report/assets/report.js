@@ -588,6 +588,24 @@
     return { marks, line, rings };
   }
 
+  // Faces by body and STEP id in `index`, coloured by `tint`; the rest
+  // grey, and all but the chosen pale.
+  function paintFaces(index, tint) {
+    const on = selected && selected.faces ? new Set(selected.faces) : null;
+    part.paint((i) => {
+      const fd = D.part.faces[i];
+      const f = index.get(fd.body + ':' + fd.step_id);
+      const c = f ? new T.Color(tint(f)) : colour('other');
+      return on && !on.has(i) ? pale(c) : c;
+    });
+    viewer.render();
+  }
+  function pickIndexed(tab, index, i) {
+    const fd = D.part.faces[i];
+    const key = fd.body + ':' + fd.step_id;
+    if (index.has(key)) tab.select(key); else faceInfo(i);
+  }
+
   // ------------------------------------------------- reach (access)
   function reachTab() {
     const rep = D.access;
@@ -613,16 +631,7 @@
         const order = [...faces].sort((a, b) => a.fraction - b.fraction || a.face - b.face);
         list(order.map((f) => ({ key: f.body + ':' + f.face, id: '#' + f.face, what: f.contact + ' · ' + fmt(100 * f.fraction, 1) + ' %' + (f.largest_tool_mm != null ? ' · largest Ø' + fmt(f.largest_tool_mm) : ''), colour: tint(f) })));
       },
-      paint() {
-        const on = selected && selected.faces ? new Set(selected.faces) : null;
-        part.paint((i) => {
-          const fd = D.part.faces[i];
-          const f = index.get(fd.body + ':' + fd.step_id);
-          const c = f ? new T.Color(tint(f)) : colour('other');
-          return on && !on.has(i) ? pale(c) : c;
-        });
-        viewer.render();
-      },
+      paint() { paintFaces(index, tint); },
       select(key) {
         const f = index.get(key);
         if (!f) return;
@@ -633,7 +642,7 @@
         for (const b of f.blocked_by || []) table.append(el('tr', null, el('td', null, '#' + b.face), el('td', null, b.by + ' · ' + fmt(b.unreachable_mm2))));
         details('Face #' + f.face + ' — ' + f.contact, [['area', fmt(f.area_mm2) + ' mm²'], ['reached', fmt(100 * f.fraction, 1) + ' %'], ['not reached', fmt(f.unreachable_mm2) + ' mm²'], ['tool', toolText], ['tilt', f.tilt_deg ? fmt(f.tilt_deg) + '°' : null], ['largest tool reaching it whole', f.largest_tool_mm != null ? 'Ø' + fmt(f.largest_tool_mm) + ' mm' : null], ['note', f.note]], (f.blocked_by || []).length ? [el('h3', null, 'In the way'), table] : []);
       },
-      pickFace(i) { const fd = D.part.faces[i]; const key = fd.body + ':' + fd.step_id; if (index.has(key)) this.select(key); else faceInfo(i); },
+      pickFace(i) { pickIndexed(this, index, i); },
     };
   }
 
@@ -669,16 +678,7 @@
       },
       leave() { marks.clear(); },
       list() { list(planar.map((f) => ({ key: f.body + ':' + f.face, id: '#' + f.face, what: f.nature.replace('_', '-') + ' · ' + fmt(100 * f.visibility, 1) + ' % · ' + (f.advisable ? 'advisable' : 'not advisable'), colour: tint(f) }))); },
-      paint() {
-        const on = selected && selected.faces ? new Set(selected.faces) : null;
-        part.paint((i) => {
-          const fd = D.part.faces[i];
-          const f = index.get(fd.body + ':' + fd.step_id);
-          const c = f ? new T.Color(tint(f)) : colour('other');
-          return on && !on.has(i) ? pale(c) : c;
-        });
-        viewer.render();
-      },
+      paint() { paintFaces(index, tint); },
       select(key) {
         const f = index.get(key);
         if (!f) return;
@@ -688,7 +688,7 @@
         for (const c of f.candidates) table.append(el('tr', null, el('td', null, vec(c.direction)), el('td', null, c.priority + ' · ' + c.rule + ' (edge #' + c.edge + ') · ' + fmt(c.l_zone_mm2) + ' mm²')));
         details('Face #' + f.face + ' — ' + f.nature.replace('_', '-'), [['area', fmt(f.area_mm2) + ' mm²'], ['reached', fmt(100 * f.visibility, 1) + ' %'], ['G-zone (unreached)', fmt(f.g_zone_mm2) + ' mm²'], ['verdict', f.advisable ? 'advisable for flank milling' : 'not advisable'], ['obstacles within reach', String(f.obstacles)], ['closed edges', f.edges.filter((e) => e.sharpness.includes('closed')).length + ' of ' + f.edges.length], ['directions used', f.used.map((u) => vec(u.direction)).join(' ')], ['note', f.note]], [el('h3', null, 'Candidates, in the order tried'), table]);
       },
-      pickFace(i) { const fd = D.part.faces[i]; const key = fd.body + ':' + fd.step_id; if (index.has(key)) this.select(key); else faceInfo(i); },
+      pickFace(i) { pickIndexed(this, index, i); },
     };
   }
 
