@@ -209,7 +209,7 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
         .filter(|t| [20.0, 12.0, 6.0].contains(&t.diameter_mm))
         .collect();
     assert_eq!(mills.len(), 3);
-    let picked = select(field, &mills);
+    let picked = select(field, &mills, &layers[0].floor_region);
     let names: Vec<&str> = picked.shares.iter().map(|s| s.tool.as_str()).collect();
     assert_eq!(names, ["EM20", "EM12", "EM6"]);
     let segment = 100.0 * (51f64.sqrt() / 10.0).acos() - 7.0 * 51f64.sqrt();
@@ -230,21 +230,24 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
     assert!((total - field.area_mm2).abs() < 1e-6 * field.area_mm2);
 }
 
-/// The roughing operations of every thin-walled part: the order never
-/// breaks a precedence, has no more tool changes than the plain layer by
-/// layer order, and in every layer what the tools clear plus the rest is
-/// the layer's section (1e-6).
+/// The operations of every thin-walled part: the order never breaks a
+/// precedence, has no more tool changes than the plain layer by layer
+/// order; in every layer what the rough and semi-finish operations clear
+/// plus the rest is the layer's section (1e-6), their regions add up to
+/// their areas, a floor's finish lies over the layer's floors, and the
+/// volumes of the layer's operations add up to its section times its
+/// thickness.
 #[test]
-fn roughing_operations_keep_their_order_and_add_up() {
-    use thinwall_ops::operations::roughing;
+fn operations_keep_their_order_and_add_up() {
+    use thinwall_ops::operations::{operations, Stage};
     let lib = thinwall_ops::ToolLibrary::default_tools();
     let mut parts = common::thin_walled_parts();
     parts.push(common::root().join("fixtures/ops/pocket_islands.step"));
-    let (mut fewer, mut ran) = (0, 0);
+    let (mut fewer, mut ran, mut finishes) = (0, 0, 0);
     for path in parts {
         let part = thinwall_step::read_file(&path).unwrap().0;
         let Ok(r) = removal(&part) else { continue };
-        let plan = roughing(&r, &lib, None);
+        let plan = operations(&r, &lib, None);
         let what = path.display().to_string();
         for op in &plan.operations {
             assert!(
@@ -253,14 +256,24 @@ fn roughing_operations_keep_their_order_and_add_up() {
                 op.step
             );
             assert!(op.time_min.is_finite() && op.time_min >= 0.0, "{what}");
+            assert!(op.volume_mm3 >= -1e-9, "{what}: step {}", op.step);
+            if let Some(g) = op.regions {
+                let sum = g.boundary_mm2 + g.full_cut_mm2 + g.roughing_mm2;
+                assert!(
+                    (sum - op.area_mm2).abs() <= 1e-6 * op.area_mm2.max(1.0),
+                    "{what}: step {}: regions {g:?}, area {}",
+                    op.step,
+                    op.area_mm2
+                );
+            }
+            assert_eq!(op.regions.is_none(), op.stage == Stage::Finish);
         }
         assert!(plan.tool_changes <= plan.plain_tool_changes, "{what}");
         fewer += usize::from(plan.tool_changes < plan.plain_tool_changes);
         for (k, l) in plan.layers.iter().enumerate() {
-            let cleared: f64 = plan
-                .operations
-                .iter()
-                .filter(|o| o.layer == k)
+            let ops = || plan.operations.iter().filter(move |o| o.layer == k);
+            let cleared: f64 = ops()
+                .filter(|o| o.stage != Stage::Finish)
                 .map(|o| o.area_mm2)
                 .sum();
             // Every field's rest, the listed ones and those below the
@@ -271,9 +284,27 @@ fn roughing_operations_keep_their_order_and_add_up() {
                 "{what}: layer {k}: {cleared} cleared + {rest} rest, section {}",
                 l.area_mm2
             );
+            let floor: f64 = ops()
+                .filter(|o| o.stage == Stage::Finish)
+                .map(|o| o.area_mm2)
+                .sum();
+            let floors = geo::Area::unsigned_area(&l.floor_region);
+            assert!(
+                floor <= floors + 1e-6 * floors.max(1.0),
+                "{what}: layer {k}"
+            );
+            finishes += ops().filter(|o| o.stage == Stage::Finish).count();
+            let volume: f64 = ops().map(|o| o.volume_mm3).sum();
+            let h = l.z_top_mm - l.z_bottom_mm;
+            assert!(
+                (volume - cleared * h).abs() <= 1e-6 * (cleared * h).max(1.0),
+                "{what}: layer {k}: {volume} mm³ in operations, {} cleared",
+                cleared * h
+            );
         }
         ran += 1;
     }
-    eprintln!("OPS {ran} parts, fewer changes on {fewer}");
+    assert!(finishes > 0);
+    eprintln!("OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes");
     assert!(ran >= 30);
 }

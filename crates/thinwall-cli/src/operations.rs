@@ -1,4 +1,4 @@
-//! `thinwall operations`: the roughing of one set-up as an operation
+//! `thinwall operations`: the operations of one set-up as an operation
 //! sheet or JSON (`thinwall/operations/1`).
 
 use crate::failure::Failure;
@@ -55,7 +55,7 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
     let size = a.bounding_box().diagonal();
     let removal = Removal::new(&model, frame, &StockShape::Block { lo, hi }, &[], size)
         .map_err(|e| Failure::Input(format!("removal.{}: {e}", e.code())))?;
-    let roughing = thinwall_ops::operations::roughing(&removal, &lib, args.axial_depth);
+    let setup_ops = thinwall_ops::operations::operations(&removal, &lib, args.axial_depth);
     let v = |p: Vector3| [p.x, p.y, p.z];
     let report = thinwall_report::operations::OperationsReport::new(
         &args.part.display().to_string(),
@@ -67,7 +67,7 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
             v(frame.z),
         ],
         lib,
-        roughing,
+        setup_ops,
     );
     Ok(if args.json {
         report.to_json()

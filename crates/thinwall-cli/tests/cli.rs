@@ -893,11 +893,11 @@ fn operations_sheet_json_and_errors() {
             .args(["--format", "json"]),
     );
     assert_eq!(json["schema"], "thinwall/operations/1");
-    let ops = json["roughing"]["operations"].as_array().unwrap();
+    let ops = json["setup"]["operations"].as_array().unwrap();
     assert_eq!(ops[0]["tool"], "EM20");
     assert!(
-        json["roughing"]["tool_changes"].as_u64().unwrap()
-            <= json["roughing"]["plain_tool_changes"].as_u64().unwrap()
+        json["setup"]["tool_changes"].as_u64().unwrap()
+            <= json["setup"]["plain_tool_changes"].as_u64().unwrap()
     );
     assert!(!json["not_yet"].as_array().unwrap().is_empty());
     let text = bin().arg("operations").arg(&pocket).output().unwrap();
@@ -911,11 +911,8 @@ fn operations_sheet_json_and_errors() {
             .arg(fixture("ops/plain_block.step"))
             .args(["--format", "json"]),
     );
-    assert!(plain["roughing"]["operations"]
-        .as_array()
-        .unwrap()
-        .is_empty());
-    assert!(plain["roughing"]["layers"].as_array().unwrap().is_empty());
+    assert!(plain["setup"]["operations"].as_array().unwrap().is_empty());
+    assert!(plain["setup"]["layers"].as_array().unwrap().is_empty());
 
     // A tool file with a negative diameter, or an unknown key: exit 2 and
     // the line.

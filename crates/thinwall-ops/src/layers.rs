@@ -85,6 +85,9 @@ pub struct RoughingLayer {
     pub z_bottom_mm: f64,
     /// STEP ids of the part's flat faces facing up at the layer's bottom.
     pub floors: Vec<u64>,
+    /// Those faces seen from up (x, y).
+    #[serde(skip)]
+    pub floor_region: MultiPolygon<f64>,
     /// The removal region's cross-section at the bottom, mm².
     pub area_mm2: f64,
     pub fields: Vec<CutterField>,
@@ -156,10 +159,24 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
             .iter()
             .map(|p| field(p, r, &footprint, opts.smallest_tool_mm))
             .collect();
+        let floor_region = MultiPolygon::new(
+            r.part_pieces
+                .iter()
+                .filter(|p| floors.contains(&p.step_id))
+                .filter(|p| matches!(p.height, Height::Plane { z0, .. } if (z0 - z).abs() <= tol))
+                .flat_map(|p| p.region.0.iter().cloned())
+                .collect(),
+        );
         out.push(RoughingLayer {
             index,
             z_top_mm: above,
             z_bottom_mm: z,
+            floor_region: thinwall_access::reach::floor::union_all(
+                floor_region
+                    .into_iter()
+                    .map(|p| MultiPolygon::new(vec![p]))
+                    .collect(),
+            ),
             floors,
             area_mm2: fields.iter().map(|f| f.area_mm2).sum(),
             fields,

@@ -1,18 +1,28 @@
-//! Roughing operations and their order (Matsuda's milling features per
-//! tool and depth, ordered as Cohen et al. do to cut tool changes).
+//! Operations and their order (Matsuda's milling features per tool and
+//! depth, Popma's modular regions, ordered as Cohen et al. do to cut tool
+//! changes).
 //!
-//! Every layer's fields get their tools ([`crate::rest`]); an operation is
-//! one tool in one layer. A tool may rough a layer once what lies above
-//! what it clears is gone: when layer k + 1's section lies within layer
-//! k's, what tool T clears in it lies within what T cleared in layer k (an
-//! opening keeps inclusion), so T's operation follows the same and larger
-//! tools' of layer k only; otherwise it follows all of layer k. The order is a
+//! Every layer's fields get their tools ([`crate::rest`]). An operation is
+//! one tool in one layer at one stage: **rough** (the field's first tool),
+//! **semi-finish** (a smaller tool in what larger ones left: rest
+//! machining) or **finish** (the floor under a field, Popma's separate
+//! bottom layer: its last `finish_axial_depth_mm` at finishing stepover).
+//! Rough and semi-finish operations carry their share's regions (boundary,
+//! full cut, roughing) and are timed region by region.
+//!
+//! A tool may work in a layer once what lies above what it clears is
+//! gone: when layer k + 1's section lies within layer k's, what tool T
+//! clears in it lies within what T cleared in layer k (an opening keeps
+//! inclusion), so T's operations follow the same and larger tools' of
+//! layer k only; otherwise they follow all of layer k's. Within a field a
+//! smaller tool follows the larger ones, and a floor's finish follows the
+//! field's milling by the same and larger tools. The order is a
 //! topological order of that graph that keeps the tool in the spindle
 //! while it has work, shallow layers first; the plain order is layer by
-//! layer, the largest tool first.
+//! layer, the largest tool first, finishing last.
 
 use crate::layers::{roughing_layers, LayerOptions, RoughingLayer};
-use crate::rest::{select, FieldTools};
+use crate::rest::{select, Adjacency, FieldTools, ToolShare};
 use crate::tools::{CuttingTool, ToolLibrary};
 use geo::{Area, BooleanOps, MultiPolygon};
 use petgraph::graph::{DiGraph, NodeIndex};
@@ -20,11 +30,40 @@ use rayon::prelude::*;
 use serde::Serialize;
 use thinwall_plan::removal::Removal;
 
-/// One roughing operation: a tool in a layer.
+/// What an operation does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stage {
+    Rough,
+    SemiFinish,
+    Finish,
+}
+
+impl Stage {
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Rough => "rough",
+            Stage::SemiFinish => "semi_finish",
+            Stage::Finish => "finish",
+        }
+    }
+}
+
+/// An operation's share of Popma's regions, mm² (they add up to its
+/// area; a floor's finish has none).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Regions {
+    pub boundary_mm2: f64,
+    pub full_cut_mm2: f64,
+    pub roughing_mm2: f64,
+}
+
+/// One operation: a tool in a layer at a stage.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Operation {
     /// Place in the chosen order, from 1.
     pub step: usize,
+    pub stage: Stage,
     pub tool: String,
     pub diameter_mm: f64,
     pub layer: usize,
@@ -32,12 +71,19 @@ pub struct Operation {
     pub z_bottom_mm: f64,
     /// The layer's fields it works in (indices into the layer's fields).
     pub fields: Vec<usize>,
-    /// What it clears that larger tools left, mm².
+    /// The product adjacency of those fields together.
+    pub adjacency: Adjacency,
+    /// Rough and semi-finish: what it clears that larger tools left;
+    /// finish: the floor it finishes, mm².
     pub area_mm2: f64,
-    /// That area times the layer's thickness, mm³.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regions: Option<Regions>,
+    /// mm³: the area times the layer's thickness, less the floors'
+    /// finishing layer (rough, semi-finish); the floor times that layer
+    /// (finish).
     pub volume_mm3: f64,
-    /// The volume over the tool's removal rate Q = a_p · a_e · f_z · z · n,
-    /// min.
+    /// Region by region, the volume over the removal rate for its
+    /// conditions (Q = a_p · a_e · f_z · z · n), min.
     pub time_min: f64,
     /// Steps it must follow.
     pub after: Vec<usize>,
@@ -53,9 +99,9 @@ pub struct Rest {
     pub outlines: Vec<Vec<[f64; 2]>>,
 }
 
-/// The roughing plan of one set-up.
+/// The operations of one set-up.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Roughing {
+pub struct SetupOperations {
     /// Depth of cut between levels, mm.
     pub axial_depth_mm: f64,
     pub layers: Vec<RoughingLayer>,
@@ -69,9 +115,9 @@ pub struct Roughing {
     pub time_min: f64,
 }
 
-/// Plan the roughing of the removal `r` with the library's end mills.
+/// Plan the operations for the removal `r` with the library's end mills.
 /// `axial_depth_mm` defaults to the largest end mill's a_p.
-pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> Roughing {
+pub fn operations(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> SetupOperations {
     let mills: Vec<&CuttingTool> = lib.end_mills().collect();
     let a_p = axial_depth_mm
         .or_else(|| mills.first().map(|t| t.axial_depth_mm))
@@ -86,30 +132,32 @@ pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> 
     );
     let field_tools: Vec<Vec<FieldTools>> = layers
         .par_iter()
-        .map(|l| l.fields.par_iter().map(|f| select(f, &mills)).collect())
+        .map(|l| {
+            l.fields
+                .par_iter()
+                .map(|f| select(f, &mills, &l.floor_region))
+                .collect()
+        })
         .collect();
+    let tiny = (1e-6 * r.size.max(1.0)).powi(2);
     let mut ops: Vec<Draft> = Vec::new();
     for (k, fts) in field_tools.iter().enumerate() {
-        for t in &mills {
-            let mut d = Draft {
-                tool: t,
-                layer: k,
-                fields: Vec::new(),
-                area: 0.0,
-            };
-            for (j, ft) in fts.iter().enumerate() {
-                if let Some(s) = ft.shares.iter().position(|s| s.tool == t.name) {
-                    d.fields.push(j);
-                    d.area += ft.shares[s].cleared_mm2;
+        for stage in [Stage::Rough, Stage::SemiFinish, Stage::Finish] {
+            for t in &mills {
+                if let Some(d) = draft(t, k, stage, fts, &layers[k], tiny) {
+                    ops.push(d);
                 }
-            }
-            if !d.fields.is_empty() {
-                ops.push(d);
             }
         }
     }
+    // Layer by layer, rough, semi-finish then finish, the largest tool
+    // first: always allowed.
+    ops.sort_by(|a, b| {
+        (a.layer, a.stage)
+            .cmp(&(b.layer, b.stage))
+            .then(b.tool.diameter_mm.total_cmp(&a.tool.diameter_mm))
+    });
     let graph = precedence(&ops, &nested(&layers, r.size));
-    // Layer by layer, the largest tool first: always allowed.
     let plain: Vec<usize> = (0..ops.len()).collect();
     let changes = |o: &[usize]| {
         o.windows(2)
@@ -130,30 +178,28 @@ pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> 
         .iter()
         .enumerate()
         .map(|(s, &i)| {
-            let d = &ops[i];
-            let l = &layers[d.layer];
-            let volume = d.area * (l.z_top_mm - l.z_bottom_mm);
             let mut after: Vec<usize> = graph
                 .neighbors_directed(NodeIndex::new(i), petgraph::Direction::Incoming)
                 .map(|n| place[n.index()])
                 .collect();
             after.sort_unstable();
-            Operation {
-                step: s + 1,
-                tool: d.tool.name.clone(),
-                diameter_mm: d.tool.diameter_mm,
-                layer: d.layer,
-                z_top_mm: l.z_top_mm,
-                z_bottom_mm: l.z_bottom_mm,
-                fields: d.fields.clone(),
-                area_mm2: d.area,
-                volume_mm3: volume,
-                time_min: volume / d.tool.removal_rate_mm3_min(),
-                after,
-            }
+            ops[i].operation(s + 1, &layers[ops[i].layer], after)
         })
         .collect();
-    let rest = field_tools
+    SetupOperations {
+        axial_depth_mm: a_p,
+        time_min: operations.iter().map(|o| o.time_min).sum(),
+        tool_changes: changes(&order),
+        plain_tool_changes: changes(&plain),
+        rest: rests(&field_tools),
+        layers,
+        field_tools,
+        operations,
+    }
+}
+
+fn rests(field_tools: &[Vec<FieldTools>]) -> Vec<Rest> {
+    field_tools
         .iter()
         .enumerate()
         .flat_map(|(k, fts)| {
@@ -168,25 +214,124 @@ pub fn roughing(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> 
                     outlines: ft.rest.clone(),
                 })
         })
-        .collect();
-    Roughing {
-        axial_depth_mm: a_p,
-        time_min: operations.iter().map(|o| o.time_min).sum(),
-        tool_changes: changes(&order),
-        plain_tool_changes: changes(&plain),
-        layers,
-        field_tools,
-        operations,
-        rest,
-    }
+        .collect()
 }
 
 /// An operation before it has a place.
 struct Draft<'a> {
     tool: &'a CuttingTool,
     layer: usize,
+    stage: Stage,
     fields: Vec<usize>,
+    adjacency: Adjacency,
     area: f64,
+    regions: Option<Regions>,
+    /// Of the area, what lies over a floor (rough and semi-finish: left
+    /// to the floor's finish), mm².
+    floor: f64,
+}
+
+/// Tool `t`'s operation at `stage` in layer `k`, if it has work there.
+fn draft<'a>(
+    t: &'a CuttingTool,
+    k: usize,
+    stage: Stage,
+    fts: &[FieldTools],
+    layer: &RoughingLayer,
+    tiny: f64,
+) -> Option<Draft<'a>> {
+    let mut d = Draft {
+        tool: t,
+        layer: k,
+        stage,
+        fields: Vec::new(),
+        adjacency: Adjacency::None,
+        area: 0.0,
+        regions: (stage != Stage::Finish).then(Regions::default),
+        floor: 0.0,
+    };
+    let (mut side, mut bottom) = (false, false);
+    for (j, ft) in fts.iter().enumerate() {
+        let Some(s) = ft.shares.iter().find(|s| s.tool == t.name) else {
+            continue;
+        };
+        let works = match stage {
+            Stage::Rough => s.first,
+            Stage::SemiFinish => !s.first,
+            Stage::Finish => s.floor_mm2 > tiny && !layer.floors.is_empty(),
+        };
+        if !works {
+            continue;
+        }
+        d.fields.push(j);
+        side |= matches!(ft.adjacency, Adjacency::Side | Adjacency::SideAndBottom);
+        bottom |= matches!(ft.adjacency, Adjacency::Bottom | Adjacency::SideAndBottom);
+        add_share(&mut d, s, stage);
+    }
+    d.adjacency = match (side, bottom) {
+        (true, true) => Adjacency::SideAndBottom,
+        (true, false) => Adjacency::Side,
+        (false, true) => Adjacency::Bottom,
+        (false, false) => Adjacency::None,
+    };
+    (!d.fields.is_empty()).then_some(d)
+}
+
+fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
+    if stage == Stage::Finish {
+        d.area += s.floor_mm2;
+        return;
+    }
+    d.area += s.cleared_mm2;
+    d.floor += s.floor_mm2;
+    if let Some(r) = &mut d.regions {
+        r.boundary_mm2 += s.boundary_mm2;
+        r.full_cut_mm2 += s.full_cut_mm2;
+        r.roughing_mm2 += s.roughing_mm2;
+    }
+}
+
+impl Draft<'_> {
+    fn operation(&self, step: usize, l: &RoughingLayer, after: Vec<usize>) -> Operation {
+        let h = l.z_top_mm - l.z_bottom_mm;
+        // The floors' finishing layer, never more than the layer.
+        let skin = self.tool.finish_axial_depth_mm.min(h);
+        let t = self.tool;
+        let (volume, time) = match &self.regions {
+            None => (self.area * skin, self.area * skin / t.floor_rate_mm3_min()),
+            Some(r) => {
+                let volume = self.area * h - self.floor * skin;
+                // The floor's skin comes off every region alike.
+                let f = if self.area > 0.0 {
+                    volume / (self.area * h)
+                } else {
+                    0.0
+                };
+                let time = f
+                    * h
+                    * (r.boundary_mm2 / t.boundary_rate_mm3_min()
+                        + r.full_cut_mm2 / t.full_cut_rate_mm3_min()
+                        + r.roughing_mm2 / t.removal_rate_mm3_min());
+                (volume, time)
+            }
+        };
+        Operation {
+            step,
+            stage: self.stage,
+            tool: t.name.clone(),
+            diameter_mm: t.diameter_mm,
+            layer: self.layer,
+            z_top_mm: l.z_top_mm,
+            z_bottom_mm: l.z_bottom_mm,
+            fields: self.fields.clone(),
+            adjacency: self.adjacency,
+            area_mm2: self.area,
+            regions: self.regions,
+            volume_mm3: volume,
+            time_min: time,
+            after,
+        }
+    }
 }
 
 /// Per layer, whether its section lies within the one above (walls going
@@ -208,18 +353,28 @@ fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
         .collect()
 }
 
-/// Edges from each operation to those that must follow it: an operation
-/// follows the larger or same tools' of the layer above when its layer is
-/// `nested` in that one, else every operation of the layer above.
+/// Edges from each operation to those that must follow it (module
+/// docs): between layers by `nested`; within a layer and a field from
+/// larger tools to smaller, and from milling to the floor's finish.
 fn precedence(ops: &[Draft], nested: &[bool]) -> DiGraph<usize, ()> {
     let mut g = DiGraph::new();
     let nodes: Vec<NodeIndex> = (0..ops.len()).map(|i| g.add_node(i)).collect();
     for (i, d) in ops.iter().enumerate() {
-        let Some(prev) = d.layer.checked_sub(1) else {
-            continue;
-        };
-        for j in (0..ops.len()).filter(|&j| ops[j].layer == prev) {
-            if !nested[d.layer] || ops[j].tool.diameter_mm >= d.tool.diameter_mm {
+        for (j, e) in ops.iter().enumerate() {
+            if i == j || e.stage == Stage::Finish {
+                continue;
+            }
+            let larger = e.tool.diameter_mm > d.tool.diameter_mm;
+            let same = e.tool.name == d.tool.name;
+            let follows = if e.layer + 1 == d.layer {
+                d.stage != Stage::Finish && (!nested[d.layer] || larger || same)
+            } else if e.layer == d.layer {
+                let shared = e.fields.iter().any(|f| d.fields.contains(f));
+                shared && (larger || (same && d.stage == Stage::Finish))
+            } else {
+                false
+            };
+            if follows {
                 g.add_edge(nodes[j], nodes[i], ());
             }
         }

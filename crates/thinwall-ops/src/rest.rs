@@ -6,6 +6,10 @@
 //! each tool clears what the larger ones left and more; what the smallest
 //! leaves is the rest no tool reaches, with its size and outline.
 //!
+//! Each share is split into Popma's regions (§4.3.4–4.3.5): a boundary
+//! region along the product, a full-cut region and a roughing (rest)
+//! region, and the field gets its product adjacency class (side, bottom).
+//!
 //! Disks are 128-gons with their corners on the circle
 //! ([`thinwall_access::reach::floor::disk`]): an area bounded by a tool's
 //! arc comes out within about 0.1 % of the circle's.
@@ -16,18 +20,59 @@ use geo::{Area, BooleanOps, MultiPolygon};
 use serde::Serialize;
 use thinwall_access::reach::floor::{disk, grown, union_all};
 
-/// One tool's share of a field.
+/// One tool's share of a field, and its regions (Popma §4.3.4): the
+/// three add up to `cleared_mm2`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ToolShare {
     pub tool: String,
     pub diameter_mm: f64,
     /// What this tool clears that the larger ones left, mm².
     pub cleared_mm2: f64,
+    /// Within the finishing stepover of a part contour: down milling,
+    /// reduced stepover, mm².
+    pub boundary_mm2: f64,
+    /// Where the material it meets is at least as wide as the tool but
+    /// narrower than d + a_e, so it cuts its full width: reduced depth of
+    /// cut, mm².
+    pub full_cut_mm2: f64,
+    /// The rest of its share, roughing conditions (Popma's rest region),
+    /// mm².
+    pub roughing_mm2: f64,
+    /// Of its share, what lies over a floor of the part (the bottom
+    /// layer's finishing pass), mm².
+    pub floor_mm2: f64,
+    /// Its first share in the field (roughing), or a smaller tool's in
+    /// what larger ones left (rest machining, semi-finishing).
+    pub first: bool,
+}
+
+/// How a tool gets into a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Entry {
+    /// Over a blank contour, from outside the stock.
+    FromOutside,
+    /// The field is closed by the part: a ramp or a helix down.
+    Ramp,
+}
+
+/// Where a field lies against the product (Popma §5.3's product
+/// adjacency class): along part contours (`side`), over a floor
+/// (`bottom`), both or neither.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Adjacency {
+    None,
+    Side,
+    Bottom,
+    SideAndBottom,
 }
 
 /// A field's tools, largest first, and what none of them reaches.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FieldTools {
+    pub adjacency: Adjacency,
+    pub entry: Entry,
     pub shares: Vec<ToolShare>,
     /// Left by the smallest tool, mm².
     pub rest_mm2: f64,
@@ -126,6 +171,48 @@ fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
     s.region.intersection(&union_all(pieces))
 }
 
+/// The regions of tool `t`'s share (Popma §4.3.4), what its opening `c`
+/// clears beyond `done` (the larger tools'): along the part contours
+/// within the finishing stepover (boundary); then where part contours on
+/// both sides leave the tool one pass at most, so it engages (nearly) its
+/// full width: what a disk a stepover wider (d + a_e) cannot reach,
+/// between walls closer than that and in the corners it cleans (full
+/// cut); the rest is roughing. Returns the boundary and full-cut areas,
+/// mm².
+///
+/// Measured as differences of areas, each an opening intersected with the
+/// band or with band ∪ wider opening: a boolean between two openings
+/// (their outlines run along the same walls, with tens of thousands of
+/// points) is what slows `i_overlay` down badly.
+fn regions(
+    s: &Shape,
+    c: &MultiPolygon<f64>,
+    done: &MultiPolygon<f64>,
+    t: &CuttingTool,
+) -> (f64, f64) {
+    let band = disk(t.finish_radial_depth_mm);
+    let along: Vec<MultiPolygon<f64>> = s
+        .part
+        .iter()
+        .filter_map(|seg| grown(seg, &band))
+        .map(|p| MultiPolygon::new(vec![p]))
+        .collect();
+    let u = union_all(along);
+    let wide = cleared(s, 0.5 * (t.diameter_mm + t.radial_depth_mm));
+    let v = u.union(&wide);
+    let within = |m: &MultiPolygon<f64>, x: &MultiPolygon<f64>| {
+        if m.0.is_empty() || x.0.is_empty() {
+            0.0
+        } else {
+            m.intersection(x).unsigned_area()
+        }
+    };
+    let boundary = within(c, &u) - within(done, &u);
+    let outside_v = |m: &MultiPolygon<f64>| m.unsigned_area() - within(m, &v);
+    let full_cut = outside_v(c) - outside_v(done);
+    (boundary.max(0.0), full_cut.max(0.0))
+}
+
 /// The area a tool of diameter `d` may seem to clear or leave from its
 /// disk being a polygon alone: twice the 128-gon's shortfall of the
 /// circle's area (about 4·10⁻⁴ of it). A share or a rest below it is noise,
@@ -137,10 +224,17 @@ fn noise(d: f64) -> f64 {
 /// The tools for one field: `mills` largest first; a tool that clears
 /// nothing new is skipped, and the descent stops once nothing is left
 /// (within 1e-9 of the field).
-pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
+/// `floor` is the part's floors at the layer's bottom (x, y), for the
+/// bottom adjacency and each share's floor area.
+pub fn select(
+    field: &CutterField,
+    mills: &[&CuttingTool],
+    floor: &MultiPolygon<f64>,
+) -> FieldTools {
     let s = shape(field);
     let area = s.region.unsigned_area();
     let tiny = 1e-9 * area.max(1.0);
+    let floor = s.region.intersection(floor);
     let mut shares = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
@@ -155,15 +249,39 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
             .first()
             .map_or(t.diameter_mm, |s: &ToolShare| s.diameter_mm);
         if now - done_area > tiny.max(noise(first)) {
+            let cleared_mm2 = now - done_area;
+            let (boundary, full_cut) = regions(&s, &c, &done, t);
+            let full_cut = full_cut.min(cleared_mm2 - boundary).max(0.0);
+            let boundary = boundary.min(cleared_mm2);
             shares.push(ToolShare {
                 tool: t.name.clone(),
                 diameter_mm: t.diameter_mm,
-                cleared_mm2: now - done_area,
+                cleared_mm2,
+                boundary_mm2: boundary,
+                full_cut_mm2: full_cut,
+                roughing_mm2: (cleared_mm2 - boundary - full_cut).max(0.0),
+                floor_mm2: (c.intersection(&floor).unsigned_area()
+                    - done.intersection(&floor).unsigned_area())
+                .max(0.0),
+                first: shares.is_empty(),
             });
             done = c;
             done_area = now;
         }
     }
+    let side = !s.part.is_empty();
+    let bottom = floor.unsigned_area() > tiny;
+    let adjacency = match (side, bottom) {
+        (true, true) => Adjacency::SideAndBottom,
+        (true, false) => Adjacency::Side,
+        (false, true) => Adjacency::Bottom,
+        (false, false) => Adjacency::None,
+    };
+    let entry = if s.blank.is_empty() {
+        Entry::Ramp
+    } else {
+        Entry::FromOutside
+    };
     // Measured on the difference itself: the layer check (cleared + rest
     // = section) then compares two booleans, not one number with itself.
     let rest = s.region.difference(&done);
@@ -172,6 +290,8 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
     let largest = shares.first().map_or(0.0, |s| s.diameter_mm);
     let tiny = tiny.max(noise(largest));
     FieldTools {
+        adjacency,
+        entry,
         shares,
         rest_mm2,
         rest_width_mm: if rest_mm2 > tiny {
@@ -186,5 +306,95 @@ pub fn select(field: &CutterField, mills: &[&CuttingTool]) -> FieldTools {
         } else {
             Vec::new()
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::layers::Contour;
+    use crate::tools::ToolLibrary;
+
+    /// A straight channel 200 long between two part walls `width` apart,
+    /// open (blank) at both ends.
+    fn channel(width: f64) -> CutterField {
+        CutterField {
+            outer: Contour {
+                points: vec![[0.0, 0.0], [200.0, 0.0], [200.0, width], [0.0, width]],
+                edges: vec![
+                    EdgeKind::Part,
+                    EdgeKind::Blank,
+                    EdgeKind::Part,
+                    EdgeKind::Blank,
+                ],
+            },
+            islands: Vec::new(),
+            area_mm2: 200.0 * width,
+            inscribed_diameter_mm: width,
+            too_small: false,
+        }
+    }
+
+    /// Ø20 with a_e 12 and a finishing stepover of 2: in a channel 25 wide
+    /// (narrower than 20 + 12) everything off the walls' 2 mm bands is a
+    /// full cut, 4200 mm², but at the open ends, where a disk of radius 16
+    /// centred outside (16 from the walls' ends, so 9.99 before the
+    /// entrance) reaches in: at most a segment of 16² acos(9.99/16) −
+    /// 9.99 · 12.5 = 104.7 mm² each. In a channel 40 wide nothing is a full
+    /// cut (no corners). The bands are 2 × 200 × 2 = 800 mm² either way;
+    /// the field is open, so the tool comes in from outside; the walls make
+    /// it side adjacent.
+    #[test]
+    fn a_channel_narrower_than_the_tool_and_a_stepover_is_a_full_cut() {
+        let lib = ToolLibrary::default_tools();
+        let em20 = lib.tools.iter().find(|t| t.name == "EM20").unwrap();
+        assert_eq!(em20.radial_depth_mm, 12.0);
+        assert!((em20.finish_radial_depth_mm - 2.0).abs() < 1e-12);
+        let none = MultiPolygon::new(vec![]);
+        for (width, full_cut, ends) in [(25.0, 4200.0, 2.0 * 104.7), (40.0, 0.0, 0.0)] {
+            let ft = select(&channel(width), &[em20], &none);
+            assert_eq!(ft.shares.len(), 1);
+            let s = &ft.shares[0];
+            assert!((s.cleared_mm2 - 200.0 * width).abs() < 1e-6, "{s:?}");
+            assert!((s.boundary_mm2 - 800.0).abs() < 1e-6, "{s:?}");
+            assert!(
+                s.full_cut_mm2 <= full_cut + 1e-6 && s.full_cut_mm2 >= full_cut - ends - 1e-6,
+                "{s:?}"
+            );
+            let roughing = 200.0 * width - 800.0 - s.full_cut_mm2;
+            assert!((s.roughing_mm2 - roughing).abs() < 1e-6, "{s:?}");
+            assert_eq!(s.floor_mm2, 0.0);
+            assert!(s.first);
+            assert_eq!(ft.adjacency, Adjacency::Side);
+            assert_eq!(ft.entry, Entry::FromOutside);
+        }
+    }
+
+    /// A closed square pocket over a floor: side and bottom adjacent, a
+    /// ramp in, and the floor under the whole share.
+    #[test]
+    fn a_closed_field_over_a_floor_is_entered_by_a_ramp() {
+        let lib = ToolLibrary::default_tools();
+        let em20 = lib.tools.iter().find(|t| t.name == "EM20").unwrap();
+        let mut f = channel(60.0);
+        f.outer.points = vec![[0.0, 0.0], [60.0, 0.0], [60.0, 60.0], [0.0, 60.0]];
+        f.outer.edges = vec![EdgeKind::Part; 4];
+        f.area_mm2 = 3600.0;
+        let floor = MultiPolygon::new(vec![f.polygon()]);
+        let ft = select(&f, &[em20], &floor);
+        assert_eq!(ft.adjacency, Adjacency::SideAndBottom);
+        assert_eq!(ft.entry, Entry::Ramp);
+        let s = &ft.shares[0];
+        assert!((s.floor_mm2 - s.cleared_mm2).abs() < 1e-6);
+        // The Ø20 leaves its four corners, 10² (1 − π/4) each (the
+        // 128-gon within 0.1 %).
+        let corners = 4.0 * 100.0 * (1.0 - std::f64::consts::FRAC_PI_4);
+        assert!(
+            (ft.rest_mm2 - corners).abs() < 1e-3 * 3600.0,
+            "{}",
+            ft.rest_mm2
+        );
+        let sum = s.boundary_mm2 + s.full_cut_mm2 + s.roughing_mm2;
+        assert!((sum - s.cleared_mm2).abs() < 1e-9 * 3600.0);
     }
 }

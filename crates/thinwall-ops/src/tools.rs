@@ -29,6 +29,9 @@ struct RawTool {
     feed_per_tooth_mm: f64,
     axial_depth_mm: Option<f64>,
     radial_depth_mm: Option<f64>,
+    finish_radial_depth_mm: Option<f64>,
+    finish_axial_depth_mm: Option<f64>,
+    full_cut_axial_depth_mm: Option<f64>,
     point_angle_deg: Option<f64>,
 }
 
@@ -54,6 +57,16 @@ pub struct CuttingTool {
     pub axial_depth_mm: f64,
     /// Roughing stepover a_e (end mills; drills: their diameter).
     pub radial_depth_mm: f64,
+    /// Stepover of the pass along the product (Popma's boundary region:
+    /// down milling, reduced stepover), mm; default 10 % of the diameter,
+    /// at most a_e.
+    pub finish_radial_depth_mm: f64,
+    /// What a floor's separate finishing layer takes (Popma's bottom
+    /// layer), mm; default 0.5, at most a_p.
+    pub finish_axial_depth_mm: f64,
+    /// Depth of cut where the tool cuts its full width (Popma's full-cut
+    /// region), mm; default a_p / 2.
+    pub full_cut_axial_depth_mm: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub point_angle_deg: Option<f64>,
     /// Line of the entry in its file.
@@ -74,6 +87,22 @@ impl CuttingTool {
     /// Material removal rate Q = a_p · a_e · f_z · z · n, mm³/min.
     pub fn removal_rate_mm3_min(&self) -> f64 {
         self.axial_depth_mm * self.radial_depth_mm * self.feed_mm_min()
+    }
+
+    /// Q along the product: a_p · a_e,finish · v_f, mm³/min.
+    pub fn boundary_rate_mm3_min(&self) -> f64 {
+        self.axial_depth_mm * self.finish_radial_depth_mm * self.feed_mm_min()
+    }
+
+    /// Q in a full cut: a_p,full · d · v_f, mm³/min.
+    pub fn full_cut_rate_mm3_min(&self) -> f64 {
+        self.full_cut_axial_depth_mm * self.diameter_mm * self.feed_mm_min()
+    }
+
+    /// Q of a floor's finishing layer: a_p,finish · a_e,finish · v_f,
+    /// mm³/min.
+    pub fn floor_rate_mm3_min(&self) -> f64 {
+        self.finish_axial_depth_mm * self.finish_radial_depth_mm * self.feed_mm_min()
     }
 }
 
@@ -213,6 +242,9 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
     mill_only(raw.corner_radius, "corner_radius")?;
     mill_only(raw.axial_depth_mm, "axial_depth_mm")?;
     mill_only(raw.radial_depth_mm, "radial_depth_mm")?;
+    mill_only(raw.finish_radial_depth_mm, "finish_radial_depth_mm")?;
+    mill_only(raw.finish_axial_depth_mm, "finish_axial_depth_mm")?;
+    mill_only(raw.full_cut_axial_depth_mm, "full_cut_axial_depth_mm")?;
     let (corner, a_p, a_e) = match raw.kind {
         ToolKind::FlatEndMill => {
             if raw.point_angle_deg.is_some() {
@@ -259,6 +291,36 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
             (0.0, cutting, d)
         }
     };
+    // Optional finishing data, each within its roughing counterpart.
+    let within = |v: Option<f64>, key: &str, default: f64, max: f64, of: &str| {
+        let v = v.unwrap_or(default.min(max));
+        let v = positive(v, key)?;
+        if v > max {
+            return Err(format!("`{key}` ({v}) exceeds {of} ({max})"));
+        }
+        Ok(v)
+    };
+    let finish_a_e = within(
+        raw.finish_radial_depth_mm,
+        "finish_radial_depth_mm",
+        0.1 * d,
+        a_e,
+        "`radial_depth_mm`",
+    )?;
+    let finish_a_p = within(
+        raw.finish_axial_depth_mm,
+        "finish_axial_depth_mm",
+        0.5,
+        a_p,
+        "`axial_depth_mm`",
+    )?;
+    let full_a_p = within(
+        raw.full_cut_axial_depth_mm,
+        "full_cut_axial_depth_mm",
+        0.5 * a_p,
+        a_p,
+        "`axial_depth_mm`",
+    )?;
     Ok(CuttingTool {
         name: raw.name,
         kind: raw.kind,
@@ -271,6 +333,9 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
         feed_per_tooth_mm: fz,
         axial_depth_mm: a_p,
         radial_depth_mm: a_e,
+        finish_radial_depth_mm: finish_a_e,
+        finish_axial_depth_mm: finish_a_p,
+        full_cut_axial_depth_mm: full_a_p,
         point_angle_deg: raw.point_angle_deg,
         line,
     })
@@ -358,6 +423,16 @@ radial_depth_mm = 6.0
                 "radial_depth_mm",
             ),
             ("teeth = 3", "teeth = 0", "teeth"),
+            (
+                "radial_depth_mm = 6.0",
+                "radial_depth_mm = 6.0\nfinish_radial_depth_mm = 7.0",
+                "finish_radial_depth_mm",
+            ),
+            (
+                "radial_depth_mm = 6.0",
+                "radial_depth_mm = 6.0\nfull_cut_axial_depth_mm = -1.0",
+                "full_cut_axial_depth_mm",
+            ),
             ("kind = \"flat_end_mill\"", "kind = \"reamer\"", "reamer"),
         ] {
             let e = ToolLibrary::from_toml(&ONE.replace(from, to), "t.toml").unwrap_err();

@@ -1,12 +1,12 @@
 //! The operations report (`thinwall operations`, schema
-//! `thinwall/operations/1`): the tool library in force and the roughing of
-//! one set-up (layers, cutter fields, tools with rest areas, operations in
-//! order); `not_yet` says what the issue asks that the report does not
+//! `thinwall/operations/1`): the tool library in force and the operations
+//! of one set-up (layers, cutter fields, tools with rest areas and their
+//! regions, operations in order); `not_yet` says what the issue asks that the report does not
 //! cover yet.
 
 use serde::Serialize;
 use std::fmt::Write;
-use thinwall_ops::operations::Roughing;
+use thinwall_ops::operations::SetupOperations;
 use thinwall_ops::ToolLibrary;
 
 pub const OPERATIONS_SCHEMA: &str = "thinwall/operations/1";
@@ -21,7 +21,7 @@ pub struct OperationsReport {
     /// (x, y), mm.
     pub frame: [[f64; 3]; 4],
     pub tools: ToolLibrary,
-    pub roughing: Roughing,
+    pub setup: SetupOperations,
     pub not_yet: Vec<String>,
 }
 
@@ -31,7 +31,7 @@ impl OperationsReport {
         up: [f64; 3],
         frame: [[f64; 3]; 4],
         tools: ToolLibrary,
-        roughing: Roughing,
+        setup: SetupOperations,
     ) -> Self {
         Self {
             schema: OPERATIONS_SCHEMA.to_string(),
@@ -40,12 +40,10 @@ impl OperationsReport {
             up,
             frame,
             tools,
-            roughing,
+            setup,
             not_yet: vec![
                 "drilling operations for holes (their material is roughed with the layers)".into(),
-                "semi-finish and finish operations".into(),
-                "region subdivision of walls' features (boundary, full-cut, rest; Popma §4.3)"
-                    .into(),
+                "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
                 "the plan's sequence constraints between stiffness features in the order".into(),
             ],
         }
@@ -58,11 +56,11 @@ impl OperationsReport {
 
     /// A readable operation sheet.
     pub fn to_text(&self) -> String {
-        let r = &self.roughing;
+        let r = &self.setup;
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "{}: roughing in {} layer(s) of at most {:.2} mm, {} operation(s), {} tool change(s) ({} layer by layer), about {:.1} min",
+            "{}: {} layer(s) of at most {:.2} mm, {} operation(s), {} tool change(s) ({} layer by layer), about {:.1} min",
             self.part,
             r.layers.len(),
             r.axial_depth_mm,
@@ -79,8 +77,17 @@ impl OperationsReport {
         );
         let _ = writeln!(
             s,
-            "{:>4}  {:<8} {:>6}  {:>5}  {:>17}  {:>12}  {:>13}  {:>8}  after",
-            "step", "tool", "Ø mm", "layer", "z mm", "area mm²", "volume mm³", "min"
+            "{:>4}  {:<11} {:<8} {:>6}  {:>5}  {:>17}  {:>12}  {:>26}  {:>13}  {:>8}  after",
+            "step",
+            "stage",
+            "tool",
+            "Ø mm",
+            "layer",
+            "z mm",
+            "area mm²",
+            "boundary/full cut/rough",
+            "volume mm³",
+            "min"
         );
         for o in &r.operations {
             let after = if o.after.is_empty() {
@@ -92,16 +99,24 @@ impl OperationsReport {
                     .collect::<Vec<_>>()
                     .join(",")
             };
+            let regions = o.regions.map_or(String::from("-"), |g| {
+                format!(
+                    "{:.0}/{:.0}/{:.0}",
+                    g.boundary_mm2, g.full_cut_mm2, g.roughing_mm2
+                )
+            });
             let _ = writeln!(
                 s,
-                "{:>4}  {:<8} {:>6.1}  {:>5}  {:>8.2}..{:<8.2} {:>12.1}  {:>13.0}  {:>8.2}  {after}",
+                "{:>4}  {:<11} {:<8} {:>6.1}  {:>5}  {:>8.2}..{:<8.2} {:>12.1}  {:>26}  {:>13.0}  {:>8.2}  {after}",
                 o.step,
+                o.stage.name(),
                 o.tool,
                 o.diameter_mm,
                 o.layer + 1,
                 o.z_top_mm,
                 o.z_bottom_mm,
                 o.area_mm2,
+                regions,
                 o.volume_mm3,
                 o.time_min
             );
