@@ -243,11 +243,18 @@ fn operations_keep_their_order_and_add_up() {
     let lib = thinwall_ops::ToolLibrary::default_tools();
     let mut parts = common::thin_walled_parts();
     parts.push(common::root().join("fixtures/ops/pocket_islands.step"));
-    let (mut fewer, mut ran, mut finishes) = (0, 0, 0);
+    parts.push(common::root().join("fixtures/ops/drill_plate.step"));
+    let (mut fewer, mut ran, mut finishes, mut drilled_holes) = (0, 0, 0, 0);
     for path in parts {
         let part = thinwall_step::read_file(&path).unwrap().0;
         let Ok(r) = removal(&part) else { continue };
-        let plan = operations(&r, &lib, None);
+        let a = PartAnalysis::new(
+            &part,
+            Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
+        );
+        let holes = thinwall_ops::drilling::holes_of(&a, &r.frame, &lib).unwrap();
+        drilled_holes += holes.iter().filter(|h| h.drill.is_some()).count();
+        let plan = operations(&r, &lib, None, &holes);
         let what = path.display().to_string();
         for op in &plan.operations {
             assert!(
@@ -266,22 +273,32 @@ fn operations_keep_their_order_and_add_up() {
                     op.area_mm2
                 );
             }
-            assert_eq!(op.regions.is_none(), op.stage == Stage::Finish);
+            assert_eq!(
+                op.regions.is_none(),
+                matches!(op.stage, Stage::Finish | Stage::Drill)
+            );
         }
         assert!(plan.tool_changes <= plan.plain_tool_changes, "{what}");
         fewer += usize::from(plan.tool_changes < plan.plain_tool_changes);
         for (k, l) in plan.layers.iter().enumerate() {
             let ops = || plan.operations.iter().filter(move |o| o.layer == k);
             let cleared: f64 = ops()
-                .filter(|o| o.stage != Stage::Finish)
+                .filter(|o| matches!(o.stage, Stage::Rough | Stage::SemiFinish))
                 .map(|o| o.area_mm2)
                 .sum();
             // Every field's rest, the listed ones and those below the
             // disks' polygon noise alike.
             let rest: f64 = plan.field_tools[k].iter().map(|f| f.rest_mm2).sum();
+            let drilled: f64 = l
+                .fields
+                .iter()
+                .zip(&plan.field_tools[k])
+                .filter(|(_, ft)| ft.drilled.is_some())
+                .map(|(f, _)| f.area_mm2)
+                .sum();
             assert!(
-                (cleared + rest - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
-                "{what}: layer {k}: {cleared} cleared + {rest} rest, section {}",
+                (cleared + rest + drilled - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
+                "{what}: layer {k}: {cleared} cleared + {rest} rest + {drilled} drilled, section {}",
                 l.area_mm2
             );
             let floor: f64 = ops()
@@ -294,7 +311,10 @@ fn operations_keep_their_order_and_add_up() {
                 "{what}: layer {k}"
             );
             finishes += ops().filter(|o| o.stage == Stage::Finish).count();
-            let volume: f64 = ops().map(|o| o.volume_mm3).sum();
+            let volume: f64 = ops()
+                .filter(|o| o.stage != Stage::Drill)
+                .map(|o| o.volume_mm3)
+                .sum();
             let h = l.z_top_mm - l.z_bottom_mm;
             assert!(
                 (volume - cleared * h).abs() <= 1e-6 * (cleared * h).max(1.0),
@@ -304,7 +324,9 @@ fn operations_keep_their_order_and_add_up() {
         }
         ran += 1;
     }
-    assert!(finishes > 0);
-    eprintln!("OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes");
+    assert!(finishes > 0 && drilled_holes >= 5);
+    eprintln!(
+        "OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes, {drilled_holes} holes drilled"
+    );
     assert!(ran >= 30);
 }

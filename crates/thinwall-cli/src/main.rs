@@ -179,10 +179,11 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
-    /// Roughing operations of a set-up: layers from the stock's top (and
-    /// at every flat face), cutter fields, the largest tools that fit with
-    /// their rest areas, in an order that cuts tool changes
-    /// (docs/OPERATIONS.md).
+    /// Operations of a set-up: layers from the stock's top (and at every
+    /// flat face), cutter fields, the largest tools that fit with their
+    /// rest areas and regions (boundary, full cut, roughing), floors'
+    /// finishing, holes drilled by subtype, in an order that cuts tool
+    /// changes (docs/OPERATIONS.md).
     Operations {
         /// The STEP file.
         part: PathBuf,

@@ -55,7 +55,9 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
     let size = a.bounding_box().diagonal();
     let removal = Removal::new(&model, frame, &StockShape::Block { lo, hi }, &[], size)
         .map_err(|e| Failure::Input(format!("removal.{}: {e}", e.code())))?;
-    let setup_ops = thinwall_ops::operations::operations(&removal, &lib, args.axial_depth);
+    let holes = thinwall_ops::drilling::holes_of(&a, &frame, &lib)
+        .map_err(|e| Failure::Input(format!("machining.{}: {e}", e.code())))?;
+    let setup_ops = thinwall_ops::operations::operations(&removal, &lib, args.axial_depth, &holes);
     let v = |p: Vector3| [p.x, p.y, p.z];
     let report = thinwall_report::operations::OperationsReport::new(
         &args.part.display().to_string(),

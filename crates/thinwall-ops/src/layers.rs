@@ -12,6 +12,9 @@ use serde::Serialize;
 use thinwall_plan::removal::pieces::{Facing, Height};
 use thinwall_plan::removal::{outline, slab, Removal};
 
+/// A plane whose height changes less than this per mm across is flat.
+pub const FLAT_SLOPE: f64 = 1e-9;
+
 /// What the layers are cut with.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LayerOptions {
@@ -110,7 +113,9 @@ pub fn levels(r: &Removal, axial_depth_mm: f64, tol: f64) -> Vec<(f64, Vec<u64>)
         let Height::Plane { z0, gx, gy, .. } = p.height else {
             continue;
         };
-        if gx != 0.0 || gy != 0.0 || z0 <= bottom - tol || z0 >= top - tol {
+        // Flat within rounding: a turned part's floor has a gradient of
+        // 1e-16, not 0.
+        if gx.hypot(gy) > FLAT_SLOPE || z0 <= bottom - tol || z0 >= top - tol {
             continue;
         }
         // A flat face facing down (an undercut's ceiling) bounds a layer
@@ -157,7 +162,8 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
         let polygons = section(r, z + tol);
         let fields: Vec<CutterField> = polygons
             .iter()
-            .map(|p| field(p, r, &footprint, opts.smallest_tool_mm))
+            .filter_map(|p| without_slivers(p, tol))
+            .map(|p| field(&p, r, &footprint, opts.smallest_tool_mm))
             .collect();
         let floor_region = MultiPolygon::new(
             r.part_pieces
@@ -184,6 +190,29 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
         above = z;
     }
     out
+}
+
+/// `p` without the slivers the joining of blocks leaves where their
+/// sections meet at a slant (a turned part): rings narrower on average
+/// than twice `tol` (area below `tol` times the perimeter); none if the
+/// outer ring is one.
+fn without_slivers(p: &Polygon<f64>, tol: f64) -> Option<Polygon<f64>> {
+    use geo::{Euclidean, Length};
+    let sliver = |ring: &LineString<f64>| {
+        let area = Polygon::new(ring.clone(), vec![]).unsigned_area();
+        area < tol * ring.length::<Euclidean>()
+    };
+    if sliver(p.exterior()) {
+        return None;
+    }
+    Some(Polygon::new(
+        p.exterior().clone(),
+        p.interiors()
+            .iter()
+            .filter(|r| !sliver(r))
+            .cloned()
+            .collect(),
+    ))
 }
 
 /// The removal region's cross-section at `z`: every block's, joined where

@@ -3,6 +3,7 @@
 //! with their cutter fields over the removal region ([`layers`],
 //! Schuster ch. 4–5).
 
+pub mod drilling;
 pub mod layers;
 pub mod operations;
 pub mod rest;

@@ -16,12 +16,19 @@
 //! inclusion), so T's operations follow the same and larger tools' of
 //! layer k only; otherwise they follow all of layer k's. Within a field a
 //! smaller tool follows the larger ones, and a floor's finish follows the
-//! field's milling by the same and larger tools. The order is a
+//! field's milling by the same and larger tools.
+//!
+//! **Drill** operations take the holes a drill of the library matches
+//! ([`crate::drilling`]): the cutter fields within a hole's circle over
+//! its depth leave the milling, and one operation per drill and kind
+//! (through, blind, peck) drills them all, after every operation of the
+//! layers above their entry. The order is a
 //! topological order of that graph that keeps the tool in the spindle
 //! while it has work, shallow layers first; the plain order is layer by
 //! layer, the largest tool first, finishing last.
 
-use crate::layers::{roughing_layers, LayerOptions, RoughingLayer};
+use crate::drilling::{drilling_time_min, DrillKind, HoleSite};
+use crate::layers::{roughing_layers, CutterField, LayerOptions, RoughingLayer};
 use crate::rest::{select, Adjacency, FieldTools, ToolShare};
 use crate::tools::{CuttingTool, ToolLibrary};
 use geo::{Area, BooleanOps, MultiPolygon};
@@ -37,6 +44,7 @@ pub enum Stage {
     Rough,
     SemiFinish,
     Finish,
+    Drill,
 }
 
 impl Stage {
@@ -45,6 +53,7 @@ impl Stage {
             Stage::Rough => "rough",
             Stage::SemiFinish => "semi_finish",
             Stage::Finish => "finish",
+            Stage::Drill => "drill",
         }
     }
 }
@@ -87,6 +96,11 @@ pub struct Operation {
     pub time_min: f64,
     /// Steps it must follow.
     pub after: Vec<usize>,
+    /// Drilling: how, and the holes (machining feature ids).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drill: Option<DrillKind>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub holes: Vec<String>,
 }
 
 /// What no tool of the library reaches, where.
@@ -104,6 +118,9 @@ pub struct Rest {
 pub struct SetupOperations {
     /// Depth of cut between levels, mm.
     pub axial_depth_mm: f64,
+    /// The holes along the tool axis, with their drill where one matches
+    /// (the others are milled with the layers).
+    pub holes: Vec<HoleSite>,
     pub layers: Vec<RoughingLayer>,
     /// Per layer, per field, its tools.
     pub field_tools: Vec<Vec<FieldTools>>,
@@ -115,9 +132,15 @@ pub struct SetupOperations {
     pub time_min: f64,
 }
 
-/// Plan the operations for the removal `r` with the library's end mills.
-/// `axial_depth_mm` defaults to the largest end mill's a_p.
-pub fn operations(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -> SetupOperations {
+/// Plan the operations for the removal `r` with the library's end mills,
+/// and its drills for the `holes` they match. `axial_depth_mm` defaults
+/// to the largest end mill's a_p.
+pub fn operations(
+    r: &Removal,
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+    holes: &[HoleSite],
+) -> SetupOperations {
     let mills: Vec<&CuttingTool> = lib.end_mills().collect();
     let a_p = axial_depth_mm
         .or_else(|| mills.first().map(|t| t.axial_depth_mm))
@@ -130,16 +153,20 @@ pub fn operations(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -
             smallest_tool_mm: smallest,
         },
     );
+    let tol = 1e-6 * r.size.max(1.0);
     let field_tools: Vec<Vec<FieldTools>> = layers
         .par_iter()
         .map(|l| {
             l.fields
                 .par_iter()
-                .map(|f| select(f, &mills, &l.floor_region))
+                .map(|f| match drilled_by(f, l, holes, tol) {
+                    Some(h) => FieldTools::drilled(&holes[h].id),
+                    None => select(f, &mills, &l.floor_region),
+                })
                 .collect()
         })
         .collect();
-    let tiny = (1e-6 * r.size.max(1.0)).powi(2);
+    let tiny = tol.powi(2);
     let mut ops: Vec<Draft> = Vec::new();
     for (k, fts) in field_tools.iter().enumerate() {
         for stage in [Stage::Rough, Stage::SemiFinish, Stage::Finish] {
@@ -150,14 +177,17 @@ pub fn operations(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -
             }
         }
     }
-    // Layer by layer, rough, semi-finish then finish, the largest tool
-    // first: always allowed.
+    ops.extend(drill_drafts(lib, holes, &layers, &field_tools));
+    // Layer by layer, rough, semi-finish, finish then drilling, the
+    // largest tool first: always allowed.
     ops.sort_by(|a, b| {
         (a.layer, a.stage)
             .cmp(&(b.layer, b.stage))
             .then(b.tool.diameter_mm.total_cmp(&a.tool.diameter_mm))
+            .then(a.drill.cmp(&b.drill))
     });
-    let graph = precedence(&ops, &nested(&layers, r.size));
+    let bottoms: Vec<f64> = layers.iter().map(|l| l.z_bottom_mm).collect();
+    let graph = precedence(&ops, &nested(&layers, r.size), &bottoms, tol);
     let plain: Vec<usize> = (0..ops.len()).collect();
     let changes = |o: &[usize]| {
         o.windows(2)
@@ -183,11 +213,12 @@ pub fn operations(r: &Removal, lib: &ToolLibrary, axial_depth_mm: Option<f64>) -
                 .map(|n| place[n.index()])
                 .collect();
             after.sort_unstable();
-            ops[i].operation(s + 1, &layers[ops[i].layer], after)
+            ops[i].operation(s + 1, &layers[ops[i].layer], holes, after)
         })
         .collect();
     SetupOperations {
         axial_depth_mm: a_p,
+        holes: holes.to_vec(),
         time_min: operations.iter().map(|o| o.time_min).sum(),
         tool_changes: changes(&order),
         plain_tool_changes: changes(&plain),
@@ -229,6 +260,83 @@ struct Draft<'a> {
     /// Of the area, what lies over a floor (rough and semi-finish: left
     /// to the floor's finish), mm².
     floor: f64,
+    /// Drilling: how, its holes (indices into the sites), their volume
+    /// in the layers (mm³) and the highest entry (mm).
+    drill: Option<DrillKind>,
+    holes: Vec<usize>,
+    drilled_mm3: f64,
+    entry_mm: f64,
+}
+
+/// The hole whose drill takes field `f` of layer `l` whole: the layer's
+/// bottom within the hole's depth and the field within its circle.
+fn drilled_by(f: &CutterField, l: &RoughingLayer, holes: &[HoleSite], tol: f64) -> Option<usize> {
+    holes.iter().position(|h| {
+        h.drill.is_some()
+            && l.z_bottom_mm >= h.z_bottom_mm - tol
+            && l.z_bottom_mm < h.z_top_mm - tol
+            && f.outer.points.iter().all(|&p| h.holds(p, tol))
+    })
+}
+
+/// One drilling operation per drill and kind, over the holes whose
+/// material it takes from the layers.
+fn drill_drafts<'a>(
+    lib: &'a ToolLibrary,
+    holes: &[HoleSite],
+    layers: &[RoughingLayer],
+    field_tools: &[Vec<FieldTools>],
+) -> Vec<Draft<'a>> {
+    let mut out: Vec<Draft> = Vec::new();
+    for (i, h) in holes.iter().enumerate() {
+        let Some(t) = h
+            .drill
+            .as_ref()
+            .and_then(|n| lib.tools.iter().find(|t| &t.name == n))
+        else {
+            continue;
+        };
+        let mut first = None;
+        let mut volume = 0.0;
+        for (k, l) in layers.iter().enumerate() {
+            for (f, ft) in l.fields.iter().zip(&field_tools[k]) {
+                if ft.drilled.as_deref() == Some(h.id.as_str()) {
+                    first.get_or_insert(k);
+                    volume += f.area_mm2 * (l.z_top_mm - l.z_bottom_mm);
+                }
+            }
+        }
+        let Some(first) = first else { continue };
+        let d = match out
+            .iter_mut()
+            .find(|d| d.tool.name == t.name && d.drill == Some(h.kind))
+        {
+            Some(d) => d,
+            None => {
+                out.push(Draft {
+                    tool: t,
+                    layer: first,
+                    stage: Stage::Drill,
+                    fields: Vec::new(),
+                    adjacency: Adjacency::Side,
+                    area: 0.0,
+                    regions: None,
+                    floor: 0.0,
+                    drill: Some(h.kind),
+                    holes: Vec::new(),
+                    drilled_mm3: 0.0,
+                    entry_mm: f64::NEG_INFINITY,
+                });
+                out.last_mut().expect("just pushed")
+            }
+        };
+        d.layer = d.layer.min(first);
+        d.holes.push(i);
+        d.area += std::f64::consts::FRAC_PI_4 * h.diameter_mm.powi(2);
+        d.drilled_mm3 += volume;
+        d.entry_mm = d.entry_mm.max(h.z_top_mm);
+    }
+    out
 }
 
 /// Tool `t`'s operation at `stage` in layer `k`, if it has work there.
@@ -249,6 +357,10 @@ fn draft<'a>(
         area: 0.0,
         regions: (stage != Stage::Finish).then(Regions::default),
         floor: 0.0,
+        drill: None,
+        holes: Vec::new(),
+        drilled_mm3: 0.0,
+        entry_mm: 0.0,
     };
     let (mut side, mut bottom) = (false, false);
     for (j, ft) in fts.iter().enumerate() {
@@ -259,6 +371,7 @@ fn draft<'a>(
             Stage::Rough => s.first,
             Stage::SemiFinish => !s.first,
             Stage::Finish => s.floor_mm2 > tiny && !layer.floors.is_empty(),
+            Stage::Drill => false,
         };
         if !works {
             continue;
@@ -292,7 +405,16 @@ fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
 }
 
 impl Draft<'_> {
-    fn operation(&self, step: usize, l: &RoughingLayer, after: Vec<usize>) -> Operation {
+    fn operation(
+        &self,
+        step: usize,
+        l: &RoughingLayer,
+        sites: &[HoleSite],
+        after: Vec<usize>,
+    ) -> Operation {
+        if self.stage == Stage::Drill {
+            return self.drilling(step, sites, after);
+        }
         let h = l.z_top_mm - l.z_bottom_mm;
         // The floors' finishing layer, never more than the layer.
         let skin = self.tool.finish_axial_depth_mm.min(h);
@@ -330,6 +452,41 @@ impl Draft<'_> {
             volume_mm3: volume,
             time_min: time,
             after,
+            drill: None,
+            holes: Vec::new(),
+        }
+    }
+
+    fn drilling(&self, step: usize, sites: &[HoleSite], after: Vec<usize>) -> Operation {
+        let holes: Vec<&HoleSite> = self.holes.iter().map(|&i| &sites[i]).collect();
+        let top = holes
+            .iter()
+            .map(|h| h.z_top_mm)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let bottom = holes
+            .iter()
+            .map(|h| h.z_bottom_mm)
+            .fold(f64::INFINITY, f64::min);
+        Operation {
+            step,
+            stage: Stage::Drill,
+            tool: self.tool.name.clone(),
+            diameter_mm: self.tool.diameter_mm,
+            layer: self.layer,
+            z_top_mm: top,
+            z_bottom_mm: bottom,
+            fields: Vec::new(),
+            adjacency: self.adjacency,
+            area_mm2: self.area,
+            regions: None,
+            volume_mm3: self.drilled_mm3,
+            time_min: holes
+                .iter()
+                .map(|h| drilling_time_min(self.tool, h.z_top_mm - h.z_bottom_mm))
+                .sum(),
+            after,
+            drill: self.drill,
+            holes: holes.iter().map(|h| h.id.clone()).collect(),
         }
     }
 }
@@ -356,12 +513,22 @@ fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
 /// Edges from each operation to those that must follow it (module
 /// docs): between layers by `nested`; within a layer and a field from
 /// larger tools to smaller, and from milling to the floor's finish.
-fn precedence(ops: &[Draft], nested: &[bool]) -> DiGraph<usize, ()> {
+fn precedence(ops: &[Draft], nested: &[bool], bottoms: &[f64], tol: f64) -> DiGraph<usize, ()> {
     let mut g = DiGraph::new();
     let nodes: Vec<NodeIndex> = (0..ops.len()).map(|i| g.add_node(i)).collect();
     for (i, d) in ops.iter().enumerate() {
         for (j, e) in ops.iter().enumerate() {
-            if i == j || e.stage == Stage::Finish {
+            if i == j || e.stage == Stage::Drill {
+                continue;
+            }
+            if d.stage == Stage::Drill {
+                // A drill enters once everything above its holes is gone.
+                if bottoms[e.layer] >= d.entry_mm - tol {
+                    g.add_edge(nodes[j], nodes[i], ());
+                }
+                continue;
+            }
+            if e.stage == Stage::Finish {
                 continue;
             }
             let larger = e.tool.diameter_mm > d.tool.diameter_mm;

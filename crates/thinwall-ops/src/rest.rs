@@ -80,6 +80,25 @@ pub struct FieldTools {
     pub rest: Vec<Vec<[f64; 2]>>,
     /// The widest piece of the rest, mm (0 when none).
     pub rest_width_mm: f64,
+    /// The hole (machining feature id) whose drill takes the whole field
+    /// instead of the end mills.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drilled: Option<String>,
+}
+
+impl FieldTools {
+    /// A field a drill takes whole: no end mill, no rest.
+    pub fn drilled(hole: &str) -> Self {
+        Self {
+            adjacency: Adjacency::Side,
+            entry: Entry::Ramp,
+            shares: Vec::new(),
+            rest_mm2: 0.0,
+            rest: Vec::new(),
+            rest_width_mm: 0.0,
+            drilled: Some(hole.to_string()),
+        }
+    }
 }
 
 /// The field as a polygon, and its part and blank edges as segments.
@@ -306,6 +325,7 @@ pub fn select(
         } else {
             Vec::new()
         },
+        drilled: None,
     }
 }
 

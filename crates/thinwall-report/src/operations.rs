@@ -42,7 +42,7 @@ impl OperationsReport {
             tools,
             setup,
             not_yet: vec![
-                "drilling operations for holes (their material is roughed with the layers)".into(),
+                "holes no drill of the library matches are milled with the layers (no helical or boring subtype)".into(),
                 "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
                 "the plan's sequence constraints between stiffness features in the order".into(),
             ],
@@ -124,7 +124,14 @@ impl OperationsReport {
         let small: usize = r
             .layers
             .iter()
-            .map(|l| l.fields.iter().filter(|f| f.too_small).count())
+            .zip(&r.field_tools)
+            .map(|(l, fts)| {
+                l.fields
+                    .iter()
+                    .zip(fts)
+                    .filter(|(f, ft)| f.too_small && ft.drilled.is_none())
+                    .count()
+            })
             .sum();
         if small > 0 {
             let _ = writeln!(s, "{small} field(s) narrower than the smallest tool");

@@ -1,0 +1,137 @@
+//! Holes to drill (Cohen et al.: holes with subtypes, one drill per
+//! diameter): every hole the machining features find along the set-up's
+//! tool axis whose diameter a drill of the library matches. Its material
+//! leaves the milling layers (the cutter fields that lie within its
+//! circle over its depth) and becomes one drilling operation per drill and
+//! subtype.
+
+use crate::tools::{CuttingTool, ToolLibrary};
+use serde::Serialize;
+use thinwall_analysis::MachiningKind;
+use thinwall_geom::{Frame, Point3, Vector3};
+use thinwall_machining::MachiningFeature;
+
+/// A drill matches a hole when their diameters differ by no more, mm.
+pub const DRILL_MATCH_MM: f64 = 0.05;
+
+/// A hole deeper than this many diameters is peck drilled.
+pub const PECK_DEPTH_RATIO: f64 = 4.0;
+
+/// How a hole is drilled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DrillKind {
+    /// Through the part.
+    Through,
+    /// To a bottom, the drill's point left in it.
+    Blind,
+    /// Deeper than [`PECK_DEPTH_RATIO`] diameters: drilled in pecks to
+    /// clear the chips.
+    Peck,
+}
+
+/// A hole along the set-up's axis, in the removal frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct HoleSite {
+    /// The machining feature's id (`M…`).
+    pub id: String,
+    /// Its axis in the frame's (x, y), mm.
+    pub centre: [f64; 2],
+    pub diameter_mm: f64,
+    /// Where the drill enters and the hole's bottom along up, mm.
+    pub z_top_mm: f64,
+    pub z_bottom_mm: f64,
+    pub kind: DrillKind,
+    /// The drill of the library that makes it, if one matches.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drill: Option<String>,
+}
+
+impl HoleSite {
+    /// Whether the point (x, y) lies within its circle, with a margin for
+    /// the polygon the removal made of it.
+    pub fn holds(&self, p: [f64; 2], tol: f64) -> bool {
+        let r = 0.5 * self.diameter_mm * 1.02 + tol;
+        (p[0] - self.centre[0]).hypot(p[1] - self.centre[1]) <= r
+    }
+}
+
+/// The holes of `features` the tool drills from up in `frame` (z = up),
+/// each with the library's matching drill, if any.
+pub fn hole_sites(
+    features: &[MachiningFeature],
+    frame: &Frame,
+    lib: &ToolLibrary,
+) -> Vec<HoleSite> {
+    let drills: Vec<&CuttingTool> = lib.drills().collect();
+    features
+        .iter()
+        .filter(|m| m.kind == MachiningKind::Hole && m.reachable != Some(false))
+        .filter_map(|m| {
+            let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
+            // The tool goes down into the hole (its direction −up); a
+            // through hole entered from below is drilled from up all the
+            // same, from its other end.
+            let down = dir.dot(&frame.z) < -1.0 + 1e-6;
+            let from_below = m.through && dir.dot(&frame.z) > 1.0 - 1e-6;
+            if !(down || from_below) {
+                return None;
+            }
+            let c = m.centre?;
+            let d = Point3::new(c[0], c[1], c[2]) - frame.origin;
+            let entry = d.dot(&frame.z);
+            let top = if down { entry } else { entry + m.depth };
+            let diameter = m.width;
+            if !(diameter > 0.0 && m.depth > 0.0) {
+                return None;
+            }
+            // Exactly 4 Ø deep is not deeper, whatever the rounding.
+            let kind = if m.depth > PECK_DEPTH_RATIO * diameter * (1.0 + 1e-9) {
+                DrillKind::Peck
+            } else if m.through {
+                DrillKind::Through
+            } else {
+                DrillKind::Blind
+            };
+            Some(HoleSite {
+                id: m.id.to_string(),
+                centre: [d.dot(&frame.x), d.dot(&frame.y)],
+                diameter_mm: diameter,
+                z_top_mm: top,
+                z_bottom_mm: top - m.depth,
+                kind,
+                drill: drills
+                    .iter()
+                    .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)
+                    .min_by(|a, b| {
+                        (a.diameter_mm - diameter)
+                            .abs()
+                            .total_cmp(&(b.diameter_mm - diameter).abs())
+                    })
+                    .map(|t| t.name.clone()),
+            })
+        })
+        .collect()
+}
+
+/// Drilling time of one hole: its depth at the drill's feed v_f, min.
+pub fn drilling_time_min(t: &CuttingTool, depth_mm: f64) -> f64 {
+    depth_mm / t.feed_mm_min()
+}
+
+/// The holes of the analysed part along its set-up's axis (`frame.z`),
+/// found by the machining recognizer with that axis.
+pub fn holes_of(
+    a: &thinwall_analysis::PartAnalysis,
+    frame: &Frame,
+    lib: &ToolLibrary,
+) -> Result<Vec<HoleSite>, thinwall_machining::MachiningError> {
+    let features = thinwall_machining::recognize_with(
+        a,
+        &thinwall_machining::Options {
+            up: Some(frame.z),
+            ..Default::default()
+        },
+    )?;
+    Ok(hole_sites(&features, frame, lib))
+}
