@@ -221,6 +221,52 @@ int main(int argc, char **argv) {
     failures += check(tw_plan(part, NULL, "[[rule]]\nname = 1\n", &bad) == TW_ERR_INVALID_CONFIG && bad == NULL,
                       "a bad rule text is an invalid config");
 
+    /* Operations of the set-up with a shop's two end mills (NULL would
+       take the shipped library). */
+    static const char *two_mills =
+        "[[tool]]\nname = \"EM20\"\nkind = \"flat_end_mill\"\ndiameter = 20.0\ncorner_radius = 1.0\n"
+        "cutting_length = 45.0\nstick_out = 75.0\nteeth = 3\ncutting_speed_m_min = 700.0\n"
+        "feed_per_tooth_mm = 0.12\naxial_depth_mm = 10.0\nradial_depth_mm = 12.0\n"
+        "[[tool]]\nname = \"EM8\"\nkind = \"flat_end_mill\"\ndiameter = 8.0\n"
+        "cutting_length = 24.0\nstick_out = 40.0\nteeth = 3\ncutting_speed_m_min = 600.0\n"
+        "feed_per_tooth_mm = 0.05\naxial_depth_mm = 4.0\nradial_depth_mm = 4.0\n";
+    tw_operations_result *ops = NULL;
+    st = tw_operations(part, NULL, two_mills, 0.0, &ops);
+    if (st == TW_ERR_UNSUPPORTED) {
+        printf("operations: not yet for this part: %s\n", tw_last_error_message());
+    } else {
+        failures += check(st == TW_OK && ops != NULL, "operations planned");
+    }
+    if (ops) {
+        size_t no = tw_operations_count(ops), drills = 0;
+        double minutes = 0.0, volume = 0.0;
+        for (size_t i = 0; i < no; i++) {
+            tw_stage stage;
+            double d = 0.0, top = 0.0, bottom = 0.0, area = -1.0, vol = -1.0, t = -1.0;
+            failures += check(tw_operation(ops, i, &stage, &d, &top, &bottom, &area, &vol, &t) == TW_OK,
+                              "operation read");
+            failures += check(d > 0.0 && top >= bottom && area >= 0.0 && vol >= 0.0 && t >= 0.0,
+                              "operation figures");
+            failures += check(tw_operation_tool(ops, i) != NULL, "operation tool named");
+            drills += stage == TW_STAGE_DRILL ? 1 : 0;
+            minutes += t;
+            volume += vol;
+        }
+        size_t changes = 0, plain = 0;
+        failures += check(tw_operations_tool_changes(ops, &changes, &plain) == TW_OK && changes <= plain,
+                          "no more tool changes than the plain order");
+        printf("operations: %zu (%zu drilling), %zu tool changes (%zu plain), %.1f mm3, %.2f min\n", no,
+               drills, changes, plain, volume, minutes);
+        failures += check(tw_operation(ops, no, NULL, NULL, NULL, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE &&
+                              tw_operation_tool(ops, no) == NULL,
+                          "operation past the end is out of range");
+        tw_operations_free(ops);
+    }
+    tw_operations_result *bad_ops = NULL;
+    failures += check(tw_operations(part, NULL, "[[tool]]\nname = \"X\"\n", 0.0, &bad_ops) == TW_ERR_INVALID_CONFIG &&
+                          bad_ops == NULL,
+                      "a bad tool library is an invalid config");
+
     /* Optional: classify volumes given after the part (removed in order). */
     if (argc > 2) {
         size_t nv = (size_t)(argc - 2);

@@ -61,6 +61,18 @@ typedef enum tw_relation {
   TW_RELATION_SIMULTANEOUS = 1,
 } tw_relation;
 
+// What an operation does.
+typedef enum tw_stage {
+  // A field's first (largest) end mill.
+  TW_STAGE_ROUGH = 0,
+  // A smaller end mill in what larger ones left (rest machining).
+  TW_STAGE_SEMI_FINISH = 1,
+  // A floor's finishing layer.
+  TW_STAGE_FINISH = 2,
+  // Holes with a drill.
+  TW_STAGE_DRILL = 3,
+} tw_stage;
+
 // What a call did. Values are never reused for another meaning.
 typedef enum tw_status {
   // Success.
@@ -93,6 +105,10 @@ typedef enum tw_status {
   TW_ERR_RECOGNITION = 12,
   // A removal sequence names volumes that are not there.
   TW_ERR_INVALID_SEQUENCE = 13,
+  // The part has geometry the computation does not take yet (a face
+  // that is no graph over the set-up plane, for operations); the
+  // message names the face.
+  TW_ERR_UNSUPPORTED = 14,
   // Thinwall failed internally; the message says how.
   TW_ERR_INTERNAL = 98,
   // Thinwall panicked; the panic was caught at the boundary.
@@ -106,6 +122,10 @@ typedef struct tw_access_result tw_access_result;
 // The classification of some volumes (opaque). Immutable; safe to share
 // between threads. Strings it returns live as long as it does.
 typedef struct tw_classification tw_classification;
+
+// A set-up's operations (opaque). Immutable; safe to share between
+// threads.
+typedef struct tw_operations_result tw_operations_result;
 
 // Recognition settings (opaque): the set-up, the recognition settings and
 // the connection options. Defaults: up +Z, 3-axis machine, Popma's sizing
@@ -222,6 +242,56 @@ void tw_classification_free(struct tw_classification *res);
 // The message of the last failed call on this thread ("" after a success).
 // Valid until the next Thinwall call on this thread; never NULL.
 const char *tw_last_error_message(void);
+
+// Plan the operations of `part` in the set-up of `opt` (NULL for the
+// defaults: up +Z) with the tool library `tools_toml` (TOML text as
+// `thinwall operations --tools` reads; NULL for the shipped library) and
+// an axial depth of cut `axial_depth` mm between levels (0 for the largest
+// end mill's). A bad library is `TW_ERR_INVALID_CONFIG` with the line; a
+// negative depth `TW_ERR_INVALID_ARGUMENT`; a face the removal cannot take
+// yet `TW_ERR_UNSUPPORTED`. A part with nothing to remove gives an empty
+// list. On success `*out` owns a result to free with
+// `tw_operations_free`.
+enum tw_status tw_operations(const struct tw_part *part,
+                             const struct tw_options *opt,
+                             const char *tools_toml,
+                             double axial_depth,
+                             struct tw_operations_result **out);
+
+// Free an operations result. NULL is allowed.
+void tw_operations_free(struct tw_operations_result *result);
+
+// The result as JSON (`thinwall/operations/1`, as the CLI prints it).
+// `*out_json` is a new string to free with `tw_string_free`.
+enum tw_status tw_operations_to_json(const struct tw_operations_result *result, char **out_json);
+
+// Number of operations, in their order (0 for NULL or nothing to remove).
+size_t tw_operations_count(const struct tw_operations_result *result);
+
+// Tool changes of the chosen order and of the plain layer-by-layer one.
+// Any out-pointer may be NULL.
+enum tw_status tw_operations_tool_changes(const struct tw_operations_result *result,
+                                          size_t *changes,
+                                          size_t *plain);
+
+// Operation `i` (in order): its stage, tool diameter (mm), z range along
+// up in the removal frame (mm), area (mm²: what it clears, the floor it
+// finishes or its holes' cross-sections), volume (mm³) and estimated time
+// (min). Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the
+// count.
+enum tw_status tw_operation(const struct tw_operations_result *result,
+                            size_t i,
+                            enum tw_stage *stage,
+                            double *diameter_mm,
+                            double *z_top_mm,
+                            double *z_bottom_mm,
+                            double *area_mm2,
+                            double *volume_mm3,
+                            double *time_min);
+
+// Operation `i`'s tool name from the library (owned by the result), or
+// NULL past the count or for a NULL result.
+const char *tw_operation_tool(const struct tw_operations_result *result, size_t i);
 
 // New options with the defaults; free with `tw_options_free`.
 enum tw_status tw_options_new(struct tw_options **out);

@@ -38,6 +38,10 @@ pub enum tw_status {
     TW_ERR_RECOGNITION = 12,
     /// A removal sequence names volumes that are not there.
     TW_ERR_INVALID_SEQUENCE = 13,
+    /// The part has geometry the computation does not take yet (a face
+    /// that is no graph over the set-up plane, for operations); the
+    /// message names the face.
+    TW_ERR_UNSUPPORTED = 14,
     /// Thinwall failed internally; the message says how.
     TW_ERR_INTERNAL = 98,
     /// Thinwall panicked; the panic was caught at the boundary.

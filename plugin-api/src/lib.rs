@@ -11,6 +11,7 @@
 mod access;
 mod classify;
 mod error;
+mod operations;
 mod options;
 mod part;
 mod plan;
@@ -19,6 +20,7 @@ mod result;
 pub use access::*;
 pub use classify::*;
 pub use error::{tw_last_error_message, tw_status};
+pub use operations::*;
 pub use options::*;
 pub use part::*;
 pub use plan::*;

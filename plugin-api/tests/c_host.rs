@@ -157,6 +157,10 @@ fn c_host_compiles_runs_and_reads_results() {
         stdout.contains("flank milling: ") && stdout.contains(" planar faces advisable"),
         "access printed: {stdout}"
     );
+    assert!(
+        stdout.contains("operations: ") && stdout.contains(" tool changes ("),
+        "operations printed: {stdout}"
+    );
     valgrind_clean(&out, &[fixture()]);
     // Classification of two stacked volumes, upper removed first.
     let case = crate_dir().join("../fixtures/classify/stacked");

@@ -3,8 +3,6 @@
 
 use crate::failure::Failure;
 use std::path::{Path, PathBuf};
-use thinwall_geom::Vector3;
-use thinwall_plan::removal::{frame_of, Removal, StockShape};
 
 /// What the command was asked.
 pub struct OperationsArgs {
@@ -37,12 +35,6 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
         }
     }
     let lib = library(args.tools.as_deref())?;
-    if lib.end_mills().next().is_none() {
-        return Err(Failure::Usage(format!(
-            "{}: the library has no end mill to rough with",
-            lib.source
-        )));
-    }
     let (model, _) = thinwall_step::read_file(&args.part)?;
     let setup = thinwall_analysis::Setup::new(
         args.up.unwrap_or([0.0, 0.0, 1.0]),
@@ -50,24 +42,15 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
     )
     .map_err(Failure::usage)?;
     let a = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
-    let up = Vector3::from(setup.up).normalize();
-    let (frame, lo, hi) = frame_of(&a, up);
-    let size = a.bounding_box().diagonal();
-    let removal = Removal::new(&model, frame, &StockShape::Block { lo, hi }, &[], size)
-        .map_err(|e| Failure::Input(format!("removal.{}: {e}", e.code())))?;
-    let holes = thinwall_ops::drilling::holes_of(&a, &frame, &lib)
-        .map_err(|e| Failure::Input(format!("machining.{}: {e}", e.code())))?;
-    let setup_ops = thinwall_ops::operations::operations(&removal, &lib, args.axial_depth, &holes);
-    let v = |p: Vector3| [p.x, p.y, p.z];
+    let (frame, setup_ops) =
+        thinwall_ops::plan_setup(&a, &lib, args.axial_depth).map_err(|e| match e {
+            thinwall_ops::OpsError::NoEndMill { .. } => Failure::Usage(e.to_string()),
+            _ => Failure::Input(format!("{}: {e}", e.code())),
+        })?;
     let report = thinwall_report::operations::OperationsReport::new(
         &args.part.display().to_string(),
         setup.up,
-        [
-            [frame.origin.x, frame.origin.y, frame.origin.z],
-            v(frame.x),
-            v(frame.y),
-            v(frame.z),
-        ],
+        &frame,
         lib,
         setup_ops,
     );

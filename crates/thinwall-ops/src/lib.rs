@@ -1,12 +1,16 @@
 //! The operations planner layer (issue 17): what a CAM programmer would
-//! recognise. So far the tool library ([`tools`]) and the roughing layers
-//! with their cutter fields over the removal region ([`layers`],
-//! Schuster ch. 4–5).
+//! recognise. The tool library ([`tools`]), the roughing layers with their
+//! cutter fields over the removal region ([`layers`], Schuster ch. 4–5),
+//! tools with rest areas and Popma's regions ([`rest`]), holes to drill
+//! ([`drilling`]), operations by stage in order ([`operations`]), and the
+//! whole run for a set-up ([`setup`]).
 
 pub mod drilling;
 pub mod layers;
 pub mod operations;
 pub mod rest;
+pub mod setup;
 pub mod tools;
 
+pub use setup::{plan_setup, OpsError};
 pub use tools::{CuttingTool, ToolKind, ToolLibrary, ToolsError};

@@ -26,19 +26,22 @@ pub struct OperationsReport {
 }
 
 impl OperationsReport {
+    /// The report of `setup`, planned in the removal `frame`.
     pub fn new(
         part: &str,
         up: [f64; 3],
-        frame: [[f64; 3]; 4],
+        frame: &thinwall_geom::Frame,
         tools: ToolLibrary,
         setup: SetupOperations,
     ) -> Self {
+        let v = |p: thinwall_geom::Vector3| [p.x, p.y, p.z];
+        let o = frame.origin;
         Self {
             schema: OPERATIONS_SCHEMA.to_string(),
             thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
             part: part.to_string(),
             up,
-            frame,
+            frame: [[o.x, o.y, o.z], v(frame.x), v(frame.y), v(frame.z)],
             tools,
             setup,
             not_yet: vec![

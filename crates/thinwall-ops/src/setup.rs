@@ -1,0 +1,57 @@
+//! The operations of one set-up from the analysed part, as the CLI and the
+//! C ABI run them: the removal (stock = the part's oriented box, minus the
+//! part), the holes along the tool axis, then [`operations`].
+
+use crate::drilling::holes_of;
+use crate::operations::{operations, SetupOperations};
+use crate::ToolLibrary;
+use thinwall_analysis::PartAnalysis;
+use thinwall_geom::{Frame, Vector3};
+use thinwall_plan::removal::{frame_of, Removal, RemovalError, StockShape};
+use thiserror::Error;
+
+/// Why a set-up's operations could not be planned.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum OpsError {
+    #[error("{library}: the library has no end mill to rough with")]
+    NoEndMill { library: String },
+    /// Stock − part could not be decomposed (a face that is no graph over
+    /// the set-up plane).
+    #[error("{0}")]
+    Removal(#[from] RemovalError),
+    #[error("{0}")]
+    Machining(#[from] thinwall_machining::MachiningError),
+}
+
+impl OpsError {
+    /// A stable machine-readable code: `tools.no_end_mill`,
+    /// `removal.<kind>` or `machining.<kind>`.
+    pub fn code(&self) -> String {
+        match self {
+            OpsError::NoEndMill { .. } => "tools.no_end_mill".to_string(),
+            OpsError::Removal(e) => format!("removal.{}", e.code()),
+            OpsError::Machining(e) => format!("machining.{}", e.code()),
+        }
+    }
+}
+
+/// The operations of `a`'s set-up with `lib` (the stock is the part's
+/// oriented box), and the removal frame their contours are in.
+pub fn plan_setup(
+    a: &PartAnalysis,
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> Result<(Frame, SetupOperations), OpsError> {
+    if lib.end_mills().next().is_none() {
+        return Err(OpsError::NoEndMill {
+            library: lib.source.clone(),
+        });
+    }
+    let up = Vector3::from(a.setup().up).normalize();
+    let (frame, lo, hi) = frame_of(a, up);
+    let size = a.bounding_box().diagonal();
+    let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
+    let holes = holes_of(a, &frame, lib)?;
+    Ok((frame, operations(&removal, lib, axial_depth_mm, &holes)))
+}

@@ -1,0 +1,297 @@
+//! `tw_operations`: the operations of a set-up (issue 17): layers, cutter
+//! fields, tools with rest areas and regions, floors' finishing and holes
+//! drilled, in order, with per-operation accessors and the same JSON as
+//! `thinwall operations`.
+
+use crate::error::{construct, count, cstring, guard, json_into, null, string_at, tw_status};
+use crate::options::tw_options;
+use crate::part::tw_part;
+use std::ffi::{c_char, CStr, CString};
+use thinwall_analysis::PartAnalysis;
+use thinwall_ops::operations::Stage;
+use thinwall_ops::{OpsError, ToolLibrary};
+use thinwall_report::operations::OperationsReport;
+
+/// A set-up's operations (opaque). Immutable; safe to share between
+/// threads.
+pub struct tw_operations_result {
+    report: OperationsReport,
+    tools: Vec<CString>,
+}
+
+/// What an operation does.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum tw_stage {
+    /// A field's first (largest) end mill.
+    TW_STAGE_ROUGH = 0,
+    /// A smaller end mill in what larger ones left (rest machining).
+    TW_STAGE_SEMI_FINISH = 1,
+    /// A floor's finishing layer.
+    TW_STAGE_FINISH = 2,
+    /// Holes with a drill.
+    TW_STAGE_DRILL = 3,
+}
+
+/// The library of `tools_toml` (UTF-8 TOML text as the `--tools` file), or
+/// the shipped one for NULL.
+unsafe fn library(tools_toml: *const c_char) -> Result<ToolLibrary, (tw_status, String)> {
+    if tools_toml.is_null() {
+        return Ok(ToolLibrary::default_tools());
+    }
+    let text = CStr::from_ptr(tools_toml).to_str().map_err(|e| {
+        (
+            tw_status::TW_ERR_INVALID_ARGUMENT,
+            format!("tools_toml is not UTF-8: {e}"),
+        )
+    })?;
+    ToolLibrary::from_toml(text, "tools_toml").map_err(|e| {
+        (
+            tw_status::TW_ERR_INVALID_CONFIG,
+            format!("{}: {e}", e.code()),
+        )
+    })
+}
+
+/// Plan the operations of `part` in the set-up of `opt` (NULL for the
+/// defaults: up +Z) with the tool library `tools_toml` (TOML text as
+/// `thinwall operations --tools` reads; NULL for the shipped library) and
+/// an axial depth of cut `axial_depth` mm between levels (0 for the largest
+/// end mill's). A bad library is `TW_ERR_INVALID_CONFIG` with the line; a
+/// negative depth `TW_ERR_INVALID_ARGUMENT`; a face the removal cannot take
+/// yet `TW_ERR_UNSUPPORTED`. A part with nothing to remove gives an empty
+/// list. On success `*out` owns a result to free with
+/// `tw_operations_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations(
+    part: *const tw_part,
+    opt: *const tw_options,
+    tools_toml: *const c_char,
+    axial_depth: f64,
+    out: *mut *mut tw_operations_result,
+) -> tw_status {
+    construct(out, || {
+        if part.is_null() {
+            return Err(null("part"));
+        }
+        let depth = if axial_depth == 0.0 {
+            None
+        } else if axial_depth.is_finite() && axial_depth > 0.0 {
+            Some(axial_depth)
+        } else {
+            return Err((
+                tw_status::TW_ERR_INVALID_ARGUMENT,
+                format!("axial_depth must be a positive length, got {axial_depth}"),
+            ));
+        };
+        let lib = library(tools_toml)?;
+        let defaults = tw_options::default();
+        let o = if opt.is_null() { &defaults } else { &*opt };
+        let p = &*part;
+        let setup = o.request.setup.clone();
+        let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
+        let (frame, ops) = thinwall_ops::plan_setup(&a, &lib, depth).map_err(|e| {
+            let status = match e {
+                OpsError::NoEndMill { .. } => tw_status::TW_ERR_INVALID_CONFIG,
+                OpsError::Removal(_) => tw_status::TW_ERR_UNSUPPORTED,
+                _ => tw_status::TW_ERR_INTERNAL,
+            };
+            (status, format!("{}: {e}", e.code()))
+        })?;
+        let tools = ops.operations.iter().map(|o| cstring(&o.tool)).collect();
+        Ok(tw_operations_result {
+            report: OperationsReport::new(&p.name, setup.up, &frame, lib, ops),
+            tools,
+        })
+    })
+}
+
+/// Free an operations result. NULL is allowed.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_free(result: *mut tw_operations_result) {
+    crate::error::free(result)
+}
+
+/// The result as JSON (`thinwall/operations/1`, as the CLI prints it).
+/// `*out_json` is a new string to free with `tw_string_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_to_json(
+    result: *const tw_operations_result,
+    out_json: *mut *mut c_char,
+) -> tw_status {
+    json_into(result, out_json, |r| r.report.to_json())
+}
+
+/// Number of operations, in their order (0 for NULL or nothing to remove).
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_count(result: *const tw_operations_result) -> usize {
+    count(result, |r| r.report.setup.operations.len())
+}
+
+/// Tool changes of the chosen order and of the plain layer-by-layer one.
+/// Any out-pointer may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_tool_changes(
+    result: *const tw_operations_result,
+    changes: *mut usize,
+    plain: *mut usize,
+) -> tw_status {
+    guard(|| {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let s = &(*result).report.setup;
+        if !changes.is_null() {
+            *changes = s.tool_changes;
+        }
+        if !plain.is_null() {
+            *plain = s.plain_tool_changes;
+        }
+        Ok(())
+    })
+}
+
+/// Operation `i` (in order): its stage, tool diameter (mm), z range along
+/// up in the removal frame (mm), area (mm²: what it clears, the floor it
+/// finishes or its holes' cross-sections), volume (mm³) and estimated time
+/// (min). Any out-pointer may be NULL. `TW_ERR_OUT_OF_RANGE` past the
+/// count.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operation(
+    result: *const tw_operations_result,
+    i: usize,
+    stage: *mut tw_stage,
+    diameter_mm: *mut f64,
+    z_top_mm: *mut f64,
+    z_bottom_mm: *mut f64,
+    area_mm2: *mut f64,
+    volume_mm3: *mut f64,
+    time_min: *mut f64,
+) -> tw_status {
+    guard(|| {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let ops = &(*result).report.setup.operations;
+        let o = ops.get(i).ok_or((
+            tw_status::TW_ERR_OUT_OF_RANGE,
+            format!("operation {i} out of range ({} operations)", ops.len()),
+        ))?;
+        let put = |p: *mut f64, v: f64| {
+            if !p.is_null() {
+                *p = v;
+            }
+        };
+        if !stage.is_null() {
+            *stage = match o.stage {
+                Stage::Rough => tw_stage::TW_STAGE_ROUGH,
+                Stage::SemiFinish => tw_stage::TW_STAGE_SEMI_FINISH,
+                Stage::Finish => tw_stage::TW_STAGE_FINISH,
+                Stage::Drill => tw_stage::TW_STAGE_DRILL,
+            };
+        }
+        put(diameter_mm, o.diameter_mm);
+        put(z_top_mm, o.z_top_mm);
+        put(z_bottom_mm, o.z_bottom_mm);
+        put(area_mm2, o.area_mm2);
+        put(volume_mm3, o.volume_mm3);
+        put(time_min, o.time_min);
+        Ok(())
+    })
+}
+
+/// Operation `i`'s tool name from the library (owned by the result), or
+/// NULL past the count or for a NULL result.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operation_tool(
+    result: *const tw_operations_result,
+    i: usize,
+) -> *const c_char {
+    string_at(result, |r| r.tools.get(i))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::part::{tw_part_free, tw_part_load_file};
+
+    unsafe fn load(name: &str) -> *mut tw_part {
+        let path = format!("{}/../fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
+        let c = CString::new(path).unwrap();
+        let mut part = std::ptr::null_mut();
+        assert_eq!(tw_part_load_file(c.as_ptr(), &mut part), tw_status::TW_OK);
+        part
+    }
+
+    /// The drill plate's operations through the ABI: the four drilling
+    /// operations, and the same count and order as the report's JSON; a
+    /// tilted cylinder is `TW_ERR_UNSUPPORTED` naming the face; a tool
+    /// file with a negative diameter `TW_ERR_INVALID_CONFIG` with its
+    /// line; a negative depth an invalid argument. Out stays NULL on
+    /// failure.
+    #[test]
+    fn operations_through_the_abi_and_their_errors() {
+        unsafe {
+            let plate = load("ops/drill_plate.step");
+            let mut ops = std::ptr::null_mut();
+            let st = tw_operations(plate, std::ptr::null(), std::ptr::null(), 0.0, &mut ops);
+            assert_eq!(st, tw_status::TW_OK);
+            let n = tw_operations_count(ops);
+            let mut drills = 0;
+            for i in 0..n {
+                let mut stage = tw_stage::TW_STAGE_ROUGH;
+                let st = tw_operation(
+                    ops,
+                    i,
+                    &mut stage,
+                    std::ptr::null_mut(),
+                    std::ptr::null_mut(),
+                    std::ptr::null_mut(),
+                    std::ptr::null_mut(),
+                    std::ptr::null_mut(),
+                    std::ptr::null_mut(),
+                );
+                assert_eq!(st, tw_status::TW_OK);
+                drills += usize::from(stage == tw_stage::TW_STAGE_DRILL);
+            }
+            assert_eq!(drills, 4);
+            let name = CStr::from_ptr(tw_operation_tool(ops, 0)).to_str().unwrap();
+            let first = &(&*ops).report.setup.operations[0];
+            assert_eq!(name, first.tool);
+            assert!(tw_operation_tool(ops, n).is_null());
+            tw_operations_free(ops);
+
+            let mut bad = std::ptr::null_mut();
+            let toml = CString::new(
+                "[[tool]]\nname = \"X\"\nkind = \"flat_end_mill\"\ndiameter = -4.0\ncutting_length = 10.0\nstick_out = 20.0\nteeth = 2\ncutting_speed_m_min = 300.0\nfeed_per_tooth_mm = 0.05\naxial_depth_mm = 2.0\nradial_depth_mm = 2.0\n",
+            )
+            .unwrap();
+            let st = tw_operations(plate, std::ptr::null(), toml.as_ptr(), 0.0, &mut bad);
+            assert_eq!(st, tw_status::TW_ERR_INVALID_CONFIG);
+            assert!(bad.is_null());
+            let msg = CStr::from_ptr(crate::tw_last_error_message())
+                .to_str()
+                .unwrap();
+            assert!(
+                msg.contains("tools_toml:1") && msg.contains("diameter"),
+                "{msg}"
+            );
+            let st = tw_operations(plate, std::ptr::null(), std::ptr::null(), -1.0, &mut bad);
+            assert_eq!(st, tw_status::TW_ERR_INVALID_ARGUMENT);
+            tw_part_free(plate);
+
+            let turned = load("recognition/rib_grid_panel_turned.step");
+            let st = tw_operations(turned, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
+            assert_eq!(st, tw_status::TW_ERR_UNSUPPORTED);
+            assert!(bad.is_null());
+            let msg = CStr::from_ptr(crate::tw_last_error_message())
+                .to_str()
+                .unwrap();
+            assert!(
+                msg.starts_with("removal.unsupported_face") && msg.contains('#'),
+                "{msg}"
+            );
+            tw_part_free(turned);
+        }
+    }
+}
