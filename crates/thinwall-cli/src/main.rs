@@ -196,6 +196,12 @@ enum Command {
         /// Depth of cut between levels, mm (default: the largest end mill's).
         #[arg(long, allow_hyphen_values = true)]
         axial_depth: Option<f64>,
+        /// Follow the plan: each machining feature of `thinwall plan`
+        /// (step-approach layers, bulk) layered and tooled on its own, in
+        /// an order that keeps every relation of the plan (no drilling
+        /// yet). Default: the whole removal layered at once.
+        #[arg(long)]
+        by_feature: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
@@ -679,6 +685,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             up,
             tools,
             axial_depth,
+            by_feature,
             format,
             output,
         } => {
@@ -687,6 +694,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 up,
                 tools,
                 axial_depth,
+                by_feature,
                 json: matches!(format, Format::Json),
             })?;
             write_to(output.as_deref(), &text)

@@ -10,6 +10,7 @@ pub struct OperationsArgs {
     pub up: Option<[f64; 3]>,
     pub tools: Option<PathBuf>,
     pub axial_depth: Option<f64>,
+    pub by_feature: bool,
     pub json: bool,
 }
 
@@ -42,11 +43,20 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
     )
     .map_err(Failure::usage)?;
     let a = thinwall_analysis::PartAnalysis::new(&model, setup.clone());
-    let (frame, setup_ops) =
-        thinwall_ops::plan_setup(&a, &lib, args.axial_depth).map_err(|e| match e {
-            thinwall_ops::OpsError::NoEndMill { .. } => Failure::Usage(e.to_string()),
-            _ => Failure::Input(format!("{}: {e}", e.code())),
-        })?;
+    let planned = if args.by_feature {
+        thinwall_ops::setup::plan_setup_by_feature(
+            &a,
+            &args.part.display().to_string(),
+            &lib,
+            args.axial_depth,
+        )
+    } else {
+        thinwall_ops::plan_setup(&a, &lib, args.axial_depth)
+    };
+    let (frame, setup_ops) = planned.map_err(|e| match e {
+        thinwall_ops::OpsError::NoEndMill { .. } => Failure::Usage(e.to_string()),
+        _ => Failure::Input(format!("{}: {e}", e.code())),
+    })?;
     let report = thinwall_report::operations::OperationsReport::new(
         &args.part.display().to_string(),
         setup.up,

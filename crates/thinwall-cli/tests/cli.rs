@@ -423,6 +423,16 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     for part in ["ops/pocket_islands.step", "ops/drill_plate.step"] {
         outputs.push(("operations", of(&["operations", "--format", "json"], part)));
     }
+    let by_feature = of(
+        &["operations", "--by-feature", "--format", "json"],
+        "recognition/notched_rib.step",
+    );
+    assert!(by_feature["setup"]["layers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|l| l["feature"].is_string()));
+    outputs.push(("operations", by_feature));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
         assert!(problems.is_empty(), "{problems:#?}");

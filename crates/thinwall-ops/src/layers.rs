@@ -84,6 +84,10 @@ impl CutterField {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct RoughingLayer {
     pub index: usize,
+    /// The plan's machining feature it belongs to, when the operations
+    /// follow the plan.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub feature: Option<String>,
     pub z_top_mm: f64,
     pub z_bottom_mm: f64,
     /// STEP ids of the part's flat faces facing up at the layer's bottom.
@@ -163,7 +167,11 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
         let fields: Vec<CutterField> = polygons
             .iter()
             .filter_map(|p| without_slivers(p, tol))
-            .map(|p| field(&p, r, &footprint, opts.smallest_tool_mm))
+            .map(|p| {
+                field(&p, 1e-4 * r.size.max(1.0), opts.smallest_tool_mm, &|q| {
+                    !footprint.holds(q)
+                })
+            })
             .collect();
         let floor_region = MultiPolygon::new(
             r.part_pieces
@@ -175,6 +183,7 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
         );
         out.push(RoughingLayer {
             index,
+            feature: None,
             z_top_mm: above,
             z_bottom_mm: z,
             floor_region: thinwall_access::reach::floor::union_all(
@@ -196,7 +205,7 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
 /// sections meet at a slant (a turned part): rings narrower on average
 /// than twice `tol` (area below `tol` times the perimeter); none if the
 /// outer ring is one.
-fn without_slivers(p: &Polygon<f64>, tol: f64) -> Option<Polygon<f64>> {
+pub(crate) fn without_slivers(p: &Polygon<f64>, tol: f64) -> Option<Polygon<f64>> {
     use geo::{Euclidean, Length};
     let sliver = |ring: &LineString<f64>| {
         let area = Polygon::new(ring.clone(), vec![]).unsigned_area();
@@ -265,8 +274,14 @@ impl Footprint {
     }
 }
 
-fn field(p: &Polygon<f64>, r: &Removal, stock: &Footprint, smallest: f64) -> CutterField {
-    let step = 1e-4 * r.size.max(1.0);
+/// The cutter field of polygon `p`: an edge is blank where the point
+/// just across it (`step` away) is `blank`, else part.
+pub(crate) fn field(
+    p: &Polygon<f64>,
+    step: f64,
+    smallest: f64,
+    blank: &dyn Fn(Coord<f64>) -> bool,
+) -> CutterField {
     let contour = |ring: &LineString<f64>| {
         let mut pts: Vec<Coord<f64>> = ring.0.clone();
         if pts.len() > 1 && pts.first() == pts.last() {
@@ -292,10 +307,10 @@ fn field(p: &Polygon<f64>, r: &Removal, stock: &Footprint, smallest: f64) -> Cut
                 } else {
                     across(1.0)
                 };
-                if stock.holds(out) {
-                    EdgeKind::Part
-                } else {
+                if blank(out) {
                     EdgeKind::Blank
+                } else {
+                    EdgeKind::Part
                 }
             })
             .collect();

@@ -8,6 +8,7 @@
 pub mod drilling;
 pub mod layers;
 pub mod operations;
+pub mod planned;
 pub mod rest;
 pub mod setup;
 pub mod tools;

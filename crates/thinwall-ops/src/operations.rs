@@ -126,6 +126,10 @@ pub struct SetupOperations {
     pub field_tools: Vec<Vec<FieldTools>>,
     pub operations: Vec<Operation>,
     pub rest: Vec<Rest>,
+    /// The plan's machining features left to another set-up (operations
+    /// along the plan only).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub other_setup: Vec<String>,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -141,31 +145,86 @@ pub fn operations(
     axial_depth_mm: Option<f64>,
     holes: &[HoleSite],
 ) -> SetupOperations {
-    let mills: Vec<&CuttingTool> = lib.end_mills().collect();
-    let a_p = axial_depth_mm
-        .or_else(|| mills.first().map(|t| t.axial_depth_mm))
-        .unwrap_or(1.0);
-    let smallest = mills.last().map_or(0.0, |t| t.diameter_mm);
+    let (mills, a_p) = mills_and_depth(lib, axial_depth_mm);
     let layers = roughing_layers(
         r,
         &LayerOptions {
             axial_depth_mm: a_p,
-            smallest_tool_mm: smallest,
+            smallest_tool_mm: mills.last().map_or(0.0, |t| t.diameter_mm),
         },
     );
     let tol = 1e-6 * r.size.max(1.0);
-    let field_tools: Vec<Vec<FieldTools>> = layers
+    let nested = nested(&layers, r.size);
+    let field_tools = tools_for(&layers, &mills, holes, tol);
+    assemble(
+        Assembly {
+            lib,
+            a_p,
+            holes,
+            nested,
+            groups: &[],
+            tol,
+        },
+        layers,
+        field_tools,
+    )
+}
+
+/// The library's end mills, largest first, and the depth of cut.
+pub(crate) fn mills_and_depth(
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> (Vec<&CuttingTool>, f64) {
+    let mills: Vec<&CuttingTool> = lib.end_mills().collect();
+    let a_p = axial_depth_mm
+        .or_else(|| mills.first().map(|t| t.axial_depth_mm))
+        .unwrap_or(1.0);
+    (mills, a_p)
+}
+
+/// Every field's tools, or the hole whose drill takes it.
+pub(crate) fn tools_for(
+    layers: &[RoughingLayer],
+    mills: &[&CuttingTool],
+    holes: &[HoleSite],
+    tol: f64,
+) -> Vec<Vec<FieldTools>> {
+    layers
         .par_iter()
         .map(|l| {
             l.fields
                 .par_iter()
                 .map(|f| match drilled_by(f, l, holes, tol) {
                     Some(h) => FieldTools::drilled(&holes[h].id),
-                    None => select(f, &mills, &l.floor_region),
+                    None => select(f, mills, &l.floor_region),
                 })
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// What the operations are assembled with besides the layers.
+pub(crate) struct Assembly<'a> {
+    pub lib: &'a ToolLibrary,
+    pub a_p: f64,
+    pub holes: &'a [HoleSite],
+    /// Per layer, whether its section lies within the previous layer's of
+    /// the same feature.
+    pub nested: Vec<bool>,
+    /// Machining features (by `RoughingLayer::feature`) whose operations
+    /// all come before another's: the plan's relations.
+    pub groups: &'a [(String, String)],
+    pub tol: f64,
+}
+
+/// Operations from the layers and their fields' tools, ordered.
+pub(crate) fn assemble(
+    x: Assembly,
+    layers: Vec<RoughingLayer>,
+    field_tools: Vec<Vec<FieldTools>>,
+) -> SetupOperations {
+    let (lib, a_p, holes, tol) = (x.lib, x.a_p, x.holes, x.tol);
+    let (mills, _) = mills_and_depth(lib, Some(a_p));
     let tiny = tol.powi(2);
     let mut ops: Vec<Draft> = Vec::new();
     for (k, fts) in field_tools.iter().enumerate() {
@@ -187,7 +246,8 @@ pub fn operations(
             .then(a.drill.cmp(&b.drill))
     });
     let bottoms: Vec<f64> = layers.iter().map(|l| l.z_bottom_mm).collect();
-    let graph = precedence(&ops, &nested(&layers, r.size), &bottoms, tol);
+    let mut graph = precedence(&ops, &layers, &x.nested, &bottoms, tol);
+    group_edges(&mut graph, &ops, &layers, x.groups);
     let plain: Vec<usize> = (0..ops.len()).collect();
     let changes = |o: &[usize]| {
         o.windows(2)
@@ -219,10 +279,12 @@ pub fn operations(
     SetupOperations {
         axial_depth_mm: a_p,
         holes: holes.to_vec(),
-        time_min: operations.iter().map(|o| o.time_min).sum(),
+        // (An empty sum is −0.)
+        time_min: operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0,
         tool_changes: changes(&order),
         plain_tool_changes: changes(&plain),
         rest: rests(&field_tools),
+        other_setup: Vec::new(),
         layers,
         field_tools,
         operations,
@@ -513,7 +575,13 @@ fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
 /// Edges from each operation to those that must follow it (module
 /// docs): between layers by `nested`; within a layer and a field from
 /// larger tools to smaller, and from milling to the floor's finish.
-fn precedence(ops: &[Draft], nested: &[bool], bottoms: &[f64], tol: f64) -> DiGraph<usize, ()> {
+fn precedence(
+    ops: &[Draft],
+    layers: &[RoughingLayer],
+    nested: &[bool],
+    bottoms: &[f64],
+    tol: f64,
+) -> DiGraph<usize, ()> {
     let mut g = DiGraph::new();
     let nodes: Vec<NodeIndex> = (0..ops.len()).map(|i| g.add_node(i)).collect();
     for (i, d) in ops.iter().enumerate() {
@@ -533,7 +601,8 @@ fn precedence(ops: &[Draft], nested: &[bool], bottoms: &[f64], tol: f64) -> DiGr
             }
             let larger = e.tool.diameter_mm > d.tool.diameter_mm;
             let same = e.tool.name == d.tool.name;
-            let follows = if e.layer + 1 == d.layer {
+            let same_feature = layers[e.layer].feature == layers[d.layer].feature;
+            let follows = if e.layer + 1 == d.layer && same_feature {
                 d.stage != Stage::Finish && (!nested[d.layer] || larger || same)
             } else if e.layer == d.layer {
                 let shared = e.fields.iter().any(|f| d.fields.contains(f));
@@ -547,6 +616,29 @@ fn precedence(ops: &[Draft], nested: &[bool], bottoms: &[f64], tol: f64) -> DiGr
         }
     }
     g
+}
+
+/// Every operation of a feature before every operation of a feature
+/// `groups` puts after it.
+fn group_edges(
+    g: &mut DiGraph<usize, ()>,
+    ops: &[Draft],
+    layers: &[RoughingLayer],
+    groups: &[(String, String)],
+) {
+    let of = |id: &str| -> Vec<usize> {
+        (0..ops.len())
+            .filter(|&i| layers[ops[i].layer].feature.as_deref() == Some(id))
+            .collect()
+    };
+    for (before, after) in groups {
+        let (a, b) = (of(before), of(after));
+        for &i in &a {
+            for &j in &b {
+                g.update_edge(NodeIndex::new(i), NodeIndex::new(j), ());
+            }
+        }
+    }
 }
 
 /// A topological order keeping the tool while it has work: among the

@@ -22,6 +22,13 @@ pub enum OpsError {
     Removal(#[from] RemovalError),
     #[error("{0}")]
     Machining(#[from] thinwall_machining::MachiningError),
+    /// Recognition failed, so there is no plan to follow.
+    #[error("{0}")]
+    Pipeline(#[from] thinwall_pipeline::PipelineError),
+    /// The plan has no machining features (its removal could not be
+    /// decomposed), with why.
+    #[error("the plan has no machining features: {0}")]
+    NoPlan(String),
 }
 
 impl OpsError {
@@ -32,6 +39,8 @@ impl OpsError {
             OpsError::NoEndMill { .. } => "tools.no_end_mill".to_string(),
             OpsError::Removal(e) => format!("removal.{}", e.code()),
             OpsError::Machining(e) => format!("machining.{}", e.code()),
+            OpsError::Pipeline(e) => format!("recognition.{}", e.code()),
+            OpsError::NoPlan(_) => "plan.no_features".to_string(),
         }
     }
 }
@@ -54,4 +63,40 @@ pub fn plan_setup(
     let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
     let holes = holes_of(a, &frame, lib)?;
     Ok((frame, operations(&removal, lib, axial_depth_mm, &holes)))
+}
+
+/// The operations of `a`'s set-up along the plan ([`crate::planned`]):
+/// recognition, the plan with the shipped rules, then each machining
+/// feature layered and tooled on its own, in an order that keeps every
+/// relation of the plan. `file` names the part in the plan.
+pub fn plan_setup_by_feature(
+    a: &PartAnalysis,
+    file: &str,
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> Result<(Frame, SetupOperations), OpsError> {
+    if lib.end_mills().next().is_none() {
+        return Err(OpsError::NoEndMill {
+            library: lib.source.clone(),
+        });
+    }
+    let request = thinwall_pipeline::Request {
+        setup: a.setup().clone(),
+        ..Default::default()
+    };
+    let outcome = thinwall_pipeline::run(a.part(), None, &request)?;
+    let rules = thinwall_plan::RuleSet::default_rules();
+    let plan = thinwall_plan::plan(file, a.part(), &outcome, &rules);
+    if let Some(why) = &plan.removal.unavailable {
+        return Err(OpsError::NoPlan(why.clone()));
+    }
+    let up = Vector3::from(a.setup().up).normalize();
+    let (frame, lo, hi) = frame_of(a, up);
+    let stock = geo::Rect::new(
+        geo::Coord { x: lo[0], y: lo[1] },
+        geo::Coord { x: hi[0], y: hi[1] },
+    );
+    let size = a.bounding_box().diagonal();
+    let ops = crate::planned::by_feature(&plan, lib, axial_depth_mm, stock, size);
+    Ok((frame, ops))
 }

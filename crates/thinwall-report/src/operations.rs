@@ -149,6 +149,13 @@ impl OperationsReport {
                 x.width_mm
             );
         }
+        if !r.other_setup.is_empty() {
+            let _ = writeln!(
+                s,
+                "left to another set-up (the plan's features this tool axis does not reach): {}",
+                r.other_setup.join(" ")
+            );
+        }
         let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
         s
     }

@@ -9,7 +9,7 @@
 
 use super::pieces::Height;
 use super::{Block, Bound, Removal};
-use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon, Rect};
+use geo::{BooleanOps, BoundingRect, Coord, LineString, MultiPolygon, Polygon, Rect};
 
 /// Material between two bounds over a region.
 #[derive(Clone, Debug)]
@@ -287,10 +287,25 @@ pub fn section(r: &Removal, b: &Block, z: f64) -> MultiPolygon<f64> {
         return MultiPolygon::new(vec![]);
     }
     let (hl, hu) = (r.height_of(&b.lower), r.height_of(&b.upper));
-    let bbox = grow(cell.bbox);
     let whole = MultiPolygon::new(vec![cell.poly.clone()]);
+    between(&whole, &hl, &hu, z)
+}
+
+/// Where `region` lies between the heights `lower` (at or below `z`) and
+/// `upper` (above it): the cross-section at `z` of the solid they bound
+/// over it (a machining feature's solid), exact for planes and cylinders.
+pub fn between(
+    region: &MultiPolygon<f64>,
+    lower: &Height,
+    upper: &Height,
+    z: f64,
+) -> MultiPolygon<f64> {
+    let Some(bbox) = region.bounding_rect() else {
+        return MultiPolygon::new(vec![]);
+    };
+    let bbox = grow(bbox);
     clip(
-        &whole,
-        &[&side(&hl, z, bbox, true), &side(&hu, z, bbox, false)],
+        region,
+        &[&side(lower, z, bbox, true), &side(upper, z, bbox, false)],
     )
 }
