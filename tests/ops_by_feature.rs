@@ -51,7 +51,7 @@ fn operations_keep_every_relation_of_the_plan() {
         let steps = |id: &str| -> Vec<usize> {
             ops.operations
                 .iter()
-                .filter(|o| ops.layers[o.layer].feature.as_deref() == Some(id))
+                .filter(|o| o.feature.as_deref() == Some(id))
                 .map(|o| o.step)
                 .collect()
         };

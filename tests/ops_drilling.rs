@@ -81,9 +81,9 @@ fn holes_a_drill_matches_are_drilled_by_kind() {
         .operations
         .iter()
         .filter(|o| o.z_top_mm <= 12.0 + 1e-9 && o.stage != Stage::Drill)
-        .map(|o| {
+        .flat_map(|o| {
             assert_eq!(o.tool, "EM6");
-            o.area_mm2
+            o.passes.iter().map(|p| p.area_mm2)
         })
         .collect();
     assert_eq!(milled.len(), 4);
@@ -123,12 +123,15 @@ fn holes_a_drill_matches_are_drilled_by_kind() {
     assert!(p.tool_changes <= p.plain_tool_changes);
 }
 
-/// The operations as (stage, tool, layer, area, volume), sorted.
+/// The operations as (stage, tool, first layer, area, volume), sorted.
 fn summary(p: &SetupOperations) -> Vec<(Stage, String, usize, f64, f64)> {
     let mut v: Vec<_> = p
         .operations
         .iter()
-        .map(|o| (o.stage, o.tool.clone(), o.layer, o.area_mm2, o.volume_mm3))
+        .map(|o| {
+            let first = o.passes.first().map_or(usize::MAX, |p| p.layer);
+            (o.stage, o.tool.clone(), first, o.area_mm2, o.volume_mm3)
+        })
         .collect();
     v.sort_by(|a, b| (a.0, &a.1, a.2).cmp(&(b.0, &b.1, b.2)));
     v

@@ -277,14 +277,31 @@ fn operations_keep_their_order_and_add_up() {
                 op.regions.is_none(),
                 matches!(op.stage, Stage::Finish | Stage::Drill)
             );
+            // An operation's figures are its passes' added up, its passes
+            // in consecutive layers top down.
+            if op.stage != Stage::Drill {
+                let area: f64 = op.passes.iter().map(|p| p.area_mm2).sum();
+                let volume: f64 = op.passes.iter().map(|p| p.volume_mm3).sum();
+                assert!((area - op.area_mm2).abs() <= 1e-9 * area.max(1.0));
+                assert!((volume - op.volume_mm3).abs() <= 1e-9 * volume.max(1.0));
+                assert!(op.passes.windows(2).all(|w| w[0].layer < w[1].layer));
+            }
         }
         assert!(plan.tool_changes <= plan.plain_tool_changes, "{what}");
         fewer += usize::from(plan.tool_changes < plan.plain_tool_changes);
         for (k, l) in plan.layers.iter().enumerate() {
-            let ops = || plan.operations.iter().filter(move |o| o.layer == k);
+            // Every pass in this layer, with its operation's stage.
+            let ops = || {
+                plan.operations.iter().flat_map(move |o| {
+                    o.passes
+                        .iter()
+                        .filter(move |p| p.layer == k)
+                        .map(move |p| (o.stage, p))
+                })
+            };
             let cleared: f64 = ops()
-                .filter(|o| matches!(o.stage, Stage::Rough | Stage::SemiFinish))
-                .map(|o| o.area_mm2)
+                .filter(|(s, _)| matches!(s, Stage::Rough | Stage::SemiFinish))
+                .map(|(_, p)| p.area_mm2)
                 .sum();
             // Every field's rest, the listed ones and those below the
             // disks' polygon noise alike.
@@ -302,19 +319,16 @@ fn operations_keep_their_order_and_add_up() {
                 l.area_mm2
             );
             let floor: f64 = ops()
-                .filter(|o| o.stage == Stage::Finish)
-                .map(|o| o.area_mm2)
+                .filter(|(s, _)| *s == Stage::Finish)
+                .map(|(_, p)| p.area_mm2)
                 .sum();
             let floors = geo::Area::unsigned_area(&l.floor_region);
             assert!(
                 floor <= floors + 1e-6 * floors.max(1.0),
                 "{what}: layer {k}"
             );
-            finishes += ops().filter(|o| o.stage == Stage::Finish).count();
-            let volume: f64 = ops()
-                .filter(|o| o.stage != Stage::Drill)
-                .map(|o| o.volume_mm3)
-                .sum();
+            finishes += ops().filter(|(s, _)| *s == Stage::Finish).count();
+            let volume: f64 = ops().map(|(_, p)| p.volume_mm3).sum();
             let h = l.z_top_mm - l.z_bottom_mm;
             assert!(
                 (volume - cleared * h).abs() <= 1e-6 * (cleared * h).max(1.0),

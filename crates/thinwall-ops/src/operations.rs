@@ -67,21 +67,14 @@ pub struct Regions {
     pub roughing_mm2: f64,
 }
 
-/// One operation: a tool in a layer at a stage.
+/// One layer of an operation: what its tool does there.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Operation {
-    /// Place in the chosen order, from 1.
-    pub step: usize,
-    pub stage: Stage,
-    pub tool: String,
-    pub diameter_mm: f64,
+pub struct Pass {
     pub layer: usize,
     pub z_top_mm: f64,
     pub z_bottom_mm: f64,
     /// The layer's fields it works in (indices into the layer's fields).
     pub fields: Vec<usize>,
-    /// The product adjacency of those fields together.
-    pub adjacency: Adjacency,
     /// Rough and semi-finish: what it clears that larger tools left;
     /// finish: the floor it finishes, mm².
     pub area_mm2: f64,
@@ -94,6 +87,35 @@ pub struct Operation {
     /// Region by region, the volume over the removal rate for its
     /// conditions (Q = a_p · a_e · f_z · z · n), min.
     pub time_min: f64,
+}
+
+/// One operation: a tool at a stage, in one layer or in consecutive ones
+/// (Matsuda's milling feature per tool and group of depths): its passes
+/// follow each other in the order with nothing between them.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Operation {
+    /// Place in the chosen order, from 1.
+    pub step: usize,
+    pub stage: Stage,
+    pub tool: String,
+    pub diameter_mm: f64,
+    /// The plan's machining feature it works in (operations along the
+    /// plan).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub feature: Option<String>,
+    pub z_top_mm: f64,
+    pub z_bottom_mm: f64,
+    /// The product adjacency of its fields together.
+    pub adjacency: Adjacency,
+    /// Its passes' areas added up (drilling: its holes' cross-sections),
+    /// mm².
+    pub area_mm2: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regions: Option<Regions>,
+    pub volume_mm3: f64,
+    pub time_min: f64,
+    /// One per layer, top down (none for drilling).
+    pub passes: Vec<Pass>,
     /// Steps it must follow.
     pub after: Vec<usize>,
     /// Drilling: how, and the holes (machining feature ids).
@@ -101,6 +123,105 @@ pub struct Operation {
     pub drill: Option<DrillKind>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub holes: Vec<String>,
+}
+
+impl Operation {
+    /// A one-pass operation.
+    fn single(
+        stage: Stage,
+        tool: &CuttingTool,
+        adjacency: Adjacency,
+        feature: Option<String>,
+        pass: Pass,
+    ) -> Self {
+        Operation {
+            step: 0,
+            stage,
+            tool: tool.name.clone(),
+            diameter_mm: tool.diameter_mm,
+            feature,
+            z_top_mm: pass.z_top_mm,
+            z_bottom_mm: pass.z_bottom_mm,
+            adjacency,
+            area_mm2: pass.area_mm2,
+            regions: pass.regions,
+            volume_mm3: pass.volume_mm3,
+            time_min: pass.time_min,
+            passes: vec![pass],
+            after: Vec::new(),
+            drill: None,
+            holes: Vec::new(),
+        }
+    }
+
+    /// Whether `next` continues it: the same tool, stage and feature, a
+    /// milling stage.
+    fn continued_by(&self, next: &Operation) -> bool {
+        self.stage != Stage::Drill
+            && next.stage == self.stage
+            && next.tool == self.tool
+            && next.feature == self.feature
+    }
+
+    /// Take `next`'s passes and figures.
+    fn absorb(&mut self, next: Operation) {
+        self.z_top_mm = self.z_top_mm.max(next.z_top_mm);
+        self.z_bottom_mm = self.z_bottom_mm.min(next.z_bottom_mm);
+        self.adjacency = merged(self.adjacency, next.adjacency);
+        self.area_mm2 += next.area_mm2;
+        if let (Some(a), Some(b)) = (&mut self.regions, next.regions) {
+            a.boundary_mm2 += b.boundary_mm2;
+            a.full_cut_mm2 += b.full_cut_mm2;
+            a.roughing_mm2 += b.roughing_mm2;
+        }
+        self.volume_mm3 += next.volume_mm3;
+        self.time_min += next.time_min;
+        self.passes.extend(next.passes);
+        self.after.extend(next.after);
+    }
+}
+
+/// Side and bottom adjacency together.
+fn merged(a: Adjacency, b: Adjacency) -> Adjacency {
+    let side = |x| matches!(x, Adjacency::Side | Adjacency::SideAndBottom);
+    let bottom = |x| matches!(x, Adjacency::Bottom | Adjacency::SideAndBottom);
+    match (side(a) || side(b), bottom(a) || bottom(b)) {
+        (true, true) => Adjacency::SideAndBottom,
+        (true, false) => Adjacency::Side,
+        (false, true) => Adjacency::Bottom,
+        (false, false) => Adjacency::None,
+    }
+}
+
+/// The passes in `order`, consecutive ones of one tool, stage and feature
+/// joined into one operation, numbered, with what each must follow.
+fn joined(order: &[usize], passes: Vec<Operation>, preds: &[Vec<usize>]) -> Vec<Operation> {
+    // Pass index (draft) -> operation number.
+    let mut number = vec![0; passes.len()];
+    let mut out: Vec<Operation> = Vec::new();
+    let mut slots: Vec<Option<Operation>> = passes.into_iter().map(Some).collect();
+    for &i in order {
+        let mut op = slots[i].take().expect("each draft once");
+        op.after = preds[i].clone();
+        match out.last_mut() {
+            Some(last) if last.continued_by(&op) => last.absorb(op),
+            _ => out.push(op),
+        }
+        number[i] = out.len();
+    }
+    for (s, op) in out.iter_mut().enumerate() {
+        op.step = s + 1;
+        let mut after: Vec<usize> = op
+            .after
+            .iter()
+            .map(|&d| number[d])
+            .filter(|&n| n != s + 1)
+            .collect();
+        after.sort_unstable();
+        after.dedup();
+        op.after = after;
+    }
+    out
 }
 
 /// What no tool of the library reaches, where.
@@ -260,22 +381,19 @@ pub(crate) fn assemble(
     } else {
         plain.clone()
     };
-    let mut place = vec![0; ops.len()];
-    for (s, &i) in order.iter().enumerate() {
-        place[i] = s + 1;
-    }
-    let operations: Vec<Operation> = order
-        .iter()
-        .enumerate()
-        .map(|(s, &i)| {
-            let mut after: Vec<usize> = graph
+    let preds: Vec<Vec<usize>> = (0..ops.len())
+        .map(|i| {
+            graph
                 .neighbors_directed(NodeIndex::new(i), petgraph::Direction::Incoming)
-                .map(|n| place[n.index()])
-                .collect();
-            after.sort_unstable();
-            ops[i].operation(s + 1, &layers[ops[i].layer], holes, after)
+                .map(|n| n.index())
+                .collect()
         })
         .collect();
+    let passes: Vec<Operation> = ops
+        .iter()
+        .map(|d| d.operation(&layers[d.layer], holes))
+        .collect();
+    let operations = joined(&order, passes, &preds);
     SetupOperations {
         axial_depth_mm: a_p,
         holes: holes.to_vec(),
@@ -467,15 +585,9 @@ fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
 }
 
 impl Draft<'_> {
-    fn operation(
-        &self,
-        step: usize,
-        l: &RoughingLayer,
-        sites: &[HoleSite],
-        after: Vec<usize>,
-    ) -> Operation {
+    fn operation(&self, l: &RoughingLayer, sites: &[HoleSite]) -> Operation {
         if self.stage == Stage::Drill {
-            return self.drilling(step, sites, after);
+            return self.drilling(sites);
         }
         let h = l.z_top_mm - l.z_bottom_mm;
         // The floors' finishing layer, never more than the layer.
@@ -499,27 +611,25 @@ impl Draft<'_> {
                 (volume, time)
             }
         };
-        Operation {
-            step,
-            stage: self.stage,
-            tool: t.name.clone(),
-            diameter_mm: t.diameter_mm,
-            layer: self.layer,
-            z_top_mm: l.z_top_mm,
-            z_bottom_mm: l.z_bottom_mm,
-            fields: self.fields.clone(),
-            adjacency: self.adjacency,
-            area_mm2: self.area,
-            regions: self.regions,
-            volume_mm3: volume,
-            time_min: time,
-            after,
-            drill: None,
-            holes: Vec::new(),
-        }
+        Operation::single(
+            self.stage,
+            t,
+            self.adjacency,
+            l.feature.clone(),
+            Pass {
+                layer: self.layer,
+                z_top_mm: l.z_top_mm,
+                z_bottom_mm: l.z_bottom_mm,
+                fields: self.fields.clone(),
+                area_mm2: self.area,
+                regions: self.regions,
+                volume_mm3: volume,
+                time_min: time,
+            },
+        )
     }
 
-    fn drilling(&self, step: usize, sites: &[HoleSite], after: Vec<usize>) -> Operation {
+    fn drilling(&self, sites: &[HoleSite]) -> Operation {
         let holes: Vec<&HoleSite> = self.holes.iter().map(|&i| &sites[i]).collect();
         let top = holes
             .iter()
@@ -530,14 +640,13 @@ impl Draft<'_> {
             .map(|h| h.z_bottom_mm)
             .fold(f64::INFINITY, f64::min);
         Operation {
-            step,
+            step: 0,
             stage: Stage::Drill,
             tool: self.tool.name.clone(),
             diameter_mm: self.tool.diameter_mm,
-            layer: self.layer,
+            feature: None,
             z_top_mm: top,
             z_bottom_mm: bottom,
-            fields: Vec::new(),
             adjacency: self.adjacency,
             area_mm2: self.area,
             regions: None,
@@ -546,7 +655,8 @@ impl Draft<'_> {
                 .iter()
                 .map(|h| drilling_time_min(self.tool, h.z_top_mm - h.z_bottom_mm))
                 .sum(),
-            after,
+            passes: Vec::new(),
+            after: Vec::new(),
             drill: self.drill,
             holes: holes.iter().map(|h| h.id.clone()).collect(),
         }

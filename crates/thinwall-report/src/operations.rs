@@ -47,7 +47,7 @@ impl OperationsReport {
             not_yet: vec![
                 "holes no drill of the library matches are milled with the layers (no helical or boring subtype)".into(),
                 "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
-                "the plan's sequence constraints between stiffness features in the order".into(),
+                "the plan's relations bind the order with --by-feature only (which does not drill yet); the default keeps the geometric precedences".into(),
             ],
         }
     }
@@ -80,12 +80,13 @@ impl OperationsReport {
         );
         let _ = writeln!(
             s,
-            "{:>4}  {:<11} {:<8} {:>6}  {:>5}  {:>17}  {:>12}  {:>26}  {:>13}  {:>8}  after",
+            "{:>4}  {:<11} {:<8} {:>6}  {:<7} {:>7}  {:>17}  {:>12}  {:>26}  {:>13}  {:>8}  after",
             "step",
             "stage",
             "tool",
             "Ø mm",
-            "layer",
+            "feature",
+            "layers",
             "z mm",
             "area mm²",
             "boundary/full cut/rough",
@@ -108,14 +109,20 @@ impl OperationsReport {
                     g.boundary_mm2, g.full_cut_mm2, g.roughing_mm2
                 )
             });
+            let layers = match (o.passes.first(), o.passes.last()) {
+                (Some(a), Some(b)) if a.layer == b.layer => format!("{}", a.layer + 1),
+                (Some(a), Some(b)) => format!("{}-{}", a.layer + 1, b.layer + 1),
+                _ => "-".to_string(),
+            };
             let _ = writeln!(
                 s,
-                "{:>4}  {:<11} {:<8} {:>6.1}  {:>5}  {:>8.2}..{:<8.2} {:>12.1}  {:>26}  {:>13.0}  {:>8.2}  {after}",
+                "{:>4}  {:<11} {:<8} {:>6.1}  {:<7} {:>7}  {:>8.2}..{:<8.2} {:>12.1}  {:>26}  {:>13.0}  {:>8.2}  {after}",
                 o.step,
                 o.stage.name(),
                 o.tool,
                 o.diameter_mm,
-                o.layer + 1,
+                o.feature.as_deref().unwrap_or("-"),
+                layers,
                 o.z_top_mm,
                 o.z_bottom_mm,
                 o.area_mm2,
