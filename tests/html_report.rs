@@ -310,3 +310,56 @@ fn access_page_colours_every_planar_face_and_outlines_g_zones() {
         assert!(data["palette"][key].is_string());
     }
 }
+
+/// The operations page of the drill plate: self-contained, the report's
+/// operations in it in order, every pass's fields there to draw (each a
+/// closed contour of at least three points), the drilled holes with
+/// their axes, and a colour for each stage.
+#[test]
+fn operations_page_holds_every_operation_and_its_fields() {
+    let part = read(&common::root().join("fixtures/ops/drill_plate.step"));
+    let a = PartAnalysis::new(
+        &part,
+        Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
+    );
+    let lib = thinwall_ops::ToolLibrary::default_tools();
+    let (frame, ops) = thinwall_ops::plan_setup(&a, &lib, None).unwrap();
+    let count = ops.operations.len();
+    let report = thinwall_report::operations::OperationsReport::new(
+        "plate",
+        [0.0, 0.0, 1.0],
+        &frame,
+        lib,
+        ops,
+    );
+    let page = html::operations_page("operations", &a, &report);
+    assert_self_contained(&page);
+    let data = html::data_of(&page).expect("the page's data");
+    assert_eq!(data["view"], "operations");
+    let setup = &data["operations"]["setup"];
+    let listed = setup["operations"].as_array().unwrap();
+    assert_eq!(listed.len(), count);
+    let mut drills = 0;
+    for (k, o) in listed.iter().enumerate() {
+        assert_eq!(o["step"].as_u64(), Some(k as u64 + 1));
+        for p in o["passes"].as_array().unwrap() {
+            let layer = &setup["layers"][p["layer"].as_u64().unwrap() as usize];
+            for j in p["fields"].as_array().unwrap() {
+                let f = &layer["fields"][j.as_u64().unwrap() as usize];
+                assert!(f["outer"]["points"].as_array().unwrap().len() >= 3);
+            }
+        }
+        if o["stage"] == "drill" {
+            drills += 1;
+            for h in o["holes"].as_array().unwrap() {
+                assert!(setup["holes"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .any(|s| &s["id"] == h && s["centre"].is_array()));
+            }
+        }
+        assert!(data["palette"][format!("ops.{}", o["stage"].as_str().unwrap())].is_string());
+    }
+    assert_eq!(drills, 4);
+}

@@ -31,7 +31,7 @@ enum Format {
     Json,
 }
 
-/// `access`'s formats: also a page.
+/// `access`'s and `operations`' formats: also a page.
 #[derive(Clone, Copy, ValueEnum)]
 enum AccessFormat {
     Text,
@@ -204,7 +204,7 @@ enum Command {
         by_feature: bool,
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
-        format: Format,
+        format: AccessFormat,
         /// Write to this file instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -695,7 +695,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 tools,
                 axial_depth,
                 by_feature,
-                json: matches!(format, Format::Json),
+                format: match format {
+                    AccessFormat::Text => operations::OpsFormat::Text,
+                    AccessFormat::Json => operations::OpsFormat::Json,
+                    AccessFormat::Html => operations::OpsFormat::Html,
+                },
             })?;
             write_to(output.as_deref(), &text)
         }

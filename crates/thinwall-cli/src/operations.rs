@@ -11,7 +11,15 @@ pub struct OperationsArgs {
     pub tools: Option<PathBuf>,
     pub axial_depth: Option<f64>,
     pub by_feature: bool,
-    pub json: bool,
+    pub format: OpsFormat,
+}
+
+/// How the operations are written.
+pub enum OpsFormat {
+    Text,
+    Json,
+    /// A page: the operations in order over the part.
+    Html,
 }
 
 /// The tool library: the file's, or the shipped one.
@@ -64,9 +72,13 @@ pub fn run(args: OperationsArgs) -> Result<String, Failure> {
         lib,
         setup_ops,
     );
-    Ok(if args.json {
-        report.to_json()
-    } else {
-        report.to_text()
+    Ok(match args.format {
+        OpsFormat::Text => report.to_text(),
+        OpsFormat::Json => report.to_json(),
+        OpsFormat::Html => thinwall_report::html::operations_page(
+            &format!("Operations: {}", args.part.display()),
+            &a,
+            &report,
+        ),
     })
 }

@@ -692,6 +692,62 @@
     };
   }
 
+  // ------------------------------------------------- operations
+  function operationsTab() {
+    const rep = D.operations;
+    const ops = rep.setup.operations;
+    const [o3, fx, fy, fz] = rep.frame;
+    // A point of the removal frame (x, y at height z) in the part's space.
+    const world = (p, z) => [0, 1, 2].map((j) => o3[j] + p[0] * fx[j] + p[1] * fy[j] + z * fz[j]);
+    const tint = (o) => P['ops.' + o.stage];
+    const { marks, line, rings } = overlay();
+    const key = (o) => String(o.step);
+    function showMarks(o) {
+      marks.clear();
+      if (!o) return;
+      for (const p of o.passes) {
+        const layer = rep.setup.layers[p.layer];
+        for (const j of p.fields) {
+          const f = layer.fields[j];
+          for (const c of [f.outer, ...f.islands]) {
+            rings([c.points.map((q) => world(q, p.z_bottom_mm))], new T.Color(tint(o)).getHex());
+          }
+        }
+      }
+      for (const h of rep.setup.holes.filter((h) => (o.holes || []).includes(h.id))) {
+        marks.add(line([world(h.centre, h.z_top_mm), world(h.centre, h.z_bottom_mm)], new T.Color(tint(o)).getHex()));
+      }
+      viewer.render();
+    }
+    const what = (o) => o.stage.replace('_', '-') + ' · ' + o.tool + (o.feature ? ' · ' + o.feature : '') + ' · ' + fmt(o.z_top_mm, 1) + '..' + fmt(o.z_bottom_mm, 1) + ' · ' + fmt(o.time_min) + ' min';
+    return {
+      name: 'Operations',
+      enter() {
+        part.group.visible = true;
+        part.opacity(0.28);
+        part.paint(() => colour('other'));
+        legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']]]);
+        this.list();
+        if (!selected) details('Operations', [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['tool changes', rep.setup.tool_changes + ' (' + rep.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(rep.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(rep.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (rep.setup.other_setup || []).join(' ')], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
+        viewer.render();
+      },
+      leave() { marks.clear(); part.opacity(state.xray ? 0.28 : 1); },
+      list() { list(ops.map((o) => ({ key: key(o), id: String(o.step), what: what(o), colour: tint(o) }))); },
+      paint() {},
+      select(k) {
+        const o = ops.find((x) => key(x) === k);
+        if (!o) return;
+        selected = { key: k };
+        this.list(); showMarks(o);
+        const g = o.regions;
+        const table = el('table', null, el('tr', null, el('td', null, 'layer'), el('td', null, 'z mm · area mm² · volume mm³ · min')));
+        for (const p of o.passes) table.append(el('tr', null, el('td', null, String(p.layer + 1)), el('td', null, fmt(p.z_top_mm, 1) + '..' + fmt(p.z_bottom_mm, 1) + ' · ' + fmt(p.area_mm2, 1) + ' · ' + fmt(p.volume_mm3, 0) + ' · ' + fmt(p.time_min))));
+        details('Step ' + o.step + ' — ' + o.stage.replace('_', '-') + ' with ' + o.tool, [['tool', o.tool + ', Ø' + fmt(o.diameter_mm, 1) + ' mm'], ['feature', o.feature], ['z', fmt(o.z_top_mm) + ' .. ' + fmt(o.z_bottom_mm) + ' mm'], ['area', fmt(o.area_mm2, 1) + ' mm²'], ['regions', g ? 'boundary ' + fmt(g.boundary_mm2, 1) + ' · full cut ' + fmt(g.full_cut_mm2, 1) + ' · roughing ' + fmt(g.roughing_mm2, 1) + ' mm²' : null], ['adjacency', o.adjacency.replace(/_/g, ' ')], ['volume', fmt(o.volume_mm3, 0) + ' mm³'], ['time', fmt(o.time_min) + ' min'], ['drilling', o.drill ? o.drill + ': ' + o.holes.join(' ') : null], ['after steps', o.after.join(', ') || '—']], o.passes.length ? [el('h3', null, 'Passes'), table] : []);
+      },
+      pickFace(i) { faceInfo(i); },
+    };
+  }
+
   // ------------------------------------------------------------ assemble
   const tabs = [];
   if (rec && D.view !== 'plan') {
@@ -705,6 +761,7 @@
   }
   if (D.view === 'classification') tabs.push(classificationTab());
   if (D.view === 'access') tabs.push(reachTab(), accessTab());
+  if (D.view === 'operations') tabs.push(operationsTab());
 
   function show(tab) {
     if (mode && mode.leave) mode.leave();
@@ -733,11 +790,11 @@
   );
   if (state.xray) part.opacity(0.28);
 
-  const file = rec ? rec.part.file : D.plan ? D.plan.file : D.classification ? D.classification.part : D.access ? D.access.part : D.title;
+  const file = rec ? rec.part.file : D.plan ? D.plan.file : D.classification ? D.classification.part : D.access ? D.access.part : D.operations ? D.operations.part : D.title;
   const faces = D.part.faces.length, missing = D.part.faces.filter((f) => !f.triangles.length).length;
   $('#title').replaceChildren(D.title, el('small', null, faces + ' faces' + (missing ? ', ' + missing + ' not drawn' : '') + ' · up ' + vec(D.up)));
   document.title = 'Thinwall: ' + file.split('/').pop();
-  if (D.view !== 'classification' && D.view !== 'access') graph.draw($('#bottom'));
+  if (!['classification', 'access', 'operations'].includes(D.view)) graph.draw($('#bottom'));
   else $('#bottom').hidden = true;
   // `#wall=R2`, `#step=5`, `#select=H1`, `#tab=Machining features`: a
   // page opened at a chosen view (links in documents, screenshots).

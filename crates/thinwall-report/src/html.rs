@@ -73,6 +73,9 @@ enum View<'a> {
     Access {
         access: &'a crate::access::AccessReport,
     },
+    Operations {
+        operations: &'a crate::operations::OperationsReport,
+    },
 }
 
 #[derive(Serialize)]
@@ -208,6 +211,22 @@ pub fn classification_page(
 /// of them flank milling reaches, the G-zones drawn, the directions used.
 pub fn access_page(title: &str, a: &PartAnalysis, report: &crate::access::AccessReport) -> String {
     page(title, a, None, View::Access { access: report }, Vec::new())
+}
+
+/// An operations report as a page: the operations in order, each drawn
+/// as its passes' cutter fields at their levels over the part.
+pub fn operations_page(
+    title: &str,
+    a: &PartAnalysis,
+    report: &crate::operations::OperationsReport,
+) -> String {
+    page(
+        title,
+        a,
+        None,
+        View::Operations { operations: report },
+        Vec::new(),
+    )
 }
 
 fn page(

@@ -76,7 +76,11 @@ pub fn table() -> BTreeMap<String, String> {
     for k in MachiningKind::ALL {
         m.insert(format!("machining.{}", k.name()), hex(machining(*k)));
     }
-    let named: [(&str, [u8; 3]); 19] = [
+    let named: [(&str, [u8; 3]); 23] = [
+        ("ops.rough", [60, 120, 215]),
+        ("ops.semi_finish", [150, 90, 200]),
+        ("ops.finish", [60, 170, 110]),
+        ("ops.drill", [220, 120, 40]),
         ("access.advisable", [90, 190, 110]),
         ("reach.whole", [90, 190, 110]),
         ("reach.most", [190, 200, 80]),
