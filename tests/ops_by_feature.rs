@@ -27,8 +27,10 @@ use thinwall_plan::removal::pieces::Height;
 fn operations_keep_every_relation_of_the_plan() {
     let lib = ToolLibrary::default_tools();
     let rules = thinwall_plan::RuleSet::default_rules();
-    let (mut parts, mut relations, mut exact) = (0, 0, 0);
-    for path in common::thin_walled_parts() {
+    let (mut parts, mut relations, mut exact, mut drills) = (0, 0, 0, 0);
+    let mut all = common::thin_walled_parts();
+    all.push(common::root().join("fixtures/ops/drill_plate.step"));
+    for path in all {
         let what = path.display().to_string();
         let part = thinwall_step::read_file(&path).unwrap().0;
         let request = thinwall_pipeline::Request::default();
@@ -46,7 +48,16 @@ fn operations_keep_every_relation_of_the_plan() {
             geo::Coord { x: lo[0], y: lo[1] },
             geo::Coord { x: hi[0], y: hi[1] },
         );
-        let ops = by_feature(&plan, &lib, None, stock, a.bounding_box().diagonal());
+        let (frame, _, _) = frame_of(&a, Vector3::z());
+        let holes = thinwall_ops::drilling::holes_of(&a, &frame, &lib).unwrap();
+        let ops = by_feature(
+            &plan,
+            &lib,
+            None,
+            &holes,
+            stock,
+            a.bounding_box().diagonal(),
+        );
         // The steps of each feature's operations.
         let steps = |id: &str| -> Vec<usize> {
             ops.operations
@@ -74,7 +85,7 @@ fn operations_keep_every_relation_of_the_plan() {
                 "{what}: step {}",
                 o.step
             );
-            assert!(o.stage != Stage::Drill);
+            drills += usize::from(o.stage == Stage::Drill);
         }
         assert!(ops.tool_changes <= ops.plain_tool_changes, "{what}");
         for (l, fts) in ops.layers.iter().zip(&ops.field_tools) {
@@ -84,8 +95,15 @@ fn operations_keep_every_relation_of_the_plan() {
                 .map(|s| s.cleared_mm2)
                 .sum();
             let rest: f64 = fts.iter().map(|ft| ft.rest_mm2).sum();
+            let drilled: f64 = l
+                .fields
+                .iter()
+                .zip(fts)
+                .filter(|(_, ft)| ft.drilled.is_some())
+                .map(|(f, _)| f.area_mm2)
+                .sum();
             assert!(
-                (cleared + rest - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
+                (cleared + rest + drilled - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
                 "{what}: layer {} of {:?}",
                 l.index,
                 l.feature
@@ -112,6 +130,8 @@ fn operations_keep_every_relation_of_the_plan() {
         }
         parts += 1;
     }
-    eprintln!("BY FEATURE {parts} parts, {relations} relations kept, {exact} flat features layered exactly");
-    assert!(parts >= 25 && relations > 100 && exact > 50);
+    eprintln!(
+        "BY FEATURE {parts} parts, {relations} relations kept, {exact} flat features layered exactly, {drills} drilling operations"
+    );
+    assert!(parts >= 25 && relations > 100 && exact > 50 && drills >= 4);
 }

@@ -198,8 +198,8 @@ enum Command {
         axial_depth: Option<f64>,
         /// Follow the plan: each machining feature of `thinwall plan`
         /// (step-approach layers, bulk) layered and tooled on its own, in
-        /// an order that keeps every relation of the plan (no drilling
-        /// yet). Default: the whole removal layered at once.
+        /// an order that keeps every relation of the plan. Default: the
+        /// whole removal layered at once.
         #[arg(long)]
         by_feature: bool,
         /// Output format.

@@ -358,11 +358,13 @@ pub(crate) fn assemble(
         }
     }
     ops.extend(drill_drafts(lib, holes, &layers, &field_tools));
-    // Layer by layer, rough, semi-finish, finish then drilling, the
-    // largest tool first: always allowed.
+    // Layer by layer, rough, semi-finish then finish, the largest tool
+    // first, then the drills: always allowed.
+    // Drills last: along the plan a later feature's layer may lie above a
+    // hole's entry with a higher index.
     ops.sort_by(|a, b| {
-        (a.layer, a.stage)
-            .cmp(&(b.layer, b.stage))
+        (a.stage == Stage::Drill, a.layer, a.stage)
+            .cmp(&(b.stage == Stage::Drill, b.layer, b.stage))
             .then(b.tool.diameter_mm.total_cmp(&a.tool.diameter_mm))
             .then(a.drill.cmp(&b.drill))
     });
@@ -448,13 +450,15 @@ struct Draft<'a> {
     entry_mm: f64,
 }
 
-/// The hole whose drill takes field `f` of layer `l` whole: the layer's
-/// bottom within the hole's depth and the field within its circle.
+/// The hole whose drill takes field `f` of layer `l` whole: the layer
+/// within the hole's depth (a layer across its entry is milled) and the
+/// field within its circle.
 fn drilled_by(f: &CutterField, l: &RoughingLayer, holes: &[HoleSite], tol: f64) -> Option<usize> {
     holes.iter().position(|h| {
         h.drill.is_some()
             && l.z_bottom_mm >= h.z_bottom_mm - tol
             && l.z_bottom_mm < h.z_top_mm - tol
+            && l.z_top_mm <= h.z_top_mm + tol
             && f.outer.points.iter().all(|&p| h.holds(p, tol))
     })
 }

@@ -14,6 +14,7 @@
 //! Floors are finished where the feature is bottom adjacent to the
 //! product and a solid's flat bottom lies at the layer's bottom.
 
+use crate::drilling::HoleSite;
 use crate::layers::{field, without_slivers, CutterField, RoughingLayer, FLAT_SLOPE};
 use crate::operations::{assemble, mills_and_depth, tools_for, Assembly, SetupOperations};
 use crate::ToolLibrary;
@@ -72,14 +73,34 @@ fn inside(solids: &[Solid], q: Coord<f64>, z: f64) -> bool {
     })
 }
 
-/// The levels of a feature, top down: every `a_p` from its top, and at
-/// every flat bottom or top of its solids.
-fn levels(f: &RemovalFeature, solids: &[Solid], a_p: f64, tol: f64) -> Vec<f64> {
+/// The levels of a feature, top down: every `a_p` from its top, at every
+/// flat bottom or top of its solids, and at the entry and bottom of every
+/// hole (a solid of the plan may run from a hole's bottom up through the
+/// pocket above it).
+fn levels(
+    f: &RemovalFeature,
+    solids: &[Solid],
+    holes: &[HoleSite],
+    a_p: f64,
+    tol: f64,
+) -> Vec<f64> {
     let [lo, hi] = f.z_range;
     let mut out: Vec<f64> = solids
         .iter()
         .flat_map(|s| [flat(&s.lower), flat(&s.upper)])
         .flatten()
+        .chain(
+            holes
+                .iter()
+                .filter(|h| {
+                    let c = Coord {
+                        x: h.centre[0],
+                        y: h.centre[1],
+                    };
+                    solids.iter().any(|s| s.bbox.contains(&c))
+                })
+                .flat_map(|h| [h.z_top_mm, h.z_bottom_mm]),
+        )
         .filter(|&z| z > lo - tol && z < hi - tol)
         .collect();
     let steps = ((hi - lo) / a_p).ceil().max(1.0) as usize;
@@ -93,12 +114,14 @@ fn levels(f: &RemovalFeature, solids: &[Solid], a_p: f64, tol: f64) -> Vec<f64> 
 
 /// The plan's operations: each reachable machining feature layered and
 /// tooled on its own, every relation of the plan's feature sequence a
-/// precedence between the features' operations. `stock` is the stock's
+/// precedence between the features' operations; the `holes` a drill
+/// matches are drilled, after every layer above their entry. `stock` is the stock's
 /// footprint in the plan's frame (x, y); `size` the part's diagonal, mm.
 pub fn by_feature(
     plan: &Plan,
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
+    holes: &[HoleSite],
     stock: Rect<f64>,
     size: f64,
 ) -> SetupOperations {
@@ -140,7 +163,7 @@ pub fn by_feature(
         });
         let mut above = f.z_range[1];
         let mut previous: Option<MultiPolygon<f64>> = None;
-        for z in levels(f, &all[i], a_p, tol) {
+        for z in levels(f, &all[i], holes, a_p, tol) {
             let pieces: Vec<Polygon<f64>> = all[i]
                 .iter()
                 .flat_map(|s| slab::between(&s.region, &s.lower, &s.upper, z + tol).0)
@@ -184,12 +207,12 @@ pub fn by_feature(
         .iter()
         .map(|r| (r.before.clone(), r.after.clone()))
         .collect();
-    let field_tools = tools_for(&layers, &mills, &[], tol);
+    let field_tools = tools_for(&layers, &mills, holes, tol);
     let mut ops = assemble(
         Assembly {
             lib,
             a_p,
-            holes: &[],
+            holes,
             nested,
             groups: &groups,
             tol,

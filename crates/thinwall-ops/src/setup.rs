@@ -97,6 +97,7 @@ pub fn plan_setup_by_feature(
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
-    let ops = crate::planned::by_feature(&plan, lib, axial_depth_mm, stock, size);
+    let holes = holes_of(a, &frame, lib)?;
+    let ops = crate::planned::by_feature(&plan, lib, axial_depth_mm, &holes, stock, size);
     Ok((frame, ops))
 }

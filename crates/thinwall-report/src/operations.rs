@@ -47,7 +47,7 @@ impl OperationsReport {
             not_yet: vec![
                 "holes no drill of the library matches are milled with the layers (no helical or boring subtype)".into(),
                 "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
-                "the plan's relations bind the order with --by-feature only (which does not drill yet); the default keeps the geometric precedences".into(),
+                "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
             ],
         }
     }
