@@ -254,6 +254,11 @@ pub struct SetupOperations {
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
+    /// Travel between consecutive passes (their fields' centroids, a
+    /// drill's holes' mean centre) across the tool axis, in the chosen
+    /// order and in the plain one, mm.
+    pub travel_mm: f64,
+    pub plain_travel_mm: f64,
     pub time_min: f64,
 }
 
@@ -377,7 +382,17 @@ pub(crate) fn assemble(
             .filter(|w| ops[w[0]].tool.name != ops[w[1]].tool.name)
             .count()
     };
-    let grouped = tool_order(&ops, &graph);
+    let pos: Vec<[f64; 2]> = ops.iter().map(|d| d.position(&layers, holes)).collect();
+    let travel = |o: &[usize]| -> f64 {
+        o.windows(2)
+            .map(|w| {
+                let (a, b) = (pos[w[0]], pos[w[1]]);
+                (a[0] - b[0]).hypot(a[1] - b[1])
+            })
+            .sum::<f64>()
+            + 0.0
+    };
+    let grouped = tool_order(&ops, &graph, &pos);
     let order = if changes(&grouped) <= changes(&plain) {
         grouped
     } else {
@@ -403,6 +418,8 @@ pub(crate) fn assemble(
         time_min: operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0,
         tool_changes: changes(&order),
         plain_tool_changes: changes(&plain),
+        travel_mm: travel(&order),
+        plain_travel_mm: travel(&plain),
         rest: rests(&field_tools),
         other_setup: Vec::new(),
         layers,
@@ -589,6 +606,35 @@ fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
 }
 
 impl Draft<'_> {
+    /// Where it works across the tool axis: its fields' centroid, or its
+    /// holes' mean centre.
+    fn position(&self, layers: &[RoughingLayer], sites: &[HoleSite]) -> [f64; 2] {
+        use geo::Centroid;
+        let mut sum = [0.0; 3];
+        if self.stage == Stage::Drill {
+            for &h in &self.holes {
+                sum = [
+                    sum[0] + sites[h].centre[0],
+                    sum[1] + sites[h].centre[1],
+                    sum[2] + 1.0,
+                ];
+            }
+        } else {
+            for &j in &self.fields {
+                let f = &layers[self.layer].fields[j];
+                if let Some(c) = f.polygon().centroid() {
+                    let w = f.area_mm2.max(1e-12);
+                    sum = [sum[0] + w * c.x(), sum[1] + w * c.y(), sum[2] + w];
+                }
+            }
+        }
+        if sum[2] > 0.0 {
+            [sum[0] / sum[2], sum[1] / sum[2]]
+        } else {
+            [0.0, 0.0]
+        }
+    }
+
     fn operation(&self, l: &RoughingLayer, sites: &[HoleSite]) -> Operation {
         if self.stage == Stage::Drill {
             return self.drilling(sites);
@@ -756,9 +802,9 @@ fn group_edges(
 }
 
 /// A topological order keeping the tool while it has work: among the
-/// ready operations the current tool's shallowest, else the largest
-/// tool's shallowest.
-fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>) -> Vec<usize> {
+/// ready operations the current tool's nearest to where it is, else the
+/// largest tool's nearest (the shallowest on a tie).
+fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]) -> Vec<usize> {
     debug_assert!(petgraph::algo::toposort(g, None).is_ok());
     let mut waiting: Vec<usize> = (0..ops.len())
         .map(|i| {
@@ -769,22 +815,26 @@ fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>) -> Vec<usize> {
     let mut done = vec![false; ops.len()];
     let mut out = Vec::with_capacity(ops.len());
     let mut current: Option<&str> = None;
+    let mut at: Option<[f64; 2]> = None;
     while out.len() < ops.len() {
         let ready = (0..ops.len()).filter(|&i| !done[i] && waiting[i] == 0);
         let key = |&i: &usize| {
             let same = current == Some(ops[i].tool.name.as_str());
-            (!same, -ops[i].tool.diameter_mm, ops[i].layer)
+            let far = at.map_or(0.0, |p| (p[0] - pos[i][0]).hypot(p[1] - pos[i][1]));
+            (!same, -ops[i].tool.diameter_mm, far, ops[i].layer)
         };
         let Some(next) = ready.min_by(|a, b| {
             let (ka, kb) = (key(a), key(b));
             ka.0.cmp(&kb.0)
                 .then(ka.1.total_cmp(&kb.1))
-                .then(ka.2.cmp(&kb.2))
+                .then(ka.2.total_cmp(&kb.2))
+                .then(ka.3.cmp(&kb.3))
         }) else {
             break;
         };
         done[next] = true;
         current = Some(ops[next].tool.name.as_str());
+        at = Some(pos[next]);
         for n in g.neighbors_directed(NodeIndex::new(next), petgraph::Direction::Outgoing) {
             waiting[n.index()] -= 1;
         }

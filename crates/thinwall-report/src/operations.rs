@@ -63,13 +63,15 @@ impl OperationsReport {
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "{}: {} layer(s) of at most {:.2} mm, {} operation(s), {} tool change(s) ({} layer by layer), about {:.1} min",
+            "{}: {} layer(s) of at most {:.2} mm, {} operation(s), {} tool change(s) ({} layer by layer), travel {:.0} mm ({:.0}), about {:.1} min",
             self.part,
             r.layers.len(),
             r.axial_depth_mm,
             r.operations.len(),
             r.tool_changes,
             r.plain_tool_changes,
+            r.travel_mm,
+            r.plain_travel_mm,
             r.time_min
         );
         let _ = writeln!(
