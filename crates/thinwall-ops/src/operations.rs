@@ -155,12 +155,17 @@ impl Operation {
     }
 
     /// Whether `next` continues it: the same tool, stage and feature, a
-    /// milling stage.
+    /// milling stage, a deeper layer (passes go shallow to deep).
     fn continued_by(&self, next: &Operation) -> bool {
+        let deeper = match (self.passes.last(), next.passes.first()) {
+            (Some(a), Some(b)) => b.layer > a.layer,
+            _ => false,
+        };
         self.stage != Stage::Drill
             && next.stage == self.stage
             && next.tool == self.tool
             && next.feature == self.feature
+            && deeper
     }
 
     /// Take `next`'s passes and figures.
