@@ -446,7 +446,7 @@ fn largest_tool_fits(path: &std::path::Path, part: &Part, faces: &[FaceReach]) -
         };
         for f in faces.iter().filter(|f| m.bottom_faces.contains(&f.face)) {
             let Some(d) = f.largest_tool_mm else { continue };
-            // The search's step (0.01 mm) and the 128-gon disks.
+            // The size is one judged whole; the 128-gon disks.
             assert!(
                 d <= fits * (1.0 + 1e-3) + 0.02,
                 "{} {}: floor #{} reached whole by Ø{d}, only Ø{fits} fits",

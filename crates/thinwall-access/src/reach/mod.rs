@@ -473,8 +473,9 @@ fn face_reach(
     let note = (j.away > 0.5 * j.area && j.area > 0.0).then(|| {
         "turned away from the tool axis (an undercut): another set-up, or a tilted axis".to_string()
     });
+    let given_whole = judged[0].1.fraction() >= 1.0 - WHOLE_SHARE;
     let largest_tool_mm = (largest && *contact == Contact::Floor)
-        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own))
+        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, given_whole))
         .flatten();
     FaceReach {
         face: face.step_id,
@@ -500,15 +501,23 @@ fn face_reach(
 /// Smallest tool the largest-tool search tries, mm.
 pub const SMALLEST_TOOL: f64 = 0.5;
 
+/// The largest-tool search stops when the sizes that reach the floor whole
+/// and that do not are this close (relative), or 0.01 mm apart.
+pub const TOOL_PRECISION: f64 = 0.005;
+
 /// The largest tool (the run's proportions) that reaches the whole floor
-/// `own` on the scene's axis, to 0.01 mm: bisection between
-/// [`SMALLEST_TOOL`] and the face's size.
+/// `own` on the scene's axis, within [`TOOL_PRECISION`]: the run's own
+/// tool brackets it (`given_whole`: whether it reached the floor whole),
+/// doubling up or halving down to [`SMALLEST_TOOL`] until the answer
+/// changes, up to twice the face's size, then bisecting in proportion.
+/// The result is always a size judged whole.
 pub fn largest_tool(
     a: &PartAnalysis,
     mesh: &Mesh,
     ctx: &Ctx,
     scene: &Scene,
     own: u32,
+    given_whole: bool,
 ) -> Option<f64> {
     let whole = |d: f64| {
         let c = Ctx {
@@ -518,18 +527,38 @@ pub fn largest_tool(
         };
         judge(a, mesh, &c, scene, own).1.fraction() >= 1.0 - WHOLE_SHARE
     };
-    if !whole(SMALLEST_TOOL) {
-        return None;
-    }
     let f = mesh.faces[own as usize].face;
-    let bb = &a.props(f).bbox;
-    let mut hi = 2.0 * bb.diagonal().max(SMALLEST_TOOL);
-    if whole(hi) {
-        return Some(hi);
-    }
-    let mut lo = SMALLEST_TOOL;
-    while hi - lo > 0.01 {
-        let mid = 0.5 * (lo + hi);
+    let limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
+    let given = ctx.tool.diameter.clamp(SMALLEST_TOOL, limit);
+    let (mut lo, mut hi) = if given_whole || whole(given) {
+        // Up: the first size that fails bounds it.
+        let mut lo = given;
+        loop {
+            if lo >= limit {
+                return Some(limit);
+            }
+            let next = (2.0 * lo).min(limit);
+            if !whole(next) {
+                break (lo, next);
+            }
+            lo = next;
+        }
+    } else {
+        // Down: the first size that reaches it whole bounds it.
+        let mut hi = given;
+        loop {
+            if hi <= SMALLEST_TOOL {
+                return None;
+            }
+            let next = (0.5 * hi).max(SMALLEST_TOOL);
+            if whole(next) {
+                break (next, hi);
+            }
+            hi = next;
+        }
+    };
+    while hi / lo > 1.0 + TOOL_PRECISION && hi - lo > 0.01 {
+        let mid = (lo * hi).sqrt();
         if whole(mid) {
             lo = mid;
         } else {
