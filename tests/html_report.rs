@@ -361,5 +361,5 @@ fn operations_page_holds_every_operation_and_its_fields() {
         }
         assert!(data["palette"][format!("ops.{}", o["stage"].as_str().unwrap())].is_string());
     }
-    assert_eq!(drills, 4);
+    assert_eq!(drills, 5);
 }

@@ -56,8 +56,10 @@ fn drilling(p: &SetupOperations, tool: &str) -> (DrillKind, usize, f64) {
 /// - Ø6.6 through the pocket's floor (12 thick, entered from below by the
 ///   recognizer, drilled from up): DR6.6, through, π 3.3² · 12 = 410.50,
 ///   after every milling of the pocket's layer;
-/// - Ø8 through the floor: no drill matches, the Ø6 end mill mills it in
-///   the four layers below the floor, π 4² = 50.27 mm² each.
+/// - Ø8 through the floor: no drill matches; the Ø6 end mill (between half
+///   and 0.8 of it) spirals down it, helical, π 4² · 12 = 603.19, after
+///   the pocket's layer too; nothing is left below the floor to mill
+///   in layers.
 #[test]
 fn holes_a_drill_matches_are_drilled_by_kind() {
     let p = plan(&text(), [0.0, 0.0, 1.0]);
@@ -68,26 +70,38 @@ fn holes_a_drill_matches_are_drilled_by_kind() {
         ("DR10", DrillKind::Blind, 1, pi * 25.0 * 12.0),
         ("DR3.3", DrillKind::Peck, 1, pi * 1.65f64.powi(2) * 18.0),
         ("DR6.6", DrillKind::Through, 1, pi * 3.3f64.powi(2) * 12.0),
+        ("EM6", DrillKind::Helical, 1, pi * 16.0 * 12.0),
     ] {
         let (k, count, volume) = drilling(&p, tool);
         assert_eq!((k, count), (kind, n), "{tool}");
         assert!(close(volume, v), "{tool}: {volume} mm³, by hand {v}");
     }
     assert_eq!(p.holes.len(), 6);
-    let eight = p.holes.iter().find(|h| (h.diameter_mm - 8.0).abs() < 1e-6);
-    assert!(eight.is_some_and(|h| h.drill.is_none()));
-    // The Ø8 is milled below the floor (z 12) by the Ø6, four layers.
-    let milled: Vec<f64> = p
+    assert!(p.holes.iter().all(|h| h.drill.is_some()));
+    // Below the floor (z 12) every field is a hole's, so no milling.
+    assert!(p
         .operations
         .iter()
-        .filter(|o| o.z_top_mm <= 12.0 + 1e-9 && o.stage != Stage::Drill)
-        .flat_map(|o| {
-            assert_eq!(o.tool, "EM6");
-            o.passes.iter().map(|p| p.area_mm2)
-        })
-        .collect();
-    assert_eq!(milled.len(), 4);
-    assert!(milled.iter().all(|&a| close(a, 16.0 * pi)), "{milled:?}");
+        .all(|o| o.stage == Stage::Drill || o.z_bottom_mm >= 12.0 - 1e-9));
+    // The helix: 12 / tan 3° mm at Ø6's feed.
+    let em6 = p
+        .operations
+        .iter()
+        .find(|o| o.stage == Stage::Drill && o.tool == "EM6")
+        .unwrap();
+    let lib = ToolLibrary::default_tools();
+    let feed = lib
+        .tools
+        .iter()
+        .find(|t| t.name == "EM6")
+        .unwrap()
+        .feed_mm_min();
+    let helix = 12.0 / 3f64.to_radians().tan() / feed;
+    assert!(
+        (em6.time_min - helix).abs() <= 1e-9 * helix,
+        "{}",
+        em6.time_min
+    );
     // DR6.6 enters at the floor: after every operation above it.
     let dr66 = p.operations.iter().find(|o| o.tool == "DR6.6").unwrap();
     let above: Vec<usize> = p

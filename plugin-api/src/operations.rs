@@ -254,7 +254,7 @@ mod tests {
                 assert_eq!(st, tw_status::TW_OK);
                 drills += usize::from(stage == tw_stage::TW_STAGE_DRILL);
             }
-            assert_eq!(drills, 4);
+            assert_eq!(drills, 5);
             let name = CStr::from_ptr(tw_operation_tool(ops, 0)).to_str().unwrap();
             let first = &(&*ops).report.setup.operations[0];
             assert_eq!(name, first.tool);

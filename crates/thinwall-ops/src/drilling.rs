@@ -1,9 +1,9 @@
 //! Holes to drill (Cohen et al.: holes with subtypes, one drill per
 //! diameter): every hole the machining features find along the set-up's
-//! tool axis whose diameter a drill of the library matches. Its material
-//! leaves the milling layers (the cutter fields that lie within its
-//! circle over its depth) and becomes one drilling operation per drill and
-//! subtype.
+//! tool axis whose diameter a drill of the library matches, or else that
+//! an end mill can mill down a helix. Its material leaves the milling
+//! layers (the cutter fields that lie within its circle over its depth)
+//! and becomes one drilling operation per tool and subtype.
 
 use crate::tools::{CuttingTool, ToolLibrary};
 use serde::Serialize;
@@ -28,7 +28,29 @@ pub enum DrillKind {
     /// Deeper than [`PECK_DEPTH_RATIO`] diameters: drilled in pecks to
     /// clear the chips.
     Peck,
+    /// No drill matches: an end mill between half and
+    /// [`HELICAL_MAX_SHARE`] of the hole's diameter goes down a helix
+    /// ([`HELIX_RAMP_DEG`]) and takes it whole.
+    Helical,
 }
+
+impl DrillKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            DrillKind::Through => "through",
+            DrillKind::Blind => "blind",
+            DrillKind::Peck => "peck",
+            DrillKind::Helical => "helical",
+        }
+    }
+}
+
+/// A helically milled hole's end mill is at most this share of its
+/// diameter (room to spiral), and at least half (no core left standing).
+pub const HELICAL_MAX_SHARE: f64 = 0.8;
+
+/// The helix's ramp angle, degrees.
+pub const HELIX_RAMP_DEG: f64 = 3.0;
 
 /// A hole along the set-up's axis, in the removal frame.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -42,7 +64,8 @@ pub struct HoleSite {
     pub z_top_mm: f64,
     pub z_bottom_mm: f64,
     pub kind: DrillKind,
-    /// The drill of the library that makes it, if one matches.
+    /// The tool of the library that makes it: a matching drill, or the
+    /// end mill of a helical hole; none: the layers mill it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub drill: Option<String>,
 }
@@ -64,6 +87,7 @@ pub fn hole_sites(
     lib: &ToolLibrary,
 ) -> Vec<HoleSite> {
     let drills: Vec<&CuttingTool> = lib.drills().collect();
+    let mills: Vec<&CuttingTool> = lib.end_mills().collect();
     features
         .iter()
         .filter(|m| m.kind == MachiningKind::Hole && m.reachable != Some(false))
@@ -93,6 +117,23 @@ pub fn hole_sites(
             } else {
                 DrillKind::Blind
             };
+            let drill = drills
+                .iter()
+                .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)
+                .min_by(|a, b| {
+                    (a.diameter_mm - diameter)
+                        .abs()
+                        .total_cmp(&(b.diameter_mm - diameter).abs())
+                });
+            // Else the largest end mill that spirals down it whole.
+            let helical = mills.iter().find(|t| {
+                t.diameter_mm <= HELICAL_MAX_SHARE * diameter && 2.0 * t.diameter_mm >= diameter
+            });
+            let (kind, tool) = match (drill, helical) {
+                (Some(t), _) => (kind, Some(t)),
+                (None, Some(t)) => (DrillKind::Helical, Some(t)),
+                (None, None) => (kind, None),
+            };
             Some(HoleSite {
                 id: m.id.to_string(),
                 centre: [d.dot(&frame.x), d.dot(&frame.y)],
@@ -100,23 +141,21 @@ pub fn hole_sites(
                 z_top_mm: top,
                 z_bottom_mm: top - m.depth,
                 kind,
-                drill: drills
-                    .iter()
-                    .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)
-                    .min_by(|a, b| {
-                        (a.diameter_mm - diameter)
-                            .abs()
-                            .total_cmp(&(b.diameter_mm - diameter).abs())
-                    })
-                    .map(|t| t.name.clone()),
+                drill: tool.map(|t| t.name.clone()),
             })
         })
         .collect()
 }
 
-/// Drilling time of one hole: its depth at the drill's feed v_f, min.
-pub fn drilling_time_min(t: &CuttingTool, depth_mm: f64) -> f64 {
-    depth_mm / t.feed_mm_min()
+/// Time of one hole of `kind`: its depth at the drill's feed v_f, or a
+/// helix at [`HELIX_RAMP_DEG`] down that depth (depth / tan(ramp) long) at
+/// the end mill's, min.
+pub fn drilling_time_min(t: &CuttingTool, kind: DrillKind, depth_mm: f64) -> f64 {
+    let path = match kind {
+        DrillKind::Helical => depth_mm / HELIX_RAMP_DEG.to_radians().tan(),
+        _ => depth_mm,
+    };
+    path / t.feed_mm_min()
 }
 
 /// The holes of the analysed part along its set-up's axis (`frame.z`),

@@ -708,7 +708,7 @@ impl Draft<'_> {
             volume_mm3: self.drilled_mm3,
             time_min: holes
                 .iter()
-                .map(|h| drilling_time_min(self.tool, h.z_top_mm - h.z_bottom_mm))
+                .map(|h| drilling_time_min(self.tool, h.kind, h.z_top_mm - h.z_bottom_mm))
                 .sum(),
             passes: Vec::new(),
             after: Vec::new(),

@@ -45,7 +45,7 @@ impl OperationsReport {
             tools,
             setup,
             not_yet: vec![
-                "holes no drill of the library matches are milled with the layers (no helical or boring subtype)".into(),
+                "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
             ],
@@ -111,9 +111,10 @@ impl OperationsReport {
                     g.boundary_mm2, g.full_cut_mm2, g.roughing_mm2
                 )
             });
-            let layers = match (o.passes.first(), o.passes.last()) {
-                (Some(a), Some(b)) if a.layer == b.layer => format!("{}", a.layer + 1),
-                (Some(a), Some(b)) => format!("{}-{}", a.layer + 1, b.layer + 1),
+            let layers = match (o.passes.first(), o.passes.last(), o.drill) {
+                (Some(a), Some(b), _) if a.layer == b.layer => format!("{}", a.layer + 1),
+                (Some(a), Some(b), _) => format!("{}-{}", a.layer + 1, b.layer + 1),
+                (_, _, Some(kind)) => kind.name().to_string(),
                 _ => "-".to_string(),
             };
             let _ = writeln!(
