@@ -709,8 +709,15 @@
         const layer = rep.setup.layers[p.layer];
         for (const j of p.fields) {
           const f = layer.fields[j];
+          // Each contour at the pass's bottom and top, joined by a few
+          // uprights: the slab the pass takes.
+          const hex = new T.Color(tint(o)).getHex();
           for (const c of [f.outer, ...f.islands]) {
-            rings([c.points.map((q) => world(q, p.z_bottom_mm))], new T.Color(tint(o)).getHex());
+            rings([c.points.map((q) => world(q, p.z_bottom_mm)), c.points.map((q) => world(q, p.z_top_mm))], hex);
+            const every = Math.max(1, Math.ceil(c.points.length / 24));
+            const ups = [];
+            c.points.forEach((q, k) => { if (k % every === 0) ups.push(world(q, p.z_bottom_mm), world(q, p.z_top_mm)); });
+            marks.add(line(ups, hex));
           }
         }
       }
