@@ -8,6 +8,7 @@
 pub mod drilling;
 pub mod layers;
 pub mod operations;
+mod order;
 pub mod planned;
 pub mod rest;
 pub mod setup;

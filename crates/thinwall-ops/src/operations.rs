@@ -1,38 +1,27 @@
-//! Operations and their order (Matsuda's milling features per tool and
-//! depth, Popma's modular regions, ordered as Cohen et al. do to cut tool
-//! changes).
+//! Operations (Matsuda's milling features per tool and depth, Popma's
+//! modular regions, Cohen et al.'s stages).
 //!
-//! Every layer's fields get their tools ([`crate::rest`]). An operation is
-//! one tool in one layer at one stage: **rough** (the field's first tool),
+//! Every layer's fields get their tools ([`crate::rest`]). A pass is one
+//! tool in one layer at one stage: **rough** (the field's first tool),
 //! **semi-finish** (a smaller tool in what larger ones left: rest
 //! machining) or **finish** (the floor under a field, Popma's separate
 //! bottom layer: its last `finish_axial_depth_mm` at finishing stepover).
-//! Rough and semi-finish operations carry their share's regions (boundary,
-//! full cut, roughing) and are timed region by region.
-//!
-//! A tool may work in a layer once what lies above what it clears is
-//! gone: when layer k + 1's section lies within layer k's, what tool T
-//! clears in it lies within what T cleared in layer k (an opening keeps
-//! inclusion), so T's operations follow the same and larger tools' of
-//! layer k only; otherwise they follow all of layer k's. Within a field a
-//! smaller tool follows the larger ones, and a floor's finish follows the
-//! field's milling by the same and larger tools.
-//!
-//! **Drill** operations take the holes a drill of the library matches
+//! Rough and semi-finish passes carry their share's regions (boundary,
+//! full cut, roughing) and are timed region by region. **Drill**
+//! operations take the holes a drill matches, or an end mill spirals down
 //! ([`crate::drilling`]): the cutter fields within a hole's circle over
-//! its depth leave the milling, and one operation per drill and kind
-//! (through, blind, peck) drills them all, after every operation of the
-//! layers above their entry. The order is a
-//! topological order of that graph that keeps the tool in the spindle
-//! while it has work, shallow layers first; the plain order is layer by
-//! layer, the largest tool first, finishing last.
+//! its depth leave the milling, and one operation per tool and kind drills
+//! them all.
+//!
+//! The passes are ordered (`order.rs`) and consecutive passes of one
+//! tool, stage and feature, going deeper, are joined into one operation.
 
 use crate::drilling::{drilling_time_min, DrillKind, HoleSite};
 use crate::layers::{roughing_layers, CutterField, LayerOptions, RoughingLayer};
+use crate::order::{group_edges, nested, precedence, tool_order};
 use crate::rest::{select, Adjacency, FieldTools, ToolShare};
 use crate::tools::{CuttingTool, ToolLibrary};
-use geo::{Area, BooleanOps, MultiPolygon};
-use petgraph::graph::{DiGraph, NodeIndex};
+use petgraph::graph::NodeIndex;
 use rayon::prelude::*;
 use serde::Serialize;
 use thinwall_plan::removal::Removal;
@@ -453,11 +442,11 @@ fn rests(field_tools: &[Vec<FieldTools>]) -> Vec<Rest> {
 }
 
 /// An operation before it has a place.
-struct Draft<'a> {
-    tool: &'a CuttingTool,
-    layer: usize,
-    stage: Stage,
-    fields: Vec<usize>,
+pub(crate) struct Draft<'a> {
+    pub(crate) tool: &'a CuttingTool,
+    pub(crate) layer: usize,
+    pub(crate) stage: Stage,
+    pub(crate) fields: Vec<usize>,
     adjacency: Adjacency,
     area: f64,
     regions: Option<Regions>,
@@ -469,7 +458,7 @@ struct Draft<'a> {
     drill: Option<DrillKind>,
     holes: Vec<usize>,
     drilled_mm3: f64,
-    entry_mm: f64,
+    pub(crate) entry_mm: f64,
 }
 
 /// The hole whose drill takes field `f` of layer `l` whole: the layer
@@ -716,134 +705,4 @@ impl Draft<'_> {
             holes: holes.iter().map(|h| h.id.clone()).collect(),
         }
     }
-}
-
-/// Per layer, whether its section lies within the one above (walls going
-/// straight down or closing in): then what any tool clears in it lies
-/// within what the same tool cleared above (an opening keeps inclusion).
-fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
-    let section = |l: &RoughingLayer| -> MultiPolygon<f64> {
-        MultiPolygon::new(l.fields.iter().map(|f| f.polygon()).collect())
-    };
-    let sections: Vec<MultiPolygon<f64>> = layers.iter().map(section).collect();
-    let tiny = (1e-6 * size).powi(2);
-    (0..layers.len())
-        .map(|k| {
-            k > 0 && {
-                let extra = sections[k].difference(&sections[k - 1]).unsigned_area();
-                extra <= tiny.max(1e-9 * layers[k].area_mm2)
-            }
-        })
-        .collect()
-}
-
-/// Edges from each operation to those that must follow it (module
-/// docs): between layers by `nested`; within a layer and a field from
-/// larger tools to smaller, and from milling to the floor's finish.
-fn precedence(
-    ops: &[Draft],
-    layers: &[RoughingLayer],
-    nested: &[bool],
-    bottoms: &[f64],
-    tol: f64,
-) -> DiGraph<usize, ()> {
-    let mut g = DiGraph::new();
-    let nodes: Vec<NodeIndex> = (0..ops.len()).map(|i| g.add_node(i)).collect();
-    for (i, d) in ops.iter().enumerate() {
-        for (j, e) in ops.iter().enumerate() {
-            if i == j || e.stage == Stage::Drill {
-                continue;
-            }
-            if d.stage == Stage::Drill {
-                // A drill enters once everything above its holes is gone.
-                if bottoms[e.layer] >= d.entry_mm - tol {
-                    g.add_edge(nodes[j], nodes[i], ());
-                }
-                continue;
-            }
-            if e.stage == Stage::Finish {
-                continue;
-            }
-            let larger = e.tool.diameter_mm > d.tool.diameter_mm;
-            let same = e.tool.name == d.tool.name;
-            let same_feature = layers[e.layer].feature == layers[d.layer].feature;
-            let follows = if e.layer + 1 == d.layer && same_feature {
-                d.stage != Stage::Finish && (!nested[d.layer] || larger || same)
-            } else if e.layer == d.layer {
-                let shared = e.fields.iter().any(|f| d.fields.contains(f));
-                shared && (larger || (same && d.stage == Stage::Finish))
-            } else {
-                false
-            };
-            if follows {
-                g.add_edge(nodes[j], nodes[i], ());
-            }
-        }
-    }
-    g
-}
-
-/// Every operation of a feature before every operation of a feature
-/// `groups` puts after it.
-fn group_edges(
-    g: &mut DiGraph<usize, ()>,
-    ops: &[Draft],
-    layers: &[RoughingLayer],
-    groups: &[(String, String)],
-) {
-    let of = |id: &str| -> Vec<usize> {
-        (0..ops.len())
-            .filter(|&i| layers[ops[i].layer].feature.as_deref() == Some(id))
-            .collect()
-    };
-    for (before, after) in groups {
-        let (a, b) = (of(before), of(after));
-        for &i in &a {
-            for &j in &b {
-                g.update_edge(NodeIndex::new(i), NodeIndex::new(j), ());
-            }
-        }
-    }
-}
-
-/// A topological order keeping the tool while it has work: among the
-/// ready operations the current tool's nearest to where it is, else the
-/// largest tool's nearest (the shallowest on a tie).
-fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]) -> Vec<usize> {
-    debug_assert!(petgraph::algo::toposort(g, None).is_ok());
-    let mut waiting: Vec<usize> = (0..ops.len())
-        .map(|i| {
-            g.neighbors_directed(NodeIndex::new(i), petgraph::Direction::Incoming)
-                .count()
-        })
-        .collect();
-    let mut done = vec![false; ops.len()];
-    let mut out = Vec::with_capacity(ops.len());
-    let mut current: Option<&str> = None;
-    let mut at: Option<[f64; 2]> = None;
-    while out.len() < ops.len() {
-        let ready = (0..ops.len()).filter(|&i| !done[i] && waiting[i] == 0);
-        let key = |&i: &usize| {
-            let same = current == Some(ops[i].tool.name.as_str());
-            let far = at.map_or(0.0, |p| (p[0] - pos[i][0]).hypot(p[1] - pos[i][1]));
-            (!same, -ops[i].tool.diameter_mm, far, ops[i].layer)
-        };
-        let Some(next) = ready.min_by(|a, b| {
-            let (ka, kb) = (key(a), key(b));
-            ka.0.cmp(&kb.0)
-                .then(ka.1.total_cmp(&kb.1))
-                .then(ka.2.total_cmp(&kb.2))
-                .then(ka.3.cmp(&kb.3))
-        }) else {
-            break;
-        };
-        done[next] = true;
-        current = Some(ops[next].tool.name.as_str());
-        at = Some(pos[next]);
-        for n in g.neighbors_directed(NodeIndex::new(next), petgraph::Direction::Outgoing) {
-            waiting[n.index()] -= 1;
-        }
-        out.push(next);
-    }
-    out
 }
