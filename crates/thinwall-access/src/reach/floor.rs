@@ -192,7 +192,11 @@ fn minkowski(a: &[[f64; 2]], b: &[[f64; 2]]) -> Vec<[f64; 2]> {
     // Each from its lowest corner (then leftmost).
     let start = |p: &[[f64; 2]]| {
         (0..p.len())
-            .min_by(|&i, &j| p[i][1].total_cmp(&p[j][1]).then(p[i][0].total_cmp(&p[j][0])))
+            .min_by(|&i, &j| {
+                p[i][1]
+                    .total_cmp(&p[j][1])
+                    .then(p[i][0].total_cmp(&p[j][0]))
+            })
             .unwrap_or(0)
     };
     let (sa, sb) = (start(a), start(b));
@@ -263,7 +267,10 @@ mod tests {
                 .collect();
             let hull = MultiPoint::from(sums).convex_hull().unsigned_area();
             let got = grown(&pts, &d).unwrap().unsigned_area();
-            assert!((got - hull).abs() <= 1e-9 * hull, "{pts:?}: {got} vs {hull}");
+            assert!(
+                (got - hull).abs() <= 1e-9 * hull,
+                "{pts:?}: {got} vs {hull}"
+            );
         }
     }
 
