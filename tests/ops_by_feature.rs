@@ -6,11 +6,9 @@
 mod common;
 
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
-use thinwall_geom::Vector3;
 use thinwall_ops::operations::Stage;
-use thinwall_ops::planned::by_feature;
+use thinwall_ops::setup::along_plan;
 use thinwall_ops::ToolLibrary;
-use thinwall_plan::removal::frame_of;
 use thinwall_plan::removal::pieces::Height;
 
 /// On every thin-walled part and recognition fixture whose plan has
@@ -43,21 +41,7 @@ fn operations_keep_every_relation_of_the_plan() {
             &part,
             Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
         );
-        let (_, lo, hi) = frame_of(&a, Vector3::z());
-        let stock = geo::Rect::new(
-            geo::Coord { x: lo[0], y: lo[1] },
-            geo::Coord { x: hi[0], y: hi[1] },
-        );
-        let (frame, _, _) = frame_of(&a, Vector3::z());
-        let holes = thinwall_ops::drilling::holes_of(&a, &frame, &lib).unwrap();
-        let ops = by_feature(
-            &plan,
-            &lib,
-            None,
-            &holes,
-            stock,
-            a.bounding_box().diagonal(),
-        );
+        let (_, ops) = along_plan(&a, &plan, &lib, None).unwrap();
         // The steps of each feature's operations.
         let steps = |id: &str| -> Vec<usize> {
             ops.operations

@@ -161,7 +161,7 @@ impl Operation {
     fn absorb(&mut self, next: Operation) {
         self.z_top_mm = self.z_top_mm.max(next.z_top_mm);
         self.z_bottom_mm = self.z_bottom_mm.min(next.z_bottom_mm);
-        self.adjacency = merged(self.adjacency, next.adjacency);
+        self.adjacency = self.adjacency.with(next.adjacency);
         self.area_mm2 += next.area_mm2;
         if let (Some(a), Some(b)) = (&mut self.regions, next.regions) {
             a.boundary_mm2 += b.boundary_mm2;
@@ -172,18 +172,6 @@ impl Operation {
         self.time_min += next.time_min;
         self.passes.extend(next.passes);
         self.after.extend(next.after);
-    }
-}
-
-/// Side and bottom adjacency together.
-fn merged(a: Adjacency, b: Adjacency) -> Adjacency {
-    let side = |x| matches!(x, Adjacency::Side | Adjacency::SideAndBottom);
-    let bottom = |x| matches!(x, Adjacency::Bottom | Adjacency::SideAndBottom);
-    match (side(a) || side(b), bottom(a) || bottom(b)) {
-        (true, true) => Adjacency::SideAndBottom,
-        (true, false) => Adjacency::Side,
-        (false, true) => Adjacency::Bottom,
-        (false, false) => Adjacency::None,
     }
 }
 
@@ -274,14 +262,12 @@ pub fn operations(
         },
     );
     let tol = 1e-6 * r.size.max(1.0);
-    let nested = nested(&layers, r.size);
     let field_tools = tools_for(&layers, &mills, holes, tol);
     assemble(
         Assembly {
             lib,
             a_p,
             holes,
-            nested,
             groups: &[],
             tol,
         },
@@ -328,9 +314,6 @@ pub(crate) struct Assembly<'a> {
     pub lib: &'a ToolLibrary,
     pub a_p: f64,
     pub holes: &'a [HoleSite],
-    /// Per layer, whether its section lies within the previous layer's of
-    /// the same feature.
-    pub nested: Vec<bool>,
     /// Machining features (by `RoughingLayer::feature`) whose operations
     /// all come before another's: the plan's relations.
     pub groups: &'a [(String, String)],
@@ -368,7 +351,7 @@ pub(crate) fn assemble(
             .then(a.drill.cmp(&b.drill))
     });
     let bottoms: Vec<f64> = layers.iter().map(|l| l.z_bottom_mm).collect();
-    let mut graph = precedence(&ops, &layers, &x.nested, &bottoms, tol);
+    let mut graph = precedence(&ops, &layers, &nested(&layers, tol), &bottoms, tol);
     group_edges(&mut graph, &ops, &layers, x.groups);
     let plain: Vec<usize> = (0..ops.len()).collect();
     let changes = |o: &[usize]| {
@@ -557,7 +540,6 @@ fn draft<'a>(
         drilled_mm3: 0.0,
         entry_mm: 0.0,
     };
-    let (mut side, mut bottom) = (false, false);
     for (j, ft) in fts.iter().enumerate() {
         let Some(s) = ft.shares.iter().find(|s| s.tool == t.name) else {
             continue;
@@ -572,16 +554,9 @@ fn draft<'a>(
             continue;
         }
         d.fields.push(j);
-        side |= matches!(ft.adjacency, Adjacency::Side | Adjacency::SideAndBottom);
-        bottom |= matches!(ft.adjacency, Adjacency::Bottom | Adjacency::SideAndBottom);
+        d.adjacency = d.adjacency.with(ft.adjacency);
         add_share(&mut d, s, stage);
     }
-    d.adjacency = match (side, bottom) {
-        (true, true) => Adjacency::SideAndBottom,
-        (true, false) => Adjacency::Side,
-        (false, true) => Adjacency::Bottom,
-        (false, false) => Adjacency::None,
-    };
     (!d.fields.is_empty()).then_some(d)
 }
 

@@ -22,17 +22,16 @@ use petgraph::graph::{DiGraph, NodeIndex};
 /// Per layer, whether its section lies within the one above (walls going
 /// straight down or closing in): then what any tool clears in it lies
 /// within what the same tool cleared above (an opening keeps inclusion).
-pub(crate) fn nested(layers: &[RoughingLayer], size: f64) -> Vec<bool> {
+pub(crate) fn nested(layers: &[RoughingLayer], tol: f64) -> Vec<bool> {
     let section = |l: &RoughingLayer| -> MultiPolygon<f64> {
         MultiPolygon::new(l.fields.iter().map(|f| f.polygon()).collect())
     };
     let sections: Vec<MultiPolygon<f64>> = layers.iter().map(section).collect();
-    let tiny = (1e-6 * size).powi(2);
     (0..layers.len())
         .map(|k| {
-            k > 0 && {
+            k > 0 && layers[k].feature == layers[k - 1].feature && {
                 let extra = sections[k].difference(&sections[k - 1]).unsigned_area();
-                extra <= tiny.max(1e-9 * layers[k].area_mm2)
+                extra <= (tol * tol).max(1e-9 * layers[k].area_mm2)
             }
         })
         .collect()

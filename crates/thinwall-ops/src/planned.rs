@@ -18,7 +18,7 @@ use crate::drilling::HoleSite;
 use crate::layers::{field, without_slivers, CutterField, RoughingLayer, FLAT_SLOPE};
 use crate::operations::{assemble, mills_and_depth, tools_for, Assembly, SetupOperations};
 use crate::ToolLibrary;
-use geo::{Area, BoundingRect, Contains, Coord, MultiPolygon, Point, Polygon, Rect};
+use geo::{BoundingRect, Contains, Coord, MultiPolygon, Point, Polygon, Rect};
 use std::collections::HashMap;
 use thinwall_classify::ProductAdjacency;
 use thinwall_plan::features::RemovalFeature;
@@ -60,17 +60,12 @@ fn flat(h: &Height) -> Option<f64> {
     }
 }
 
-/// Whether (x, y) at height z lies inside one of `solids`.
-fn inside(solids: &[Solid], q: Coord<f64>, z: f64) -> bool {
-    solids.iter().any(|s| {
-        s.bbox.min().x <= q.x
-            && q.x <= s.bbox.max().x
-            && s.bbox.min().y <= q.y
-            && q.y <= s.bbox.max().y
-            && s.lower.at(q.x, q.y) <= z
-            && z < s.upper.at(q.x, q.y)
-            && s.region.contains(&Point::from(q))
-    })
+/// Whether (x, y) at height z lies inside the solid.
+fn inside(s: &Solid, q: Coord<f64>, z: f64) -> bool {
+    s.bbox.contains(&q)
+        && s.lower.at(q.x, q.y) <= z
+        && z < s.upper.at(q.x, q.y)
+        && s.region.contains(&Point::from(q))
 }
 
 /// The levels of a feature, top down: every `a_p` from its top, at every
@@ -142,19 +137,10 @@ pub fn by_feature(
         .collect();
     let all: Vec<Vec<Solid>> = order.iter().map(|f| solids(f)).collect();
     let mut layers: Vec<RoughingLayer> = Vec::new();
-    let mut nested: Vec<bool> = Vec::new();
     for (i, f) in order.iter().enumerate() {
         let earlier: Vec<&Solid> = all[..i].iter().flatten().collect();
-        let air = |q: Coord<f64>, z: f64| {
-            let outside = q.x <= stock.min().x
-                || q.x >= stock.max().x
-                || q.y <= stock.min().y
-                || q.y >= stock.max().y;
-            outside
-                || earlier
-                    .iter()
-                    .any(|s| inside(std::slice::from_ref(*s), q, z))
-        };
+        let air =
+            |q: Coord<f64>, z: f64| !stock.contains(&q) || earlier.iter().any(|s| inside(s, q, z));
         let bottom = f.classification.as_ref().is_some_and(|c| {
             matches!(
                 c.product_adjacency,
@@ -162,7 +148,6 @@ pub fn by_feature(
             )
         });
         let mut above = f.z_range[1];
-        let mut previous: Option<MultiPolygon<f64>> = None;
         for z in levels(f, &all[i], holes, a_p, tol) {
             let pieces: Vec<Polygon<f64>> = all[i]
                 .iter()
@@ -174,12 +159,6 @@ pub fn by_feature(
                 .filter_map(|p| without_slivers(p, tol))
                 .map(|p| field(&p, 1e-4 * size.max(1.0), smallest, &|q| air(q, z + tol)))
                 .collect();
-            let section = MultiPolygon::new(fields.iter().map(|f| f.polygon()).collect());
-            nested.push(previous.as_ref().is_some_and(|prev| {
-                use geo::BooleanOps;
-                section.difference(prev).unsigned_area()
-                    <= tol * tol + 1e-9 * section.unsigned_area()
-            }));
             let floors: Vec<&Solid> = all[i]
                 .iter()
                 .filter(|s| bottom && flat(&s.lower).is_some_and(|h| (h - z).abs() <= tol))
@@ -197,7 +176,6 @@ pub fn by_feature(
                 area_mm2: fields.iter().map(|f| f.area_mm2).sum(),
                 fields,
             });
-            previous = Some(section);
             above = z;
         }
     }
@@ -213,7 +191,6 @@ pub fn by_feature(
             lib,
             a_p,
             holes,
-            nested,
             groups: &groups,
             tol,
         },

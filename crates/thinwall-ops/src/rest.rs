@@ -68,6 +68,32 @@ pub enum Adjacency {
     SideAndBottom,
 }
 
+impl Adjacency {
+    /// The class of a place along part contours (`side`) and over a floor
+    /// (`bottom`).
+    pub fn of(side: bool, bottom: bool) -> Self {
+        match (side, bottom) {
+            (true, true) => Adjacency::SideAndBottom,
+            (true, false) => Adjacency::Side,
+            (false, true) => Adjacency::Bottom,
+            (false, false) => Adjacency::None,
+        }
+    }
+
+    pub fn side(self) -> bool {
+        matches!(self, Adjacency::Side | Adjacency::SideAndBottom)
+    }
+
+    pub fn bottom(self) -> bool {
+        matches!(self, Adjacency::Bottom | Adjacency::SideAndBottom)
+    }
+
+    /// Both places together.
+    pub fn with(self, other: Adjacency) -> Self {
+        Adjacency::of(self.side() || other.side(), self.bottom() || other.bottom())
+    }
+}
+
 /// A field's tools, largest first, and what none of them reaches.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FieldTools {
@@ -290,12 +316,7 @@ pub fn select(
     }
     let side = !s.part.is_empty();
     let bottom = floor.unsigned_area() > tiny;
-    let adjacency = match (side, bottom) {
-        (true, true) => Adjacency::SideAndBottom,
-        (true, false) => Adjacency::Side,
-        (false, true) => Adjacency::Bottom,
-        (false, false) => Adjacency::None,
-    };
+    let adjacency = Adjacency::of(side, bottom);
     let entry = if s.blank.is_empty() {
         Entry::Ramp
     } else {

@@ -45,6 +45,17 @@ impl OpsError {
     }
 }
 
+/// The library can rough, and the set-up's removal frame with the stock
+/// box's corners in it.
+fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f64; 3]), OpsError> {
+    if lib.end_mills().next().is_none() {
+        return Err(OpsError::NoEndMill {
+            library: lib.source.clone(),
+        });
+    }
+    Ok(frame_of(a, Vector3::from(a.setup().up).normalize()))
+}
+
 /// The operations of `a`'s set-up with `lib` (the stock is the part's
 /// oriented box), and the removal frame their contours are in.
 pub fn plan_setup(
@@ -52,13 +63,7 @@ pub fn plan_setup(
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
 ) -> Result<(Frame, SetupOperations), OpsError> {
-    if lib.end_mills().next().is_none() {
-        return Err(OpsError::NoEndMill {
-            library: lib.source.clone(),
-        });
-    }
-    let up = Vector3::from(a.setup().up).normalize();
-    let (frame, lo, hi) = frame_of(a, up);
+    let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
     let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
     let holes = holes_of(a, &frame, lib)?;
@@ -66,20 +71,14 @@ pub fn plan_setup(
 }
 
 /// The operations of `a`'s set-up along the plan ([`crate::planned`]):
-/// recognition, the plan with the shipped rules, then each machining
-/// feature layered and tooled on its own, in an order that keeps every
-/// relation of the plan. `file` names the part in the plan.
+/// recognition, the plan with the shipped rules, then [`along_plan`].
+/// `file` names the part in the plan.
 pub fn plan_setup_by_feature(
     a: &PartAnalysis,
     file: &str,
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
 ) -> Result<(Frame, SetupOperations), OpsError> {
-    if lib.end_mills().next().is_none() {
-        return Err(OpsError::NoEndMill {
-            library: lib.source.clone(),
-        });
-    }
     let request = thinwall_pipeline::Request {
         setup: a.setup().clone(),
         ..Default::default()
@@ -87,17 +86,28 @@ pub fn plan_setup_by_feature(
     let outcome = thinwall_pipeline::run(a.part(), None, &request)?;
     let rules = thinwall_plan::RuleSet::default_rules();
     let plan = thinwall_plan::plan(file, a.part(), &outcome, &rules);
+    along_plan(a, &plan, lib, axial_depth_mm)
+}
+
+/// The operations of `a`'s set-up along its `plan`: each machining feature
+/// layered and tooled on its own, the holes drilled, in an order that
+/// keeps every relation of the plan.
+pub fn along_plan(
+    a: &PartAnalysis,
+    plan: &thinwall_plan::Plan,
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> Result<(Frame, SetupOperations), OpsError> {
+    let (frame, lo, hi) = frame_for(a, lib)?;
     if let Some(why) = &plan.removal.unavailable {
         return Err(OpsError::NoPlan(why.clone()));
     }
-    let up = Vector3::from(a.setup().up).normalize();
-    let (frame, lo, hi) = frame_of(a, up);
     let stock = geo::Rect::new(
         geo::Coord { x: lo[0], y: lo[1] },
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
     let holes = holes_of(a, &frame, lib)?;
-    let ops = crate::planned::by_feature(&plan, lib, axial_depth_mm, &holes, stock, size);
+    let ops = crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size);
     Ok((frame, ops))
 }
