@@ -83,6 +83,35 @@ pub fn side_access(d: [f64; 3], up: &Vector3, machine: &Machine) -> SideAccess {
     }
 }
 
+/// Judge a curved side whose outward normal sweeps through `dirs` (samples
+/// along its arc, in order): the verdict at its worst direction (the
+/// lowest elevation), with the sweep in the reason.
+pub fn swept_side_access(dirs: &[[f64; 3]], up: &Vector3, machine: &Machine) -> Option<SideAccess> {
+    let verdicts: Vec<SideAccess> = dirs.iter().map(|&d| side_access(d, up, machine)).collect();
+    let elevation = |v: &SideAccess| Vector3::from(v.direction).dot(up);
+    let (lo, hi) = verdicts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            let e = elevation(v).clamp(-1.0, 1.0).asin().to_degrees();
+            (lo.min(e), hi.max(e))
+        });
+    let worst = verdicts.into_iter().min_by(|a, b| {
+        a.reachable
+            .cmp(&b.reachable)
+            .then(elevation(a).total_cmp(&elevation(b)))
+    })?;
+    let first = Vector3::from(dirs[0]);
+    let last = Vector3::from(dirs[dirs.len() - 1]);
+    let sweep = first.angle(&last).to_degrees();
+    Some(SideAccess {
+        reason: format!(
+            "curved: the normal sweeps {sweep:.1}°, elevation {lo:.1}° to {hi:.1}°; at its worst {}",
+            worst.reason
+        ),
+        ..worst
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -110,5 +139,30 @@ mod tests {
         assert!(side_access([c, 0.0, s], &up, &three)
             .reason
             .contains("upwards"));
+    }
+
+    #[test]
+    fn a_curved_side_is_judged_at_its_worst_direction() {
+        let up = Vector3::z();
+        // A side whose normal sweeps from 30° up, through horizontal, to
+        // 20° down: a 3-axis machine cannot reach all of it.
+        let dirs: Vec<[f64; 3]> = [30.0f64, 0.0, -20.0]
+            .iter()
+            .map(|e| {
+                let e = e.to_radians();
+                [e.cos(), 0.0, e.sin()]
+            })
+            .collect();
+        let v = swept_side_access(&dirs, &up, &Machine::ThreeAxis).unwrap();
+        assert!(!v.reachable);
+        assert!(v.reason.contains("sweeps 50.0°"), "{}", v.reason);
+        assert!(v.reason.contains("undercut by 20.0°"), "{}", v.reason);
+        let five = Machine::FiveAxis {
+            tilt_limit_deg: 30.0,
+        };
+        assert!(swept_side_access(&dirs, &up, &five).unwrap().reachable);
+        // All above the horizon: reachable.
+        let ok = swept_side_access(&dirs[..2], &up, &Machine::ThreeAxis).unwrap();
+        assert!(ok.reachable, "{}", ok.reason);
     }
 }

@@ -14,7 +14,7 @@
 
 pub mod access;
 
-pub use access::{side_access, SideAccess};
+pub use access::{side_access, swept_side_access, SideAccess};
 pub use thinwall_analysis::{Machine, Setup};
 
 use petgraph::algo::is_cyclic_directed;
@@ -181,9 +181,8 @@ impl Structure {
 }
 
 fn height(f: &StiffnessFeature, up: &thinwall_geom::Vector3) -> f64 {
-    f.mid_plane.as_ref().map_or(0.0, |m| {
-        m.point[0] * up.x + m.point[1] * up.y + m.point[2] * up.z
-    })
+    f.mid_point()
+        .map_or(0.0, |(p, _)| p[0] * up.x + p[1] * up.y + p[2] * up.z)
 }
 
 /// Build the connection structure of a recognition in a set-up.
@@ -348,13 +347,38 @@ fn access(
         .filter(|f| f.kind.is_wall())
         .filter_map(|f| {
             let d = f.access_directions.as_ref()?;
-            Some((
-                f.id,
-                [
-                    side_access(d[0], up, &setup.machine),
-                    side_access(d[1], up, &setup.machine),
-                ],
-            ))
+            let judge = |s: usize| match swept_normals(f, s) {
+                Some(dirs) => swept_side_access(&dirs, up, &setup.machine)
+                    .unwrap_or_else(|| side_access(d[s], up, &setup.machine)),
+                None => side_access(d[s], up, &setup.machine),
+            };
+            Some((f.id, [judge(0), judge(1)]))
         })
         .collect()
 }
+
+/// Samples a curved wall's side normal takes along its arc (every few
+/// degrees, both ends included); `None` for a flat wall.
+fn swept_normals(f: &StiffnessFeature, side: usize) -> Option<Vec<[f64; 3]>> {
+    let m = f.mid_surface.as_ref()?;
+    let v3 = |a: [f64; 3]| thinwall_geom::Vector3::from(a);
+    let (axis, u) = (v3(m.axis), v3(m.reference));
+    let v = axis.cross(&u);
+    let alpha = m.half_angle_deg.unwrap_or(0.0).to_radians();
+    let [t0, t1] = m.angle_range_deg;
+    let steps = ((t1 - t0).abs() / SWEEP_STEP_DEG).ceil().max(1.0) as usize;
+    let sign = if side == 0 { 1.0 } else { -1.0 };
+    Some(
+        (0..=steps)
+            .map(|k| {
+                let t = (t0 + (t1 - t0) * k as f64 / steps as f64).to_radians();
+                let radial = u * t.cos() + v * t.sin();
+                let n = (radial * alpha.cos() - axis * alpha.sin()) * sign;
+                [n.x, n.y, n.z]
+            })
+            .collect(),
+    )
+}
+
+/// Step between the sampled normals of a curved side, degrees.
+const SWEEP_STEP_DEG: f64 = 2.0;

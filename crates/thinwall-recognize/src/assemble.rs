@@ -89,13 +89,21 @@ fn wall_feature(
     let t = wall.thickness_range.0;
     f.model_note = crate::deflection::validity_note(t, s.height, s.deflection);
     f.slenderness = Some(if t > 0.0 { s.height / t } else { 0.0 });
-    f.mid_plane = Some(Plane {
-        point: [p.x, p.y, p.z],
-        normal: xyz(&n),
-    });
     f.access_directions = Some([xyz(&wall.normals[0]), xyz(&wall.normals[1])]);
     f.top_end_faces = Some(top);
-    f.geometry = Some(geometry(a, wall, s));
+    match &wall.curved {
+        Some(c) => {
+            f.mid_surface = Some(c.mid_surface(&wall.region));
+            f.access_range = Some(c.access_range(&wall.region));
+        }
+        None => {
+            f.mid_plane = Some(Plane {
+                point: [p.x, p.y, p.z],
+                normal: xyz(&n),
+            });
+            f.geometry = Some(geometry(a, wall, s));
+        }
+    }
     f
 }
 

@@ -114,7 +114,8 @@ fn cutouts(
     rim_out: &mut Vec<FaceId>,
 ) -> Vec<Depression> {
     let rim = depressions::rim_faces(a, &walls[w], taken, any_side);
-    let openings = depressions::edge_openings(a, w, &rim);
+    let long = thinwall_analysis::polygon::long_side(&walls[w].region);
+    let openings = depressions::edge_openings(a, w, &rim, long);
     let used: HashSet<FaceId> = openings
         .iter()
         .flat_map(|d| d.faces.iter().copied())

@@ -26,6 +26,9 @@ pub enum DepressionKind {
 /// Whether all of a face lies within the wall's slab (between its side planes).
 pub fn within_slab(a: &PartAnalysis, wall: &Wall, f: FaceId) -> bool {
     let tol = a.tol().slab;
+    if let Some(c) = &wall.curved {
+        return a.boundary_points(f).iter().all(|p| c.within(p, tol));
+    }
     let (q1, n1) = wall.side_plane(1);
     a.boundary_points(f).iter().all(|p| {
         let d = (p - wall.frame.origin).dot(&wall.frame.z);
@@ -122,7 +125,16 @@ pub fn rim_faces(
 /// Cut-outs and notches among a wall's rim faces: rim faces joined by
 /// concave edges (the inside corners of a slot or step), or a single
 /// concave cylindrical scallop.
-pub fn edge_openings(a: &PartAnalysis, w: usize, rim: &[FaceId]) -> Vec<Depression> {
+///
+/// A concave cylinder as long as the wall (the inner edge of a ring
+/// sector) is the wall's curved end, not a scallop: a scallop's radius is
+/// at most half the wall's `long_side`, mm.
+pub fn edge_openings(
+    a: &PartAnalysis,
+    w: usize,
+    rim: &[FaceId],
+    long_side: f64,
+) -> Vec<Depression> {
     let graph = a.graph();
     let concave =
         |_: FaceId, _: FaceId, adj: &thinwall_graph::Adjacency| adj.convexity == Convexity::Concave;
@@ -141,6 +153,7 @@ pub fn edge_openings(a: &PartAnalysis, w: usize, rim: &[FaceId]) -> Vec<Depressi
             Some(DepressionKind::Notch)
         } else if comp.len() == 1
             && a.is_concave_blend(start)
+            && scallop_radius(a, start) <= 0.5 * long_side
             && matches!(a.part().face(start).surface, Surface::Cylinder { .. })
             && !graph
                 .neighbours(start)
@@ -161,4 +174,9 @@ pub fn edge_openings(a: &PartAnalysis, w: usize, rim: &[FaceId]) -> Vec<Depressi
         }
     }
     out
+}
+
+/// A rim face's radius when it is a cylinder (infinite otherwise).
+fn scallop_radius(a: &PartAnalysis, f: FaceId) -> f64 {
+    a.cylinder(f).map_or(f64::INFINITY, |c| c.radius)
 }

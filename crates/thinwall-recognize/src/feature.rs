@@ -61,11 +61,21 @@ pub struct StiffnessFeature {
     /// (a deflection over 10 % of h, h/t under 5).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub model_note: Option<String>,
+    /// Flat walls: the plane half-way between the sides.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mid_plane: Option<Plane>,
-    /// Walls: tool access directions, one per side (outward side normals).
+    /// Curved walls, instead of `mid_plane`: the surface half-way between
+    /// the sides (axis, radius, angle range).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mid_surface: Option<crate::curved::MidSurface>,
+    /// Walls: tool access directions, one per side (outward side normals;
+    /// a curved wall's at the middle of its arc).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub access_directions: Option<[[f64; 3]; 2]>,
+    /// Curved walls: per side, the outward normals at the two ends of the
+    /// arc; the access direction sweeps between them about the axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access_range: Option<[[[f64; 3]; 2]; 2]>,
     /// Walls: top and end faces (`step_id`s).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub top_end_faces: Option<Vec<u64>>,
@@ -97,8 +107,9 @@ pub struct StiffnessFeature {
     /// pipeline, which runs both recognizers).
     #[serde(default)]
     pub related: Vec<thinwall_analysis::MachiningId>,
-    /// Walls: the geometry a planner builds on (region, side polygons, foot
-    /// line). Library only, not in the JSON.
+    /// Flat walls: the geometry a planner builds on (region, side polygons,
+    /// foot line). Library only, not in the JSON. Curved walls have none
+    /// yet: the planner layers say so where they skip them.
     #[serde(skip)]
     pub geometry: Option<WallGeometry>,
 }
@@ -132,6 +143,16 @@ impl WallGeometry {
 }
 
 impl StiffnessFeature {
+    /// Walls: a point half-way between the sides (on the mid-plane, or the
+    /// mid-surface's centre) and side 0's normal there.
+    pub fn mid_point(&self) -> Option<([f64; 3], [f64; 3])> {
+        match (&self.mid_plane, &self.mid_surface) {
+            (Some(m), _) => Some((m.point, m.normal)),
+            (None, Some(m)) => Some((m.centre, m.normal)),
+            (None, None) => None,
+        }
+    }
+
     pub fn new(kind: StiffnessKind, faces: Vec<u64>) -> Self {
         Self {
             id: FeatureId::new(kind, 0),
@@ -150,7 +171,9 @@ impl StiffnessFeature {
             slenderness: None,
             model_note: None,
             mid_plane: None,
+            mid_surface: None,
             access_directions: None,
+            access_range: None,
             top_end_faces: None,
             base: None,
             wall: None,

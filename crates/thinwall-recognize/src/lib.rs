@@ -20,6 +20,7 @@
 mod assemble;
 mod claims;
 pub mod config;
+pub mod curved;
 pub mod deflection;
 pub mod depressions;
 pub mod details;
@@ -30,6 +31,7 @@ pub mod sizing;
 pub mod walls;
 
 pub use config::{Config, ConfigError};
+pub use curved::MidSurface;
 pub use feature::{Plane, StiffnessFeature, WallGeometry};
 pub use junctions::Junction;
 pub use thinwall_analysis::{FeatureId, StiffnessKind};

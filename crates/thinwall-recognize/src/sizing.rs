@@ -95,16 +95,22 @@ fn on_base(
         squat: false,
     };
     if let Some(j) = best {
-        let (origin, n) = walls[j.base].side_plane(j.base_side);
+        // A curved base's tangent plane under the leaf's middle.
+        let (origin, n) = walls[j.base].side_plane_near(j.base_side, &wall.mid_plane().0);
         let pts = wall.outline();
-        size.height = pts
+        let rise = pts
             .iter()
             .map(|p| (p - origin).dot(&n).abs())
             .fold(0.0, f64::max);
+        size.height = wall.developed_height(&n).unwrap_or(rise);
         let along = wall.frame.z.cross(&n);
-        size.length = match along.try_normalize(DIRECTION_NORM_MIN) {
-            Some(a) => measure::span(&pts, &a),
-            None => long_side(&wall.region),
+        size.length = match (
+            wall.developed_span(&n),
+            along.try_normalize(DIRECTION_NORM_MIN),
+        ) {
+            (Some(developed), _) => developed,
+            (None, Some(a)) => measure::span(&pts, &a),
+            (None, None) => long_side(&wall.region),
         };
         size.height_dir = n;
         size.foot_plane = Some((origin, n));
@@ -129,6 +135,12 @@ fn without_base(
     let side = usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
     let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {
         vec![wall.region.clone()]
+    } else if let Some(c) = &wall.curved {
+        // Developed, at the mid-surface.
+        c.side_polygons[side]
+            .iter()
+            .map(|(_, p)| p.clone())
+            .collect()
     } else {
         wall.sides[side]
             .iter()

@@ -1,4 +1,5 @@
-//! Walls: material between two opposed planar side faces.
+//! Walls: material between two opposed planar side faces (curved walls,
+//! between coaxial cylinders and cones, in `curved`).
 //!
 //! For every planar face F, the planar faces G behind it (anti-parallel
 //! normal, plane behind F) are taken nearest first; the part of G's
@@ -14,6 +15,7 @@
 //! (thickest) to `.0` (thinnest).
 
 use crate::config::Config;
+use crate::curved::CurvedWall;
 use geo::{Area, BooleanOps, BoundingRect, MultiPolygon};
 use std::collections::HashMap;
 use thinwall_analysis::polygon::{intersect, narrow_width};
@@ -38,8 +40,11 @@ pub struct Wall {
     pub thickness_range: (f64, f64),
     /// Side 1's plane: a point on it (side 0's is `frame.origin`).
     pub side1_point: Point3,
-    /// Where the two sides bound the slab, in `frame`'s xy coordinates.
+    /// Where the two sides bound the slab, in `frame`'s xy coordinates
+    /// (developed, for a curved wall).
     pub region: MultiPolygon<f64>,
+    /// A curved wall's surfaces and development (`None` for a flat wall).
+    pub curved: Option<Box<CurvedWall>>,
 }
 
 /// The outer outline of a region drawn in `frame`'s xy plane, at height
@@ -54,16 +59,24 @@ pub fn region_outline(frame: &Frame, region: &MultiPolygon<f64>, z: f64) -> Vec<
 }
 
 impl Wall {
-    /// 3D points of the region's outline on the mid-plane.
+    /// 3D points of the region's outline on the mid-plane (mid-surface).
     pub fn outline(&self) -> Vec<Point3> {
-        region_outline(&self.frame, &self.region, -0.5 * self.thickness)
+        match &self.curved {
+            Some(c) => c.outline(&self.region, c.mid_offset()),
+            None => region_outline(&self.frame, &self.region, -0.5 * self.thickness),
+        }
     }
 
-    /// A point on the mid-plane and its unit normal (side 0's).
+    /// A point on the mid-plane and its unit normal (side 0's); for a
+    /// curved wall, on the mid-surface at the region's centre.
     pub fn mid_plane(&self) -> (Point3, Vector3) {
         let c = geo::Centroid::centroid(&self.region)
             .map(|p| (p.x(), p.y()))
             .unwrap_or((0.0, 0.0));
+        if let Some(cw) = &self.curved {
+            let p = cw.to_world(c.0, c.1, cw.mid_offset());
+            return (p, cw.tangent_plane(0, &p).1);
+        }
         (
             self.frame
                 .to_world(&Vector3::new(c.0, c.1, -0.5 * self.thickness)),
@@ -71,7 +84,8 @@ impl Wall {
         )
     }
 
-    /// A point on side `s`'s plane and that side's outward normal.
+    /// A point on side `s`'s plane and that side's outward normal (a
+    /// curved wall's tangent plane at the region's centre).
     pub fn side_plane(&self, s: usize) -> (Point3, Vector3) {
         if s == 0 {
             (self.frame.origin, self.normals[0])
@@ -94,6 +108,42 @@ impl Wall {
             .try_normalize(1e-12)
             .unwrap_or(self.frame.z);
         (on_side0 - self.side1_point).dot(&n1) / across.dot(&n1)
+    }
+
+    /// Side `s`'s tangent plane nearest a point: the side's plane for a
+    /// flat wall.
+    pub fn side_plane_near(&self, s: usize, p: &Point3) -> (Point3, Vector3) {
+        match &self.curved {
+            Some(c) => c.tangent_plane(s, p),
+            None => self.side_plane(s),
+        }
+    }
+
+    /// A curved wall's developed length across `height_dir` (a unit
+    /// vector): the region's extent along the developed direction (arc or
+    /// generator) most nearly normal to it.
+    pub fn developed_span(&self, height_dir: &Vector3) -> Option<f64> {
+        let (w, _) = self.developed_extents(height_dir)?;
+        Some(w)
+    }
+
+    /// A curved wall's developed height along `height_dir`: the region's
+    /// extent along the developed direction (generator or arc) nearest it.
+    pub fn developed_height(&self, height_dir: &Vector3) -> Option<f64> {
+        let (_, h) = self.developed_extents(height_dir)?;
+        Some(h)
+    }
+
+    /// (across, along) `height_dir` of a curved wall's developed region.
+    fn developed_extents(&self, height_dir: &Vector3) -> Option<(f64, f64)> {
+        self.curved.as_ref()?;
+        let (x, y) = (height_dir.dot(&self.frame.x), height_dir.dot(&self.frame.y));
+        let r = geo::BoundingRect::bounding_rect(&self.region)?;
+        Some(if y.abs() >= x.abs() {
+            (r.width(), r.height())
+        } else {
+            (r.height(), r.width())
+        })
     }
 
     pub fn contains_side_face(&self, f: FaceId) -> Option<usize> {
@@ -205,12 +255,14 @@ pub fn find_walls(a: &PartAnalysis, config: &Config) -> Vec<Wall> {
             thickness_range: (g.thickness, g.thickness),
             side1_point: g.side1_point,
             region,
+            curved: None,
         };
         if wall.normals[0].dot(&wall.normals[1]) >= -p.cos_tol && !drafted_thickness(&mut wall) {
             continue; // the sides cross within the region: no slab
         }
         walls.push(wall);
     }
+    walls.extend(crate::curved::find_curved_walls(a, config));
     walls
 }
 

@@ -180,17 +180,22 @@ fn describe(f: &Value) -> String {
     s
 }
 
+/// A wall's point half-way between its sides and its normal there: on the
+/// mid-plane, or at a curved wall's mid-surface centre.
+fn mid(f: &Value) -> Option<([f64; 3], [f64; 3])> {
+    let m = &f["mid_plane"];
+    if m.is_object() {
+        return Some((vec3(&m["point"])?, vec3(&m["normal"])?));
+    }
+    let s = &f["mid_surface"];
+    Some((vec3(&s["centre"])?, vec3(&s["normal"])?))
+}
+
 /// How far apart two walls are: offset of one mid-plane point from the
 /// other's plane (when parallel), then a little of the in-plane distance.
 fn wall_distance(e: &Value, a: &Value) -> Option<f64> {
-    let (pe, ne) = (
-        vec3(&e["mid_plane"]["point"])?,
-        vec3(&e["mid_plane"]["normal"])?,
-    );
-    let (pa, na) = (
-        vec3(&a["mid_plane"]["point"])?,
-        vec3(&a["mid_plane"]["normal"])?,
-    );
+    let (pe, ne) = mid(e)?;
+    let (pa, na) = mid(a)?;
     if dot(ne, na).abs() < 0.9998 {
         return None; // more than about 1° apart
     }
@@ -251,7 +256,7 @@ pub fn compare(
         features(expected, "the expectation")?,
         features(actual, "the report")?,
     );
-    let is_wall = |f: &Value| f["mid_plane"].is_object();
+    let is_wall = |f: &Value| mid(f).is_some();
     let walls_e: Vec<usize> = (0..fe.len()).filter(|&i| is_wall(&fe[i])).collect();
     let walls_a: Vec<usize> = (0..fa.len()).filter(|&i| is_wall(&fa[i])).collect();
     let mut matched = pair(&walls_e, &walls_a, |e, a| wall_distance(&fe[e], &fa[a]));

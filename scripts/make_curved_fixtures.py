@@ -1,0 +1,248 @@
+#!/usr/bin/env python3
+"""Generate curved-wall fixtures (issue 18, docs/RECOGNITION.md "Curved walls").
+
+Each part is a cross-section revolved about the z axis (or a skin with
+stringers), written with its expected walls: kind, thin, thickness (mm),
+height (mm, from the base's side along the wall's generator), developed
+length (mm, along the arc of the mid-surface), side faces by centroid, and
+the base-leaf connections between them. Every part is also written turned
+37° about (1, 2, 3) and moved, its up and points turned with it.
+
+  frame_r400: a frame segment, web 2 mm (z 0..2) over r 400..480 and 30°,
+    flanges 1.6 mm thick and 25 mm tall (z 0..25) on its inner and outer
+    curved edges.
+  frame_r250: a frame segment, web 2.5 mm over r 250..310 and 60°, an outer
+    flange 2 mm thick and 30 mm tall standing up and an inner one 2 mm
+    thick hanging 20 mm down.
+  skin_stringers: a skin 2 mm thick (r 500..502 about the y axis, 40° about
+    the top, 300 long) with two straight stringers 1.5 mm thick and 20 mm
+    tall inside it, at ±8° from the top, the whole length.
+  conical_flange: a web 2 mm over r 200..260 and 45° with an outer flange
+    1.5 mm thick leaning 15° outwards, 25 mm along its generator from the
+    web's underside.
+
+usage: python3 scripts/make_curved_fixtures.py [OUT_DIR]   (default fixtures/curved)
+"""
+import json, math, os, sys
+
+sys.path.insert(0, os.path.dirname(__file__))
+from make_recognition_fixtures import (box, fuse, write, turned, turn_point, turn_dir,  # noqa: E402
+                                       occ_version, _face)
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeRevol  # noqa: E402
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakePolygon, BRepBuilderAPI_MakeFace, BRepBuilderAPI_Transform  # noqa: E402
+from OCP.gp import gp_Pnt, gp_Ax1, gp_Dir, gp_Trsf, gp_Vec  # noqa: E402
+from OCP.TopExp import TopExp_Explorer  # noqa: E402
+from OCP.TopAbs import TopAbs_FACE  # noqa: E402
+from OCP.GProp import GProp_GProps  # noqa: E402
+from OCP.BRepGProp import BRepGProp, BRepGProp_Face  # noqa: E402
+from OCP.BRepAdaptor import BRepAdaptor_Surface  # noqa: E402
+from OCP.GeomAbs import GeomAbs_SurfaceType as T  # noqa: E402
+
+
+def revolved(points_xz, degrees, start_deg=0.0):
+    """The polygon `points_xz` (in the xz plane, x = radius) revolved about z
+    from `start_deg` through `degrees`."""
+    poly = BRepBuilderAPI_MakePolygon()
+    for x, z in points_xz:
+        poly.Add(gp_Pnt(x, 0, z))
+    poly.Close()
+    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
+    shape = BRepPrimAPI_MakeRevol(face, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), math.radians(degrees)).Shape()
+    if start_deg:
+        t = gp_Trsf()
+        t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), math.radians(start_deg))
+        shape = BRepBuilderAPI_Transform(shape, t, True).Shape()
+    return shape
+
+
+def rect(x0, z0, x1, z1):
+    return [(x0, z0), (x1, z0), (x1, z1), (x0, z1)]
+
+
+def faces(shape):
+    """Every face: centroid, surface type, radius (cylinders) or normal (planes)."""
+    out = []
+    e = TopExp_Explorer(shape, TopAbs_FACE)
+    while e.More():
+        f = _face(e.Current())
+        p = GProp_GProps()
+        BRepGProp.SurfaceProperties_s(f, p)
+        c = p.CentreOfMass()
+        a = BRepAdaptor_Surface(f)
+        d = {"centroid": [c.X(), c.Y(), c.Z()], "area": p.Mass(), "radius": None, "normal": None}
+        if a.GetType() == T.GeomAbs_Cylinder:
+            d["kind"], d["radius"] = "cylinder", a.Cylinder().Radius()
+        elif a.GetType() == T.GeomAbs_Cone:
+            d["kind"], d["radius"] = "cone", a.Cone().RefRadius()
+        elif a.GetType() == T.GeomAbs_Plane:
+            # The outward normal with the face's orientation and a
+            # left-handed plane frame (revolved faces have them) both counted.
+            g = BRepGProp_Face(f)
+            u0, u1, v0, v1 = g.Bounds()
+            pnt, n = gp_Pnt(), gp_Vec()
+            g.Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), pnt, n)
+            n.Normalize()
+            d["kind"], d["normal"] = "plane", [n.X(), n.Y(), n.Z()]
+        else:
+            d["kind"] = "other"
+        out.append(d)
+        e.Next()
+    return out
+
+
+def pick(fs, pred):
+    got = [f["centroid"] for f in fs if pred(f)]
+    assert got, "predicate selected no face"
+    return got
+
+
+def near(a, b, tol=1e-6):
+    return abs(a - b) < tol
+
+
+def cyl(r):
+    return lambda f: f["kind"] == "cylinder" and near(f["radius"], r)
+
+
+def plane(n, coord=None, axis=2):
+    def pred(f):
+        if f["kind"] != "plane" or not all(near(a, b) for a, b in zip(f["normal"], n)):
+            return False
+        return coord is None or near(f["centroid"][axis], coord)
+    return pred
+
+
+def either(*preds):
+    return lambda f: any(p(f) for p in preds)
+
+
+def wall(name, kind, fs, side, thickness, height, length, thin=True):
+    return {"name": name, "kind": kind, "thin": thin, "thickness": thickness, "height": height,
+            "length": length, "side_faces_at": pick(fs, side)}
+
+
+def frame_r400():
+    a = 30.0
+    shape = fuse(revolved(rect(400, 0, 480, 2), a), revolved(rect(478.4, 0, 480, 25), a),
+                 revolved(rect(400, 0, 401.6, 25), a))
+
+    def expect(fs):
+        arc = math.radians(a)
+        return [
+            wall("W", "web", fs, either(plane([0, 0, -1]), plane([0, 0, 1], 2.0)), 2.0, None, None),
+            wall("O", "flange", fs, either(cyl(480), cyl(478.4)), 1.6, 23.0, 479.2 * arc),
+            wall("I", "flange", fs, either(cyl(400), cyl(401.6)), 1.6, 23.0, 400.8 * arc),
+        ], [["W", "O"], ["W", "I"]]
+    return shape, expect
+
+
+def frame_r250():
+    a = 60.0
+    shape = fuse(revolved(rect(250, 0, 310, 2.5), a, 10.0), revolved(rect(308, 0, 310, 30), a, 10.0),
+                 revolved(rect(250, 0, 252, 18), a, 10.0))
+
+    def expect(fs):
+        arc = math.radians(a)
+        return [
+            wall("W", "web", fs, either(plane([0, 0, -1], 0.0), plane([0, 0, 1], 2.5)), 2.5, None, None),
+            wall("O", "flange", fs, either(cyl(310), cyl(308)), 2.0, 27.5, 309 * arc),
+            wall("I", "flange", fs, either(cyl(250), cyl(252)), 2.0, 15.5, 251 * arc),
+        ], [["W", "O"], ["W", "I"]]
+    return shape, expect
+
+
+def skin_stringers():
+    """The skin about the y axis: the profile revolved about z, then turned
+    so z goes to y (the skin's top at +z)."""
+    half = 20.0
+    skin = revolved(rect(500, 0, 502, 300), 2 * half, 90.0 - half)
+    parts = [skin]
+    for deg in (-8.0, 8.0):
+        # A stringer in the xy plane about the radial direction at 90° + deg,
+        # from r 480 into the skin.
+        s = box(-0.75, 480.0, 0.0, 0.75, 500.5, 300.0)
+        t = gp_Trsf()
+        t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), math.radians(deg))
+        parts.append(BRepBuilderAPI_Transform(s, t, True).Shape())
+    shape = fuse(*parts)
+    # Axis z -> y: turn -90° about x (z to y, y to -z) then flip so the
+    # skin's top (+y before) is +z.
+    t = gp_Trsf()
+    t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), math.radians(90.0))
+    shape = BRepBuilderAPI_Transform(shape, t, True).Shape()
+
+    def expect(fs):
+        def stringer_side(sign):
+            # Side planes of the stringer at +-8° about the top: normals
+            # (+-cos, 0, sin) turned; pick by centroid angle.
+            def pred(f):
+                if f["kind"] != "plane":
+                    return False
+                x, _, z = f["centroid"]
+                ang = math.degrees(math.atan2(x, z))
+                n = f["normal"]
+                return abs(ang - sign * 8.0) < 0.2 and abs(n[1]) < 1e-9 and abs(n[0]) > 0.9
+            return pred
+        return [
+            wall("S", "web", fs, either(cyl(500), cyl(502)), 2.0, None, None),
+            wall("A", "rib", fs, stringer_side(-1), 1.5, 20.0, 300.0),
+            wall("B", "rib", fs, stringer_side(1), 1.5, 20.0, 300.0),
+        ], [["S", "A"], ["S", "B"]]
+    return shape, expect
+
+
+def conical_flange():
+    a, lean, thick, slant = 45.0, math.radians(15.0), 1.5, 25.0
+    w = thick / math.cos(lean)
+    top = (260 + slant * math.sin(lean), slant * math.cos(lean))
+    flange = [(260 - w, 0.0), (260.0, 0.0), top, (top[0] - w, top[1])]
+    shape = fuse(revolved(rect(200, 0, 260, 2), a), revolved(flange, a))
+
+    def expect(fs):
+        # Height along the generator: the region where both sides face each
+        # other, from the inner side's foot on the web (z 2) to its top.
+        height = (top[1] - 2.0) / math.cos(lean)
+        # Developed length: the arc of the mid-surface at the region's
+        # centre (half-way up the inner side, moved half the thickness
+        # along the normal, which leans down by the lean angle).
+        zm = 0.5 * (2.0 + top[1]) - 0.5 * thick * math.sin(lean)
+        r_mid = 260 - 0.5 * w + zm * math.tan(lean)
+        return [
+            wall("W", "web", fs, either(plane([0, 0, -1]), plane([0, 0, 1], 2.0)), 2.0, None, None),
+            wall("F", "flange", fs, lambda f: f["kind"] == "cone", thick, height, r_mid * math.radians(a)),
+        ], [["W", "F"]]
+    return shape, expect
+
+
+CASES = {
+    "frame_r400": (frame_r400, "frame segment: 2 mm web r 400..480 over 30°, 1.6 mm flanges 25 mm tall on both curved edges"),
+    "frame_r250": (frame_r250, "frame segment: 2.5 mm web r 250..310 over 60°, outer flange 30 tall, inner 18, both 2 mm"),
+    "skin_stringers": (skin_stringers, "curved skin 2 mm (r 500) with two straight 1.5 mm stringers 20 tall inside"),
+    "conical_flange": (conical_flange, "2 mm web r 200..260 over 45° with a 1.5 mm conical flange leaning 15° outwards"),
+}
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/curved"
+    os.makedirs(out, exist_ok=True)
+    for name, (build, about) in CASES.items():
+        shape, expect = build()
+        features, connections = expect(faces(shape))
+        for turn in (False, True):
+            s, doc_name, up = shape, name, [0, 0, 1]
+            feats = json.loads(json.dumps(features))
+            if turn:
+                s, t = turned(shape)
+                doc_name, up = name + "_turned", turn_dir(t, (0, 0, 1))
+                for f in feats:
+                    f["side_faces_at"] = [turn_point(t, p) for p in f["side_faces_at"]]
+            write(s, os.path.join(out, doc_name + ".step"))
+            doc = {"part": doc_name + ".step", "about": about + ("; turned 37° about (1,2,3) and moved" if turn else ""),
+                   "up": up, "features": feats, "connections": connections,
+                   "source": f"scripts/make_curved_fixtures.py (OpenCascade {occ_version()})"}
+            json.dump(doc, open(os.path.join(out, doc_name + ".expected.json"), "w"), indent=1)
+            print(doc_name, len(feats), "walls")
+
+
+if __name__ == "__main__":
+    main()

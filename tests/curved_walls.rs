@@ -1,0 +1,208 @@
+//! Curved walls (issue 18) on the fixtures of `scripts/make_curved_fixtures.py`:
+//! frame segments with flanges on their curved edges, a curved skin with
+//! straight stringers, a conical flange; each also turned with its set-up.
+//! Every wall is found with its side faces, kind, thin flag, thickness
+//! (1e-6 relative), height and developed length, and the base-leaf
+//! connections are right.
+
+mod common;
+
+use serde::Deserialize;
+use std::collections::{BTreeMap, BTreeSet};
+use thinwall_analysis::{Machine, Setup};
+use thinwall_connect::Connection;
+
+use common::fixtures::ids_at;
+
+#[derive(Deserialize)]
+struct Wall {
+    name: String,
+    kind: String,
+    thin: bool,
+    thickness: f64,
+    height: Option<f64>,
+    length: Option<f64>,
+    side_faces_at: Vec<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
+struct Fixture {
+    part: String,
+    up: [f64; 3],
+    features: Vec<Wall>,
+    connections: Vec<[String; 2]>,
+}
+
+fn dir() -> std::path::PathBuf {
+    common::root().join("fixtures/curved")
+}
+
+fn run(fx: &Fixture) -> (thinwall_brep::Part, thinwall_pipeline::Outcome) {
+    let (part, _) = thinwall_step::read_file(dir().join(&fx.part)).unwrap();
+    let req = thinwall_pipeline::Request {
+        setup: Setup::new(fx.up, Machine::ThreeAxis).unwrap(),
+        ..Default::default()
+    };
+    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
+    (part, out)
+}
+
+fn close(got: Option<f64>, want: f64, rel: f64) -> bool {
+    got.is_some_and(|g| (g - want).abs() <= rel * want.abs().max(1.0))
+}
+
+fn check(name: &str) -> Vec<String> {
+    let fx: Fixture = serde_json::from_str(
+        &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
+    )
+    .unwrap();
+    let (part, out) = run(&fx);
+    let feats = &out.recognition.features;
+    let mut problems = Vec::new();
+    let mut ours: BTreeMap<String, thinwall_analysis::FeatureId> = BTreeMap::new();
+    for e in &fx.features {
+        let want = ids_at(&part, &e.side_faces_at);
+        let Some(f) = feats.iter().find(|f| {
+            f.side_faces
+                .clone()
+                .unwrap_or_default()
+                .into_iter()
+                .collect::<BTreeSet<_>>()
+                == want
+        }) else {
+            problems.push(format!(
+                "{name}: wall {} not found with its side faces",
+                e.name
+            ));
+            continue;
+        };
+        ours.insert(e.name.clone(), f.id);
+        let id = format!("{name}: {} ({})", e.name, f.id);
+        if f.kind.name() != e.kind {
+            problems.push(format!("{id} is a {}, expected {}", f.kind.name(), e.kind));
+        }
+        if f.thin != Some(e.thin) {
+            problems.push(format!("{id} thin {:?}", f.thin));
+        }
+        if !close(f.thickness, e.thickness, 1e-6) {
+            problems.push(format!(
+                "{id} thickness {:?}, expected {}",
+                f.thickness, e.thickness
+            ));
+        }
+        // Heights and developed lengths within a millionth (arcs from
+        // sampled boundaries: their vertices lie on the exact arcs).
+        if let Some(h) = e.height {
+            if !close(f.height, h, 1e-6) {
+                problems.push(format!("{id} height {:?}, expected {h}", f.height));
+            }
+        }
+        if let Some(l) = e.length {
+            if !close(f.length, l, 1e-6) {
+                problems.push(format!("{id} length {:?}, expected {l}", f.length));
+            }
+        }
+    }
+    // Base-leaf connections between the walls, exactly the expected ones.
+    let got: BTreeSet<(thinwall_analysis::FeatureId, thinwall_analysis::FeatureId)> = out
+        .structure
+        .connections
+        .iter()
+        .filter_map(|c| match c {
+            Connection::BaseLeaf { base, leaf } if leaf.kind.is_wall() => Some((*base, *leaf)),
+            _ => None,
+        })
+        .collect();
+    let want: BTreeSet<_> = fx
+        .connections
+        .iter()
+        .filter_map(|[b, l]| Some((*ours.get(b)?, *ours.get(l)?)))
+        .collect();
+    if got != want {
+        problems.push(format!("{name}: connections {got:?}, expected {want:?}"));
+    }
+    let walls = feats.iter().filter(|f| f.kind.is_wall()).count();
+    if walls != fx.features.len() {
+        problems.push(format!(
+            "{name}: {walls} walls, expected {}",
+            fx.features.len()
+        ));
+    }
+    problems
+}
+
+fn names() -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir())
+        .unwrap()
+        .filter_map(|e| {
+            let n = e.ok()?.file_name().to_string_lossy().into_owned();
+            n.strip_suffix(".expected.json").map(str::to_string)
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn every_curved_fixture_yields_its_walls_turned_or_not() {
+    let names = names();
+    assert!(names.len() >= 8, "{names:?}");
+    assert!(names.iter().any(|n| n.ends_with("_turned")));
+    let problems: Vec<String> = names.iter().flat_map(|n| check(n)).collect();
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn a_curved_wall_reports_its_mid_surface_and_access_range() {
+    let fx: Fixture = serde_json::from_str(
+        &std::fs::read_to_string(dir().join("frame_r400.expected.json")).unwrap(),
+    )
+    .unwrap();
+    let (_, out) = run(&fx);
+    let outer = out
+        .recognition
+        .features
+        .iter()
+        .filter(|f| f.kind.name() == "flange")
+        .find(|f| f.mid_surface.as_ref().is_some_and(|m| m.radius > 470.0))
+        .expect("the outer flange");
+    let m = outer.mid_surface.as_ref().unwrap();
+    assert_eq!(m.kind, "cylinder");
+    assert!((m.radius - 479.2).abs() < 1e-6, "{}", m.radius);
+    assert!(((m.angle_range_deg[1] - m.angle_range_deg[0]) - 30.0).abs() < 1e-4);
+    assert!(
+        outer.mid_plane.is_none(),
+        "a curved wall has a mid-surface instead"
+    );
+    // Side 0 faces away from the axis; its normal sweeps the 30° of the arc.
+    let [a, b] = outer.access_range.unwrap()[0];
+    let (a, b) = (
+        thinwall_geom::Vector3::from(a),
+        thinwall_geom::Vector3::from(b),
+    );
+    assert!((a.angle(&b).to_degrees() - 30.0).abs() < 1e-4);
+    let c = thinwall_geom::Vector3::from(m.centre);
+    assert!(a.dot(&c) > 0.0 && b.dot(&c) > 0.0);
+    // Both sides vertical in the set-up: reachable, the sweep in the reason.
+    let access = &out.structure.access[&outer.id];
+    assert!(access
+        .iter()
+        .all(|s| s.reachable && s.reason.contains("sweeps 30.0°")));
+    // Planner geometry is for flat walls only (for now).
+    assert!(outer.geometry.is_none());
+}
+
+#[test]
+fn a_boss_around_a_hole_is_not_a_curved_wall() {
+    // The machining fixture's boss plate: bosses with holes (radius under
+    // three thicknesses) stay machining features.
+    let (part, _) =
+        thinwall_step::read_file(common::root().join("fixtures/machining/boss_plate.step"))
+            .unwrap();
+    let r = common::recognize_with(
+        &part,
+        [0.0, 0.0, 1.0],
+        &thinwall_recognize::Config::default(),
+    );
+    assert!(r.features.iter().all(|f| f.mid_surface.is_none()));
+}
