@@ -428,6 +428,22 @@ fn shifted(p: &MultiPolygon<f64>, turns: f64) -> MultiPolygon<f64> {
     })
 }
 
+/// Faces at one offset of a family: one side surface.
+struct SideSurface {
+    off: f64,
+    convex: bool,
+    /// Indices into the family's members.
+    faces: Vec<usize>,
+}
+
+/// A convex and a concave surface bounding one slab, while their faces
+/// and region (in (θ, s)) are collected.
+struct Group {
+    surfaces: (usize, usize),
+    sides: [Vec<FaceId>; 2],
+    parts: Vec<geo::Polygon<f64>>,
+}
+
 /// Pair the convex faces of one family with the concave ones below them.
 fn pair_family(
     a: &PartAnalysis,
@@ -436,98 +452,114 @@ fn pair_family(
     lin: f64,
     config: &Config,
 ) -> Vec<crate::walls::Wall> {
-    // Surfaces: faces at one offset.
-    let mut surfaces: Vec<(f64, bool, Vec<usize>)> = Vec::new();
+    let mut surfaces: Vec<SideSurface> = Vec::new();
     for (i, f) in members.iter().enumerate() {
         match surfaces
             .iter_mut()
-            .find(|(o, c, _)| *c == f.convex && (o - f.off).abs() < lin)
+            .find(|s| s.convex == f.convex && (s.off - f.off).abs() < lin)
         {
-            Some(s) => s.2.push(i),
-            None => surfaces.push((f.off, f.convex, vec![i])),
+            Some(s) => s.faces.push(i),
+            None => surfaces.push(SideSurface {
+                off: f.off,
+                convex: f.convex,
+                faces: vec![i],
+            }),
         }
     }
-    let min_area = a.tol().min_overlap_area;
-    // Per pair of surfaces (convex, concave): side faces and region parts.
-    let mut groups: Vec<((usize, usize), [Vec<FaceId>; 2], Vec<geo::Polygon<f64>>)> = Vec::new();
-    for (si, (off_c, convex, outer_faces)) in surfaces.iter().enumerate() {
-        if !convex {
-            continue;
-        }
+    let mut groups: Vec<Group> = Vec::new();
+    for (si, outer) in surfaces.iter().enumerate().filter(|(_, s)| s.convex) {
         let mut below: Vec<(usize, f64)> = surfaces
             .iter()
             .enumerate()
-            .filter(|(_, (o, c, _))| !c && *o < off_c - lin)
-            .map(|(k, (o, _, _))| (k, off_c - o))
+            .filter(|(_, s)| !s.convex && s.off < outer.off - lin)
+            .map(|(k, s)| (k, outer.off - s.off))
             .collect();
         below.sort_by(|x, y| x.1.total_cmp(&y.1));
-        for &fi in outer_faces {
-            let f = members[fi];
-            let own = f.poly.unsigned_area();
-            let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
-            for &(k, _) in &below {
-                if covered.unsigned_area() >= own - min_area {
-                    break;
-                }
-                let mut fresh_all = Vec::new();
-                let mut partners = Vec::new();
-                for &gi in &surfaces[k].2 {
-                    let g = members[gi];
-                    for turns in [-1.0, 0.0, 1.0] {
-                        let common = intersect(&f.poly, &shifted(&g.poly, turns));
-                        if common.unsigned_area() <= min_area {
-                            continue;
-                        }
-                        let fresh = if covered.0.is_empty() {
-                            common.clone()
-                        } else {
-                            common.difference(&covered)
-                        };
-                        if fresh.unsigned_area() > min_area {
-                            if !partners.contains(&g.face) {
-                                partners.push(g.face);
-                            }
-                            fresh_all.extend(fresh.0.clone());
-                        }
-                        covered = if covered.0.is_empty() {
-                            common
-                        } else {
-                            covered.union(&common)
-                        };
-                    }
-                }
-                if partners.is_empty() {
-                    continue;
-                }
-                let key = (si, k);
-                let slot = match groups.iter().position(|g| g.0 == key) {
-                    Some(p) => p,
-                    None => {
-                        groups.push((key, [Vec::new(), Vec::new()], Vec::new()));
-                        groups.len() - 1
-                    }
-                };
-                let g = &mut groups[slot];
-                if !g.1[0].contains(&f.face) {
-                    g.1[0].push(f.face);
-                }
-                for p in partners {
-                    if !g.1[1].contains(&p) {
-                        g.1[1].push(p);
-                    }
-                }
-                g.2.extend(fresh_all);
-            }
+        for &fi in &outer.faces {
+            pair_face(a, members, fi, si, &surfaces, &below, &mut groups);
         }
     }
     groups
         .into_iter()
-        .filter_map(|((si, k), mut sides, parts)| {
-            sides.iter_mut().for_each(|v| v.sort());
-            let off = [surfaces[si].0, surfaces[k].0];
-            build_wall(rev, members, sides, off, parts, config)
+        .filter_map(|mut g| {
+            g.sides.iter_mut().for_each(|v| v.sort());
+            let off = [surfaces[g.surfaces.0].off, surfaces[g.surfaces.1].off];
+            build_wall(rev, members, g.sides, off, g.parts, config)
         })
         .collect()
+}
+
+/// Pair convex face `fi` (on surface `si`) with the concave surfaces
+/// `below` it, nearest first, until it is bounded everywhere; record each
+/// pairing's fresh region in its group.
+fn pair_face(
+    a: &PartAnalysis,
+    members: &[&RevFace],
+    fi: usize,
+    si: usize,
+    surfaces: &[SideSurface],
+    below: &[(usize, f64)],
+    groups: &mut Vec<Group>,
+) {
+    let min_area = a.tol().min_overlap_area;
+    let f = members[fi];
+    let own = f.poly.unsigned_area();
+    let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
+    for &(k, _) in below {
+        if covered.unsigned_area() >= own - min_area {
+            break;
+        }
+        let mut fresh_all = Vec::new();
+        let mut partners = Vec::new();
+        for g in surfaces[k].faces.iter().map(|&gi| members[gi]) {
+            for turns in [-1.0, 0.0, 1.0] {
+                let common = intersect(&f.poly, &shifted(&g.poly, turns));
+                if common.unsigned_area() <= min_area {
+                    continue;
+                }
+                let fresh = if covered.0.is_empty() {
+                    common.clone()
+                } else {
+                    common.difference(&covered)
+                };
+                if fresh.unsigned_area() > min_area {
+                    if !partners.contains(&g.face) {
+                        partners.push(g.face);
+                    }
+                    fresh_all.extend(fresh.0);
+                }
+                covered = if covered.0.is_empty() {
+                    common
+                } else {
+                    covered.union(&common)
+                };
+            }
+        }
+        if partners.is_empty() {
+            continue;
+        }
+        let slot = match groups.iter().position(|g| g.surfaces == (si, k)) {
+            Some(p) => p,
+            None => {
+                groups.push(Group {
+                    surfaces: (si, k),
+                    sides: [Vec::new(), Vec::new()],
+                    parts: Vec::new(),
+                });
+                groups.len() - 1
+            }
+        };
+        let g = &mut groups[slot];
+        if !g.sides[0].contains(&f.face) {
+            g.sides[0].push(f.face);
+        }
+        for p in partners {
+            if !g.sides[1].contains(&p) {
+                g.sides[1].push(p);
+            }
+        }
+        g.parts.extend(fresh_all);
+    }
 }
 
 /// A wall from its sides and region in (θ, s), or none when it is too
