@@ -21,6 +21,11 @@ the base-leaf connections between them. Every part is also written turned
     1.5 mm thick leaning 15° outwards, 25 mm along its generator from the
     web's underside.
 
+  freeform_rib: a web 2 mm (x 0..200, y 0..100) with a rib 1.5 mm thick
+    and 28 mm tall standing on it along an S-shaped curve (a B-spline in
+    plan, its two sides the curve's offsets by ±0.75 mm, approximated to
+    1e-8 mm): walls between free-form faces that are offsets of each other.
+
 usage: python3 scripts/make_curved_fixtures.py [OUT_DIR]   (default fixtures/curved)
 """
 import json, math, os, sys
@@ -36,7 +41,7 @@ from OCP.TopAbs import TopAbs_FACE  # noqa: E402
 from OCP.GProp import GProp_GProps  # noqa: E402
 from OCP.BRepGProp import BRepGProp, BRepGProp_Face  # noqa: E402
 from OCP.BRepAdaptor import BRepAdaptor_Surface  # noqa: E402
-from OCP.GeomAbs import GeomAbs_SurfaceType as T  # noqa: E402
+from OCP.GeomAbs import GeomAbs_SurfaceType as T, GeomAbs_C2  # noqa: E402
 
 
 def revolved(points_xz, degrees, start_deg=0.0):
@@ -214,10 +219,64 @@ def conical_flange():
     return shape, expect
 
 
+def s_curve():
+    """The rib's mid-curve in plan: a B-spline through an S."""
+    from OCP.OCP.collections import Array1_gp_Pnt
+    from OCP.GeomAPI import GeomAPI_PointsToBSpline
+    pts = Array1_gp_Pnt(1, 9)
+    for i in range(9):
+        x = 30.0 + 140.0 * i / 8
+        pts.SetValue(i + 1, gp_Pnt(x, 50.0 + 18.0 * math.sin(2 * math.pi * (x - 30.0) / 140.0), 0.0))
+    return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, 1e-9).Curve()
+
+
+def offset_curve(c, d, n=600):
+    """The plan curve `c` offset by `d` to its left, as a B-spline through
+    `n` points of the exact offset (within 1e-8 mm)."""
+    from OCP.OCP.collections import Array1_gp_Pnt
+    from OCP.GeomAPI import GeomAPI_PointsToBSpline
+    t0, t1 = c.FirstParameter(), c.LastParameter()
+    pts = Array1_gp_Pnt(1, n)
+    for i in range(n):
+        t = t0 + (t1 - t0) * i / (n - 1)
+        p, v = gp_Pnt(), gp_Vec()
+        c.D1(t, p, v)
+        l = math.hypot(v.X(), v.Y())
+        pts.SetValue(i + 1, gp_Pnt(p.X() - d * v.Y() / l, p.Y() + d * v.X() / l, 0.0))
+    return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, 1e-8).Curve()
+
+
+def freeform_rib():
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeWire
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakePrism
+    from OCP.GCPnts import GCPnts_AbscissaPoint
+    from OCP.GeomAdaptor import GeomAdaptor_Curve
+    c = s_curve()
+    left, right = offset_curve(c, 0.75), offset_curve(c, -0.75)
+    e = lambda *a: BRepBuilderAPI_MakeEdge(*a).Edge()
+    lp0, lp1 = left.Value(left.FirstParameter()), left.Value(left.LastParameter())
+    rp0, rp1 = right.Value(right.FirstParameter()), right.Value(right.LastParameter())
+    w = BRepBuilderAPI_MakeWire()
+    for edge in (e(left), e(lp1, rp1), e(right), e(rp0, lp0)):
+        w.Add(edge)
+    plan = BRepBuilderAPI_MakeFace(w.Wire()).Face()
+    rib = BRepPrimAPI_MakePrism(plan, gp_Vec(0, 0, 30)).Shape()
+    shape = fuse(box(0, 0, 0, 200, 100, 2), rib)
+    length = GCPnts_AbscissaPoint.Length_s(GeomAdaptor_Curve(c), 1e-10)
+
+    def expect(fs):
+        return [
+            wall("W", "web", fs, either(plane([0, 0, -1]), plane([0, 0, 1], 2.0)), 2.0, None, None),
+            wall("R", "rib", fs, lambda f: f["kind"] == "other" and f["centroid"][2] > 2.0, 1.5, 28.0, length),
+        ], [["W", "R"]]
+    return shape, expect
+
+
 CASES = {
     "frame_r400": (frame_r400, "frame segment: 2 mm web r 400..480 over 30°, 1.6 mm flanges 25 mm tall on both curved edges"),
     "frame_r250": (frame_r250, "frame segment: 2.5 mm web r 250..310 over 60°, outer flange 30 tall, inner 18, both 2 mm"),
     "skin_stringers": (skin_stringers, "curved skin 2 mm (r 500) with two straight 1.5 mm stringers 20 tall inside"),
+    "freeform_rib": (freeform_rib, "2 mm web with a 1.5 mm rib 28 tall along an S-curve: free-form sides, offsets of each other"),
     "conical_flange": (conical_flange, "2 mm web r 200..260 over 45° with a 1.5 mm conical flange leaning 15° outwards"),
 }
 

@@ -206,3 +206,55 @@ fn a_boss_around_a_hole_is_not_a_curved_wall() {
     );
     assert!(r.features.iter().all(|f| f.mid_surface.is_none()));
 }
+
+#[test]
+fn the_plan_says_where_curved_walls_are_not_planned_yet() {
+    let text = std::fs::read_to_string(dir().join("frame_r400.step")).unwrap();
+    let rules = thinwall_plan::RuleSet::default_rules();
+    let (_, plan) = common::plan_text(&text, [0.0, 0.0, 1.0], &rules);
+    // Both flanges are sequenced before the web and sized ...
+    let flanges: Vec<_> = plan
+        .walls
+        .iter()
+        .filter(|w| w.kind.name() == "flange")
+        .collect();
+    assert_eq!(flanges.len(), 2);
+    for w in &flanges {
+        assert!((w.sizes.big_h - 23.0).abs() < 1e-6, "{}", w.sizes.big_h);
+        // ... but get no step-approach layers, and the plan says so.
+        assert!(plan.layers.iter().all(|l| l.owner != w.id));
+        assert!(
+            plan.limits
+                .iter()
+                .any(|l| l.starts_with(&format!("{}: curved wall", w.id))),
+            "{:?}",
+            plan.limits
+        );
+    }
+    assert!(plan.to_text().contains("not planned yet"));
+}
+
+#[test]
+fn machining_features_on_a_frame_segment_are_not_degenerate() {
+    let fx: Fixture = serde_json::from_str(
+        &std::fs::read_to_string(dir().join("frame_r400_turned.expected.json")).unwrap(),
+    )
+    .unwrap();
+    let (part, out) = run(&fx);
+    let extent = part.bounding_box().diagonal();
+    for m in &out.machining {
+        assert!(m.depth > 0.0 && m.length > 0.0 && m.width > 0.0, "{m:?}");
+        assert!(m.depth.max(m.length).max(m.width) < extent, "{m:?}");
+        assert_ne!(m.kind.name(), "chamfer", "{m:?}");
+        assert_ne!(m.kind.name(), "hole", "{m:?}");
+    }
+    // The outer flange's outside is the part's curved envelope under the
+    // block: a face feature, as deep as the arc's rise (480 (1 − cos 30°)).
+    let outer = out
+        .machining
+        .iter()
+        .find(|m| m.kind.name() == "face" && m.faces.len() == 1)
+        .expect("the outer flange's envelope");
+    let rise = 480.0 * (1.0 - 30f64.to_radians().cos());
+    assert!((outer.depth - rise).abs() < 1e-3, "{}", outer.depth);
+}

@@ -301,6 +301,18 @@ fn param_area(t: &[[f64; 2]; 3]) -> f64 {
         .abs()
 }
 
+/// A parameter point for spade, which refuses coordinates that are not 0
+/// but nearer it than about 1e-43 (`InsertionError::TooSmall`): a boundary
+/// point mapped back to the surface can land 1e-60 off a domain edge
+/// that is at 0. Such values are 0 here.
+pub(crate) fn spade_point(u: f64, v: f64) -> Point2<f64> {
+    let flush = |x: f64| if x.abs() < SPADE_FLUSH { 0.0 } else { x };
+    Point2::new(flush(u), flush(v))
+}
+
+/// Parameters nearer 0 than this are 0 for the triangulation.
+const SPADE_FLUSH: f64 = 1e-30;
+
 /// Integrate area and first moments of a free-form face.
 pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshIntegral, String> {
     let mut warnings = Vec::new();
@@ -317,7 +329,7 @@ pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshInteg
                 return Err("non-finite parameter on the boundary".into());
             }
             let h = cdt
-                .insert(Point2::new(p[0], p[1]))
+                .insert(spade_point(p[0], p[1]))
                 .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
             handles.push(h);
         }
@@ -329,7 +341,7 @@ pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshInteg
         }
     }
     for p in interior_points(&loops, s) {
-        cdt.insert(Point2::new(p[0], p[1]))
+        cdt.insert(spade_point(p[0], p[1]))
             .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
     }
     if failed_constraints > 0 {
@@ -382,6 +394,16 @@ pub fn integrate(part: &Part, face: &Face, s: &NurbsSurface) -> Result<MeshInteg
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn parameters_a_hair_off_zero_are_zero_for_the_triangulation() {
+        // spade refuses 1e-60 (TooSmall); a boundary point mapped back to
+        // its surface lands there (the free-form rib fixture's side).
+        let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
+        assert!(cdt.insert(Point2::new(1e-60, 0.5)).is_err());
+        assert!(cdt.insert(spade_point(1e-60, 0.5)).is_ok());
+        assert_eq!(spade_point(1e-60, -2.5), Point2::new(0.0, -2.5));
+    }
 
     #[test]
     fn triangle_rule_is_exact_for_quartics_on_a_flat_patch() {

@@ -1132,7 +1132,7 @@ enum Corner {
 /// whose centres lie inside.
 fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<[Corner; 3]>, String> {
     // Triangulated with v shortened `stretch` times (`Grid::stretch`).
-    let at = |uv: &[f64; 2]| Point2::new(uv[0], uv[1] / stretch);
+    let at = |uv: &[f64; 2]| crate::param_mesh::spade_point(uv[0], uv[1] / stretch);
     let mut t: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
     let mut corner_of = std::collections::HashMap::new();
     for r in rings {

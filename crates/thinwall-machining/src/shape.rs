@@ -121,7 +121,7 @@ impl<'g> GroupShape<'g> {
                 }
             }
         }
-        let cylinders = group
+        let cylinders: Vec<Cylinder> = group
             .iter()
             .filter_map(|&f| a.concave_cylinder(f))
             .collect();
@@ -135,9 +135,11 @@ impl<'g> GroupShape<'g> {
         // Ranked by whether a face of the group faces it, then by the
         // group's depth seen from it: never by the planes' numbering,
         // which follows the world's axes.
+        let facing = envelope_normal(a, group, &planes, &cylinders);
         let rank = |sp: usize| {
             let n = stock.normal(sp);
-            let faces_it = planes.iter().any(|(m, _)| same_direction(m, &n));
+            let faces_it = planes.iter().any(|(m, _)| same_direction(m, &n))
+                || facing.is_some_and(|m| m.dot(&n) > ENVELOPE_FACING);
             let (lo, hi) = a.extent(group, &n);
             (faces_it, hi - lo)
         };
@@ -151,6 +153,14 @@ impl<'g> GroupShape<'g> {
             })
         });
         let entry = entry.or_else(|| touched.iter().next().copied());
+        // The curved envelope is entered from the block plane it faces
+        // (which it may touch along a line only).
+        let entry = match facing {
+            Some(m) if from_up.is_none() => {
+                (0..6).max_by(|&x, &y| m.dot(&stock.normal(x)).total_cmp(&m.dot(&stock.normal(y))))
+            }
+            _ => entry,
+        };
         Self {
             stock,
             group,
@@ -282,6 +292,11 @@ impl<'g> GroupShape<'g> {
         use Profile as P;
         // One strip of a face meeting three block planes: a bevel on the
         // block's edge (a broad face there is the part's own side).
+        if self.planes.is_empty() {
+            // Convex curved faces only (a frame's outer flange, a skin's
+            // outside): the part's curved envelope under the block.
+            return (Face, false, P::Free);
+        }
         let (width, length) = a.strip_width(self.group[0]);
         if self.group.len() == 1 && self.touched.len() >= 3 && length >= LONE_BEVEL * width {
             return (Chamfer, false, P::Slanted);
@@ -388,6 +403,32 @@ impl<'g> GroupShape<'g> {
                 .map_or(-self.stock.axes[2], |(n, _)| -n)
         }
     }
+}
+
+/// A group of convex curved faces only faces the block plane within this
+/// cosine of its mean outward normal (its entry).
+const ENVELOPE_FACING: f64 = 0.5;
+
+/// The mean outward normal (area-weighted, at each face's centroid) of a
+/// group with no planes and no concave cylinders: convex curved faces, the
+/// part's envelope. `None` for any other group.
+fn envelope_normal(
+    a: &PartAnalysis,
+    group: &[FaceId],
+    planes: &[(Vector3, f64)],
+    cylinders: &[Cylinder],
+) -> Option<Vector3> {
+    if !planes.is_empty() || !cylinders.is_empty() {
+        return None;
+    }
+    let mut sum = Vector3::zeros();
+    for &f in group {
+        let face = a.part().face(f);
+        let p = a.props(f);
+        let n = face.surface.normal_at(&p.centroid)?;
+        sum += if face.same_sense { n } else { -n } * p.area;
+    }
+    sum.try_normalize(1e-12)
 }
 
 /// Holes: concave cylinders. Blind when a face closes the far end: a plane

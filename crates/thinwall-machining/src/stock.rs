@@ -148,21 +148,19 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
             .map(|c| c.1)
             .sum()
     };
-    let mut best: Option<(f64, Vector3, Vector3)> = None;
+    let mut pairs: Vec<(f64, Vector3, Vector3)> = Vec::new();
     for (i, (ci, ai)) in clusters.iter().enumerate() {
         for (cj, aj) in clusters.iter().skip(i + 1) {
             if ci.dot(cj).abs() >= sin {
                 continue;
             }
             let score = ai + aj + area_along(&ci.cross(cj).normalize());
-            if best.as_ref().is_none_or(|b| score > b.0) {
-                let (d1, d2) = if ai >= aj { (*ci, *cj) } else { (*cj, *ci) };
-                best = Some((score, d1, d2));
-            }
+            let (d1, d2) = if ai >= aj { (*ci, *cj) } else { (*cj, *ci) };
+            pairs.push((score, d1, canonical(d2 - d1 * d2.dot(&d1)).normalize()));
         }
     }
-    let (d1, d2) = match best {
-        Some((_, d1, d2)) => (d1, canonical(d2 - d1 * d2.dot(&d1)).normalize()),
+    let (d1, d2) = match best_pair(a, &pairs) {
+        Some((d1, d2)) => (d1, d2),
         None => {
             let Some(d1) = clusters
                 .iter()
@@ -175,6 +173,41 @@ fn dominant_axes(a: &PartAnalysis) -> [Vector3; 3] {
         }
     };
     snap_to_world([d1, d2, canonical(d1.cross(&d2).normalize())])
+}
+
+/// Pairs scoring within this share of the best tie (a symmetric part's
+/// mirror-image directions carry equal area up to rounding, which differs
+/// with the pose).
+const SCORE_TIE: f64 = 1e-6;
+
+/// The best-scoring pair of directions; ties (within [`SCORE_TIE`]) go to
+/// the smaller block, then to the first (a mirror image of the other: the
+/// features come out mirrored, alike in size).
+fn best_pair(a: &PartAnalysis, pairs: &[(f64, Vector3, Vector3)]) -> Option<(Vector3, Vector3)> {
+    let top = pairs.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    let all: Vec<FaceId> = a.part().face_ids().collect();
+    let volume = |d1: &Vector3, d2: &Vector3| -> f64 {
+        [*d1, *d2, d1.cross(d2)]
+            .iter()
+            .map(|ax| {
+                let (lo, hi) = a.extent(&all, ax);
+                hi - lo
+            })
+            .product()
+    };
+    let tied: Vec<&(f64, Vector3, Vector3)> = pairs
+        .iter()
+        .filter(|p| p.0 >= top - SCORE_TIE * top.abs())
+        .collect();
+    if tied.len() == 1 {
+        return Some((tied[0].1, tied[0].2));
+    }
+    let volumes: Vec<f64> = tied.iter().map(|p| volume(&p.1, &p.2)).collect();
+    let least = volumes.iter().copied().fold(f64::INFINITY, f64::min);
+    tied.iter()
+        .zip(&volumes)
+        .find(|(_, &v)| v <= least * (1.0 + SCORE_TIE))
+        .map(|(p, _)| (p.1, p.2))
 }
 
 const WORLD: [Vector3; 3] = [

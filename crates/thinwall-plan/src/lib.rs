@@ -84,9 +84,33 @@ pub struct Plan {
     pub machining_features: Vec<features::RemovalFeature>,
     /// Relations between machining features and one order respecting them.
     pub feature_sequence: feature_order::FeatureSequence,
+    /// Where a planner layer did not apply, one line each (curved walls:
+    /// sequenced and sized, but their step approach is not designed yet).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub limits: Vec<String>,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,
+}
+
+/// What the planner layers leave out, per feature: curved walls get their
+/// place in the sequence and their sizes, not step-approach layers (those
+/// are boxes on a flat wall's side, `steps`); their material stays in the
+/// removal's bulk features.
+fn limits(out: &Outcome, walls: &[WallPlan]) -> Vec<String> {
+    walls
+        .iter()
+        .filter(|w| w.sizes.thin)
+        .filter_map(|w| {
+            let f = out.recognition.feature(w.id)?;
+            let m = f.mid_surface.as_ref()?;
+            Some(format!(
+                "{}: curved wall ({} r {:.2} mm): sequenced and sized; step-approach layers are \
+                 designed on flat walls only, so its material stays in bulk features",
+                w.id, m.kind, m.radius
+            ))
+        })
+        .collect()
 }
 
 /// The removal's figures, or why there is none.
@@ -207,6 +231,7 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let faces = adapt::Faces::new(part);
     let (shapes, mut adaptations) = adapt::shapes(&faces, out, &scene, &mut walls);
     let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
+    let limits = limits(out, &walls);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
     let splits = adapt::hole_splits(&faces, out, &walls, &shapes);
@@ -259,6 +284,7 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
         frame,
         machining_features,
         feature_sequence,
+        limits,
         queries: seq,
     }
 }
@@ -423,6 +449,9 @@ impl Plan {
             );
         }
         self.removal_text(&mut s);
+        for l in &self.limits {
+            let _ = writeln!(s, "not planned yet: {l}");
+        }
         let _ = writeln!(s, "rejected candidates: {}", self.rejected.len());
         for r in &self.rejected {
             let _ = writeln!(s, "  [{:?}] {}", r.reason, r.explanation);
