@@ -164,12 +164,18 @@ fn a_curved_wall_reports_its_mid_surface_and_access_range() {
         .features
         .iter()
         .filter(|f| f.kind.name() == "flange")
-        .find(|f| f.mid_surface.as_ref().is_some_and(|m| m.radius > 470.0))
+        .find(|f| {
+            f.mid_surface
+                .as_ref()
+                .and_then(|m| m.radius)
+                .is_some_and(|r| r > 470.0)
+        })
         .expect("the outer flange");
     let m = outer.mid_surface.as_ref().unwrap();
     assert_eq!(m.kind, "cylinder");
-    assert!((m.radius - 479.2).abs() < 1e-6, "{}", m.radius);
-    assert!(((m.angle_range_deg[1] - m.angle_range_deg[0]) - 30.0).abs() < 1e-4);
+    assert!((m.radius.unwrap() - 479.2).abs() < 1e-6, "{:?}", m.radius);
+    let [a0, a1] = m.angle_range_deg.unwrap();
+    assert!(((a1 - a0) - 30.0).abs() < 1e-4);
     assert!(
         outer.mid_plane.is_none(),
         "a curved wall has a mid-surface instead"
@@ -257,4 +263,42 @@ fn machining_features_on_a_frame_segment_are_not_degenerate() {
         .expect("the outer flange's envelope");
     let rise = 480.0 * (1.0 - 30f64.to_radians().cos());
     assert!((outer.depth - rise).abs() < 1e-3, "{}", outer.depth);
+}
+
+#[test]
+fn a_free_form_wall_reports_its_measured_thickness_and_sweep() {
+    for name in ["freeform_rib", "freeform_rib_turned"] {
+        let fx: Fixture = serde_json::from_str(
+            &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
+        )
+        .unwrap();
+        let (_, out) = run(&fx);
+        let rib = out
+            .recognition
+            .features
+            .iter()
+            .find(|f| f.kind.name() == "rib")
+            .expect("the rib");
+        let m = rib.mid_surface.as_ref().expect("a mid-surface");
+        assert_eq!(m.kind, "offset");
+        assert!(m.axis.is_none() && m.radius.is_none());
+        // The sides are fitted offsets: sampled within a millionth of 1.5.
+        let [lo, hi] = m.thickness_range.unwrap();
+        assert!(
+            (lo - 1.5).abs() < 1.5e-6 && (hi - 1.5).abs() < 1.5e-6,
+            "{lo} {hi}"
+        );
+        // The S turns its sides' normals through about 83°, both vertical.
+        let access = &out.structure.access[&rib.id];
+        for side in access {
+            assert!(side.reachable, "{}", side.reason);
+            let sweep: f64 = side.reason["curved: the normal sweeps ".len()..]
+                .split('°')
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap();
+            assert!((75.0..90.0).contains(&sweep), "{}", side.reason);
+        }
+    }
 }

@@ -362,10 +362,15 @@ fn access(
 fn swept_normals(f: &StiffnessFeature, side: usize) -> Option<Vec<[f64; 3]>> {
     let m = f.mid_surface.as_ref()?;
     let v3 = |a: [f64; 3]| thinwall_geom::Vector3::from(a);
-    let (axis, u) = (v3(m.axis), v3(m.reference));
+    let (Some(axis), Some(u), Some([t0, t1])) = (m.axis, m.reference, m.angle_range_deg) else {
+        // A free-form wall: its normals at both ends and the middle.
+        let r = f.access_range.as_ref()?[side];
+        let mid = f.access_directions.as_ref()?[side];
+        return Some(vec![r[0], mid, r[1]]);
+    };
+    let (axis, u) = (v3(axis), v3(u));
     let v = axis.cross(&u);
     let alpha = m.half_angle_deg.unwrap_or(0.0).to_radians();
-    let [t0, t1] = m.angle_range_deg;
     let steps = ((t1 - t0).abs() / SWEEP_STEP_DEG).ceil().max(1.0) as usize;
     let sign = if side == 0 { 1.0 } else { -1.0 };
     Some(

@@ -104,10 +104,14 @@ fn limits(out: &Outcome, walls: &[WallPlan]) -> Vec<String> {
         .filter_map(|w| {
             let f = out.recognition.feature(w.id)?;
             let m = f.mid_surface.as_ref()?;
+            let shape = match m.radius {
+                Some(r) => format!("{} r {r:.2} mm", m.kind),
+                None => m.kind.clone(),
+            };
             Some(format!(
-                "{}: curved wall ({} r {:.2} mm): sequenced and sized; step-approach layers are \
+                "{}: curved wall ({shape}): sequenced and sized; step-approach layers are \
                  designed on flat walls only, so its material stays in bulk features",
-                w.id, m.kind, m.radius
+                w.id
             ))
         })
         .collect()

@@ -35,6 +35,10 @@ pub const MIN_RADIUS_TO_THICKNESS: f64 = 3.0;
 /// (its polygon is the whole turn), radians.
 const CLOSED_SWEEP: f64 = TAU - 1e-3;
 
+/// Normals sampled along a free-form wall's centre line for its access
+/// range.
+const RANGE_SAMPLES: usize = 32;
+
 /// Longest step along an arc when an outline is drawn in 3D, radians.
 const OUTLINE_STEP: f64 = PI / 180.0;
 
@@ -113,14 +117,19 @@ impl Revolution {
 /// What the report shows of a curved wall's mid-surface.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MidSurface {
-    /// `cylinder` or `cone`.
+    /// `cylinder`, `cone`, or `offset` (between free-form faces that are
+    /// offsets of each other).
     pub kind: String,
-    /// A point on the axis and the axis (the radius grows along it for a
-    /// cone), mm.
-    pub axis_point: [f64; 3],
-    pub axis: [f64; 3],
-    /// The mid-surface's distance from the axis at the region's centre, mm.
-    pub radius: f64,
+    /// Cylinders and cones: a point on the axis and the axis (the radius
+    /// grows along it for a cone), mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub axis_point: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub axis: Option<[f64; 3]>,
+    /// Cylinders and cones: the mid-surface's distance from the axis at
+    /// the region's centre, mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
     /// The point of the mid-surface at the region's centre, and side 0's
     /// outward normal there.
     pub centre: [f64; 3],
@@ -128,48 +137,139 @@ pub struct MidSurface {
     /// Cones: the half-angle, degrees.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub half_angle_deg: Option<f64>,
-    /// Where angles are measured from (unit, normal to the axis), and the
-    /// wall's angle range about the axis from it, degrees (right-handed).
-    pub reference: [f64; 3],
-    pub angle_range_deg: [f64; 2],
+    /// Cylinders and cones: where angles are measured from (unit, normal
+    /// to the axis), and the wall's angle range about the axis from it,
+    /// degrees (right-handed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_range_deg: Option<[f64; 2]>,
+    /// Offset walls: the thinnest and thickest distance sampled between
+    /// the sides, mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thickness_range: Option<[f64; 2]>,
+}
+
+/// How a curved wall's region is laid flat: developed (x, y) and the
+/// offset across the sides (towards side 0's outward normal) of a point,
+/// and back.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Development {
+    /// About an axis: x the arc at `r_mid` from the centre angle, y along
+    /// the generator from the centre; offsets are the family's.
+    Revolution {
+        rev: Revolution,
+        /// The region's centre: angle (radians) and generator coordinate.
+        theta_c: f64,
+        s_c: f64,
+        /// The mid-surface's radius at the centre.
+        r_mid: f64,
+    },
+    /// Along side 0's free-form surface (`crate::offset`): x and y arc
+    /// lengths on the mid-surface along the iso-curves through the centre;
+    /// offsets from side 0 along its normal.
+    Offset(Box<crate::offset::OffsetDevelopment>),
+}
+
+impl Development {
+    /// The point at developed (x, y) and offset `off`.
+    pub fn to_world(&self, x: f64, y: f64, off: f64) -> Point3 {
+        match self {
+            Development::Revolution {
+                rev,
+                theta_c,
+                s_c,
+                r_mid,
+            } => rev.world(theta_c + x / r_mid, s_c + y, off),
+            Development::Offset(o) => o.to_world(x, y, off),
+        }
+    }
+
+    /// Developed (x, y) and offset of a point.
+    pub fn develop(&self, p: &Point3) -> (f64, f64, f64) {
+        match self {
+            Development::Revolution {
+                rev,
+                theta_c,
+                s_c,
+                r_mid,
+            } => {
+                let (theta, s, off) = rev.local(p);
+                (wrap(theta - theta_c) * r_mid, s - s_c, off)
+            }
+            Development::Offset(o) => o.develop(p),
+        }
+    }
+
+    /// The unit normal towards larger offsets at developed (x, y).
+    pub fn normal(&self, x: f64, y: f64) -> Vector3 {
+        match self {
+            Development::Revolution {
+                rev,
+                theta_c,
+                r_mid,
+                ..
+            } => rev.normal(theta_c + x / r_mid),
+            Development::Offset(o) => o.normal(x, y),
+        }
+    }
+
+    /// The developed x and y directions at (x, y) (unit; x × y = normal).
+    pub fn axes(&self, x: f64, y: f64) -> (Vector3, Vector3) {
+        match self {
+            Development::Revolution {
+                rev,
+                theta_c,
+                r_mid,
+                ..
+            } => {
+                let t = theta_c + x / r_mid;
+                (rev.tangent(t), rev.generator(t))
+            }
+            Development::Offset(o) => o.axes(x, y),
+        }
+    }
+
+    /// Longest step along x when an outline is drawn in 3D, mm.
+    fn outline_step(&self) -> f64 {
+        match self {
+            Development::Revolution { r_mid, .. } => OUTLINE_STEP * r_mid,
+            Development::Offset(o) => o.outline_step(),
+        }
+    }
 }
 
 /// A curved wall's surfaces and development.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurvedWall {
-    pub rev: Revolution,
-    /// The region's centre: angle (radians) and generator coordinate.
-    pub theta_c: f64,
-    pub s_c: f64,
-    /// The mid-surface's radius at the centre: developed x is arc length there.
-    pub r_mid: f64,
-    /// Offsets of side 0 (convex) and side 1 (concave).
+    pub dev: Development,
+    /// Offsets of side 0 and side 1 (side 0's is the larger).
     pub off: [f64; 2],
     /// Each side's faces as developed polygons.
     pub side_polygons: [Vec<(FaceId, MultiPolygon<f64>)>; 2],
+    /// Free-form walls: the thinnest and thickest distance measured
+    /// between the sides, mm.
+    pub measured: Option<(f64, f64)>,
 }
 
 impl CurvedWall {
     /// The point at developed (x, y) at offset `off`.
     pub fn to_world(&self, x: f64, y: f64, off: f64) -> Point3 {
-        self.rev
-            .world(self.theta_c + x / self.r_mid, self.s_c + y, off)
+        self.dev.to_world(x, y, off)
     }
 
     /// Developed (x, y) and offset of a point.
     pub fn develop(&self, p: &Point3) -> (f64, f64, f64) {
-        let (theta, s, off) = self.rev.local(p);
-        let d = wrap(theta - self.theta_c);
-        (d * self.r_mid, s - self.s_c, off)
+        self.dev.develop(p)
     }
 
     pub fn mid_offset(&self) -> f64 {
         0.5 * (self.off[0] + self.off[1])
     }
 
-    /// A region's outer outlines in 3D at offset `off`, arcs drawn in steps.
+    /// A region's outer outlines in 3D at offset `off`, drawn in steps.
     pub fn outline(&self, region: &MultiPolygon<f64>, off: f64) -> Vec<Point3> {
-        let step = OUTLINE_STEP * self.r_mid;
+        let step = self.dev.outline_step();
         let mut out = Vec::new();
         for ring in region.0.iter().map(|p| p.exterior()) {
             for w in ring.0.windows(2) {
@@ -184,20 +284,9 @@ impl CurvedWall {
         out
     }
 
-    /// The angle range of a developed region about the axis, radians.
-    pub fn angles(&self, region: &MultiPolygon<f64>) -> (f64, f64) {
-        let r = region.bounding_rect();
-        r.map_or((self.theta_c, self.theta_c), |r| {
-            (
-                self.theta_c + r.min().x / self.r_mid,
-                self.theta_c + r.max().x / self.r_mid,
-            )
-        })
-    }
-
-    /// Side `s`'s outward normal at angle θ.
-    pub fn side_normal(&self, s: usize, theta: f64) -> Vector3 {
-        let n = self.rev.normal(theta);
+    /// Side `s`'s outward normal at developed (x, y).
+    pub fn side_normal(&self, s: usize, x: f64, y: f64) -> Vector3 {
+        let n = self.dev.normal(x, y);
         if s == 0 {
             n
         } else {
@@ -208,45 +297,110 @@ impl CurvedWall {
     /// The tangent plane of side `s` at the point of it nearest `p`: a
     /// point and the side's outward normal.
     pub fn tangent_plane(&self, s: usize, p: &Point3) -> (Point3, Vector3) {
-        let (theta, sg, _) = self.rev.local(p);
-        (
-            self.rev.world(theta, sg, self.off[s]),
-            self.side_normal(s, theta),
-        )
-    }
-
-    /// Per side, its outward normals at both ends of the region's arc
-    /// (the normal sweeps between them about the axis).
-    pub fn access_range(&self, region: &MultiPolygon<f64>) -> [[[f64; 3]; 2]; 2] {
-        let (t0, t1) = self.angles(region);
-        let xyz = |v: Vector3| [v.x, v.y, v.z];
-        [0, 1].map(|s| [xyz(self.side_normal(s, t0)), xyz(self.side_normal(s, t1))])
+        let (x, y, _) = self.develop(p);
+        (self.to_world(x, y, self.off[s]), self.side_normal(s, x, y))
     }
 
     /// Whether a point lies within the slab between the sides (`tol` mm).
     pub fn within(&self, p: &Point3, tol: f64) -> bool {
-        let (_, _, off) = self.rev.local(p);
+        let (_, _, off) = self.develop(p);
         off <= self.off[0] + tol && off >= self.off[1] - tol
     }
 
-    pub fn mid_surface(&self, region: &MultiPolygon<f64>) -> MidSurface {
-        let (t0, t1) = self.angles(region);
+    /// Per side, its outward normals at both ends of the region's
+    /// developed x range, through the centre (the normal sweeps between
+    /// them).
+    ///
+    /// A free-form side's normal need not sweep monotonically (an S-shaped
+    /// wall turns back): its two normals are the furthest apart of those
+    /// sampled along the line.
+    pub fn access_range(&self, region: &MultiPolygon<f64>) -> [[[f64; 3]; 2]; 2] {
+        let (x0, x1) = x_range(region);
+        let (_, yc) = centre(region);
         let xyz = |v: Vector3| [v.x, v.y, v.z];
-        let (cx, cy) = region.centroid().map_or((0.0, 0.0), |p| (p.x(), p.y()));
+        let (a, b) = match self.dev {
+            Development::Revolution { .. } => (x0, x1),
+            Development::Offset(_) => {
+                let xs: Vec<f64> = (0..=RANGE_SAMPLES)
+                    .map(|k| x0 + (x1 - x0) * k as f64 / RANGE_SAMPLES as f64)
+                    .collect();
+                let n: Vec<Vector3> = xs.iter().map(|&x| self.dev.normal(x, yc)).collect();
+                let mut best = (x0, x1, -2.0);
+                for i in 0..n.len() {
+                    for j in i + 1..n.len() {
+                        let apart = 1.0 - n[i].dot(&n[j]);
+                        if apart > best.2 {
+                            best = (xs[i], xs[j], apart);
+                        }
+                    }
+                }
+                (best.0, best.1)
+            }
+        };
+        [0, 1].map(|s| {
+            [
+                xyz(self.side_normal(s, a, yc)),
+                xyz(self.side_normal(s, b, yc)),
+            ]
+        })
+    }
+
+    pub fn mid_surface(&self, region: &MultiPolygon<f64>) -> MidSurface {
+        let xyz = |v: Vector3| [v.x, v.y, v.z];
+        let (cx, cy) = centre(region);
         let centre = self.to_world(cx, cy, self.mid_offset());
-        let cone = self.rev.half_angle.abs() > 0.0;
-        MidSurface {
-            kind: if cone { "cone" } else { "cylinder" }.into(),
-            axis_point: xyz(self.rev.origin.coords),
-            axis: xyz(self.rev.axis),
-            radius: self.r_mid,
-            centre: xyz(centre.coords),
-            normal: xyz(self.rev.normal(self.theta_c + cx / self.r_mid)),
-            half_angle_deg: cone.then(|| self.rev.half_angle.to_degrees()),
-            reference: xyz(self.rev.u),
-            angle_range_deg: [t0.to_degrees(), t1.to_degrees()],
+        let normal = xyz(self.dev.normal(cx, cy));
+        match &self.dev {
+            Development::Revolution {
+                rev,
+                theta_c,
+                r_mid,
+                ..
+            } => {
+                let (x0, x1) = x_range(region);
+                let cone = rev.half_angle.abs() > 0.0;
+                MidSurface {
+                    kind: if cone { "cone" } else { "cylinder" }.into(),
+                    axis_point: Some(xyz(rev.origin.coords)),
+                    axis: Some(xyz(rev.axis)),
+                    radius: Some(*r_mid),
+                    centre: xyz(centre.coords),
+                    normal,
+                    half_angle_deg: cone.then(|| rev.half_angle.to_degrees()),
+                    reference: Some(xyz(rev.u)),
+                    angle_range_deg: Some([
+                        (theta_c + x0 / r_mid).to_degrees(),
+                        (theta_c + x1 / r_mid).to_degrees(),
+                    ]),
+                    thickness_range: None,
+                }
+            }
+            Development::Offset(_) => MidSurface {
+                kind: "offset".into(),
+                axis_point: None,
+                axis: None,
+                radius: None,
+                centre: xyz(centre.coords),
+                normal,
+                half_angle_deg: None,
+                reference: None,
+                angle_range_deg: None,
+                thickness_range: self.measured.map(|(a, b)| [a, b]),
+            },
         }
     }
+}
+
+/// The developed x range of a region.
+fn x_range(region: &MultiPolygon<f64>) -> (f64, f64) {
+    region
+        .bounding_rect()
+        .map_or((0.0, 0.0), |r| (r.min().x, r.max().x))
+}
+
+/// A region's centroid (the origin when it has none).
+fn centre(region: &MultiPolygon<f64>) -> (f64, f64) {
+    region.centroid().map_or((0.0, 0.0), |p| (p.x(), p.y()))
 }
 
 /// An angle difference brought into (−π, π].
@@ -603,32 +757,49 @@ fn build_wall(
             })
             .collect()
     });
+    let theta_c = wrap(theta_c);
     let curved = CurvedWall {
-        rev: *rev,
-        theta_c: wrap(theta_c),
-        s_c,
-        r_mid,
+        dev: Development::Revolution {
+            rev: *rev,
+            theta_c,
+            s_c,
+            r_mid,
+        },
         off,
         side_polygons,
+        measured: None,
     };
-    let n = rev.normal(curved.theta_c);
-    let origin = rev.world(curved.theta_c, s_c, off[0]);
-    let frame = Frame {
-        origin,
-        x: rev.tangent(curved.theta_c),
-        y: rev.generator(curved.theta_c),
-        z: n,
-    };
-    Some(crate::walls::Wall {
-        sides,
-        normals: [n, -n],
-        frame,
-        thickness,
-        thickness_range: (thickness, thickness),
-        side1_point: rev.world(curved.theta_c, s_c, off[1]),
-        region,
-        curved: Some(Box::new(curved)),
-    })
+    Some(curved.into_wall(sides, region))
+}
+
+impl CurvedWall {
+    /// The wall: its frame is side 0's tangent frame at the region's
+    /// centre (x, y developed, z the outward normal).
+    pub(crate) fn into_wall(
+        self,
+        sides: [Vec<FaceId>; 2],
+        region: MultiPolygon<f64>,
+    ) -> crate::walls::Wall {
+        let (cx, cy) = centre(&region);
+        let n = self.dev.normal(cx, cy);
+        let (x, y) = self.dev.axes(cx, cy);
+        let frame = Frame {
+            origin: self.to_world(cx, cy, self.off[0]),
+            x,
+            y,
+            z: n,
+        };
+        crate::walls::Wall {
+            sides,
+            normals: [n, -n],
+            frame,
+            thickness: self.off[0] - self.off[1],
+            thickness_range: (self.off[0] - self.off[1], self.off[0] - self.off[1]),
+            side1_point: self.to_world(cx, cy, self.off[1]),
+            region,
+            curved: Some(Box::new(self)),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -27,6 +27,7 @@ pub mod details;
 pub mod engraving;
 pub mod feature;
 pub mod junctions;
+pub mod offset;
 pub mod sizing;
 pub mod walls;
 

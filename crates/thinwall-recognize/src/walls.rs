@@ -263,6 +263,7 @@ pub fn find_walls(a: &PartAnalysis, config: &Config) -> Vec<Wall> {
         walls.push(wall);
     }
     walls.extend(crate::curved::find_curved_walls(a, config));
+    walls.extend(crate::offset::find_offset_walls(a, config));
     walls
 }
 

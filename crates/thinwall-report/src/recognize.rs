@@ -233,9 +233,19 @@ fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
             f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
             f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
             f.faces.len(),
-            f.base.map(|b| b.to_string()).unwrap_or_default()
+            f.base.map(|b| b.to_string()).unwrap_or_default() + &curved_note(f)
         );
     }
+}
+
+/// A curved wall's mid-surface after its base: `  (cylinder r 479.20)`.
+fn curved_note(f: &StiffnessFeature) -> String {
+    f.mid_surface
+        .as_ref()
+        .map_or_else(String::new, |m| match m.radius {
+            Some(r) => format!("  ({} r {r:.2})", m.kind),
+            None => format!("  ({})", m.kind),
+        })
 }
 
 /// Depressions and details, each with its size and the wall it is in or on.
