@@ -419,6 +419,24 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     ));
     outputs.push(("plan", of(&["plan"], "recognition/rib_grid_panel.step")));
     outputs.push(("plan", of(&["plan"], "recognition/c_frame.step")));
+    // Curved walls: mid-surfaces (cylinder, cone, offset), access ranges,
+    // and the plan's limits.
+    for part in [
+        "curved/frame_r400.step",
+        "curved/conical_flange.step",
+        "curved/freeform_rib.step",
+    ] {
+        let v = of(&["recognize"], part);
+        assert!(v["stiffness_features"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|f| f["mid_surface"].is_object() && f["access_range"].is_array()));
+        outputs.push(("recognition", v));
+    }
+    let curved_plan = of(&["plan"], "curved/frame_r400.step");
+    assert_eq!(curved_plan["limits"].as_array().map(Vec::len), Some(2));
+    outputs.push(("plan", curved_plan));
     outputs.push(("access", of(&["access"], "access/two_ribs.step")));
     for part in ["ops/pocket_islands.step", "ops/drill_plate.step"] {
         outputs.push(("operations", of(&["operations", "--format", "json"], part)));

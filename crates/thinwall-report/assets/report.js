@@ -266,11 +266,20 @@
   const faceKind = D.face_kinds || new Array(D.part.faces.length).fill(null);
   const kindColour = (i) => colour(faceKind[i] ? 'stiffness.' + faceKind[i] : 'other');
 
+  // A curved wall's mid-surface in a line: "cylinder r 479.20 mm over 30.0°".
+  function midSurface(m) {
+    if (!m) return null;
+    const over = m.angle_range_deg ? ' over ' + fmt(m.angle_range_deg[1] - m.angle_range_deg[0]) + '°' : '';
+    const cone = m.half_angle_deg !== undefined ? ', half-angle ' + fmt(m.half_angle_deg) + '°' : '';
+    const spread = m.thickness_range ? ', thickness ' + fmt(m.thickness_range[0]) + '–' + fmt(m.thickness_range[1]) + ' mm sampled' : '';
+    return m.kind + (m.radius !== undefined ? ' r ' + mm(m.radius) : '') + over + cone + spread + ' (developed length and height)';
+  }
   function stiffRows(f) {
     const access = (f.access || []).map((a, k) => ['side ' + (k + 1), (a.reachable ? 'reachable' : 'not reachable') + ' along ' + vec(a.direction) + ': ' + a.reason]);
     return [
       ['kind', f.kind], ['thin', f.thin === undefined ? null : (f.thin ? 'yes' : 'no')],
       ['thickness', mm(f.thickness)], ['thickness at foot / top', f.thickness_foot !== undefined ? mm(f.thickness_foot) + ' / ' + mm(f.thickness_top) : null],
+      ['surface', midSurface(f.mid_surface)],
       ['height', mm(f.height)], ['length', mm(f.length)], ['deflection', mm(f.deflection === undefined ? undefined : f.deflection)],
       ['slenderness (h/t)', f.slenderness === undefined ? null : fmt(f.slenderness)], ['diameter', mm(f.diameter)], ['width', mm(f.width)],
       ['radius', mm(f.radius)], ['through', f.through === undefined ? null : String(f.through)], ['large', f.large === undefined ? null : String(f.large)],
