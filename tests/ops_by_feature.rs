@@ -119,3 +119,71 @@ fn operations_keep_every_relation_of_the_plan() {
     );
     assert!(parts >= 25 && relations > 100 && exact > 50 && drills >= 4);
 }
+
+/// The operations as (stage, tool, feature, first layer, area, volume),
+/// sorted.
+fn summary(
+    ops: &thinwall_ops::operations::SetupOperations,
+) -> Vec<(Stage, String, Option<String>, usize, f64, f64)> {
+    let mut v: Vec<_> = ops
+        .operations
+        .iter()
+        .map(|o| {
+            let first = o.passes.first().map_or(usize::MAX, |p| p.layer);
+            let f = o.feature.clone();
+            (o.stage, o.tool.clone(), f, first, o.area_mm2, o.volume_mm3)
+        })
+        .collect();
+    v.sort_by(|a, b| (a.0, &a.1, &a.2, a.3).cmp(&(b.0, &b.1, &b.2, b.3)));
+    v
+}
+
+/// Operations along the plan of a part and of its copies turned by rigid
+/// motions (with the set-up) are the same: stages, tools, features, first
+/// layers, areas and volumes (within 1e-6 of the set-up's totals), and
+/// tool changes. (It found an edge of a cutter field that is part along
+/// one stretch and blank along another classified by its middle alone, so
+/// that a collinear vertex changed the tools.)
+#[test]
+fn operations_along_the_plan_do_not_depend_on_pose() {
+    let lib = ToolLibrary::default_tools();
+    let rules = thinwall_plan::RuleSet::default_rules();
+    let text =
+        std::fs::read_to_string(common::root().join("fixtures/recognition/flange_cutouts.step"))
+            .unwrap();
+    let run = |text: &str, up: [f64; 3]| {
+        let (part, plan) = common::plan_text(text, up, &rules);
+        let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
+        let (_, ops) = along_plan(&a, &plan, &lib, None).unwrap();
+        ops
+    };
+    let base = run(&text, [0.0, 0.0, 1.0]);
+    let want = summary(&base);
+    assert!(want.len() >= 10, "{}", want.len());
+    // Areas and volumes within a millionth of the set-up's totals (a rest
+    // of a few mm² carries the booleans' rounding).
+    let area: f64 = want.iter().map(|w| w.4).sum();
+    let volume: f64 = want.iter().map(|w| w.5).sum();
+    for seed in [3, 11] {
+        let (r, t) = common::rigid_motion(seed);
+        let up = r * nalgebra::Vector3::z();
+        let turned = common::turned_step(&text, &r, &t).0;
+        let ops = run(&turned, [up.x, up.y, up.z]);
+        let got = summary(&ops);
+        assert_eq!(got.len(), want.len(), "turned {seed}");
+        for (g, w) in got.iter().zip(&want) {
+            assert_eq!(
+                (g.0, &g.1, &g.2, g.3),
+                (w.0, &w.1, &w.2, w.3),
+                "turned {seed}"
+            );
+            for (a, b, total) in [(g.4, w.4, area), (g.5, w.5, volume)] {
+                assert!(
+                    (a - b).abs() <= 1e-6 * total,
+                    "turned {seed}: {g:?} vs {w:?}"
+                );
+            }
+        }
+        assert_eq!(ops.tool_changes, base.tool_changes, "turned {seed}");
+    }
+}

@@ -153,7 +153,7 @@ pub fn by_feature(
                 .iter()
                 .flat_map(|s| slab::between(&s.region, &s.lower, &s.upper, z + tol).0)
                 .collect();
-            let joined = outline::union(&pieces, 1e-9 * size.max(1.0));
+            let joined = outline::union(&pieces, crate::layers::JOIN_SNAP * size.max(1.0));
             let fields: Vec<CutterField> = joined
                 .iter()
                 .filter_map(|p| without_slivers(p, tol))
