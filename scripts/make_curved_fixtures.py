@@ -17,6 +17,8 @@ the base-leaf connections between them. Every part is also written turned
   skin_stringers: a skin 2 mm thick (r 500..502 about the y axis, 40° about
     the top, 300 long) with two straight stringers 1.5 mm thick and 20 mm
     tall inside it, at ±8° from the top, the whole length.
+  frame_r400_holes: frame_r400 with a radial Ø10 hole through the outer
+    flange (15°, 13 up) and a Ø30 lightening hole through the web (r 440).
   conical_flange: a web 2 mm over r 200..260 and 45° with an outer flange
     1.5 mm thick leaning 15° outwards, 25 mm along its generator from the
     web's underside.
@@ -138,6 +140,29 @@ def frame_r400():
             wall("O", "flange", fs, either(cyl(480), cyl(478.4)), 1.6, 23.0, 479.2 * arc),
             wall("I", "flange", fs, either(cyl(400), cyl(401.6)), 1.6, 23.0, 400.8 * arc),
         ], [["W", "O"], ["W", "I"]]
+    return shape, expect
+
+
+def frame_r400_holes():
+    """frame_r400 with a radial Ø10 hole through the outer flange at 15°,
+    13 mm up, and a Ø30 lightening hole through the web at r 440, 15°."""
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder
+    from OCP.gp import gp_Ax2
+    from make_recognition_fixtures import cut
+    shape, expect_walls = frame_r400()
+    a = math.radians(15.0)
+    radial = gp_Dir(math.cos(a), math.sin(a), 0)
+    flange_hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(470 * math.cos(a), 470 * math.sin(a), 13.0), radial), 5.0, 20.0).Shape()
+    web_hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(440 * math.cos(a), 440 * math.sin(a), -1.0), gp_Dir(0, 0, 1)), 15.0, 4.0).Shape()
+    shape = cut(shape, flange_hole, web_hole)
+
+    def expect(fs):
+        walls, connections = expect_walls(fs)
+        holes = [
+            {"wall": "O", "diameter": 10.0, "through": True, "faces_at": pick(fs, cyl(5.0))},
+            {"wall": "W", "diameter": 30.0, "through": True, "faces_at": pick(fs, cyl(15.0))},
+        ]
+        return walls, connections, holes
     return shape, expect
 
 
@@ -274,6 +299,7 @@ def freeform_rib():
 
 CASES = {
     "frame_r400": (frame_r400, "frame segment: 2 mm web r 400..480 over 30°, 1.6 mm flanges 25 mm tall on both curved edges"),
+    "frame_r400_holes": (frame_r400_holes, "frame_r400 with a radial Ø10 hole through the outer flange and a Ø30 hole through the web"),
     "frame_r250": (frame_r250, "frame segment: 2.5 mm web r 250..310 over 60°, outer flange 30 tall, inner 18, both 2 mm"),
     "skin_stringers": (skin_stringers, "curved skin 2 mm (r 500) with two straight 1.5 mm stringers 20 tall inside"),
     "freeform_rib": (freeform_rib, "2 mm web with a 1.5 mm rib 28 tall along an S-curve: free-form sides, offsets of each other"),
@@ -286,7 +312,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     for name, (build, about) in CASES.items():
         shape, expect = build()
-        features, connections = expect(faces(shape))
+        features, connections, *holes = expect(faces(shape))
+        holes = holes[0] if holes else []
         for turn in (False, True):
             s, doc_name, up = shape, name, [0, 0, 1]
             feats = json.loads(json.dumps(features))
@@ -295,9 +322,13 @@ def main():
                 doc_name, up = name + "_turned", turn_dir(t, (0, 0, 1))
                 for f in feats:
                     f["side_faces_at"] = [turn_point(t, p) for p in f["side_faces_at"]]
+            hs = json.loads(json.dumps(holes))
+            if turn:
+                for h in hs:
+                    h["faces_at"] = [turn_point(t, p) for p in h["faces_at"]]
             write(s, os.path.join(out, doc_name + ".step"))
             doc = {"part": doc_name + ".step", "about": about + ("; turned 37° about (1,2,3) and moved" if turn else ""),
-                   "up": up, "features": feats, "connections": connections,
+                   "up": up, "features": feats, "connections": connections, "holes": hs,
                    "source": f"scripts/make_curved_fixtures.py (OpenCascade {occ_version()})"}
             json.dump(doc, open(os.path.join(out, doc_name + ".expected.json"), "w"), indent=1)
             print(doc_name, len(feats), "walls")

@@ -2,8 +2,8 @@
 //! frame segments with flanges on their curved edges, a curved skin with
 //! straight stringers, a conical flange; each also turned with its set-up.
 //! Every wall is found with its side faces, kind, thin flag, thickness
-//! (1e-6 relative), height and developed length, and the base-leaf
-//! connections are right.
+//! (1e-6 relative), height and developed length, holes in curved walls
+//! with their wall and diameter, and the base-leaf connections are right.
 
 mod common;
 
@@ -26,11 +26,21 @@ struct Wall {
 }
 
 #[derive(Deserialize)]
+struct Hole {
+    wall: String,
+    diameter: f64,
+    through: bool,
+    faces_at: Vec<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
 struct Fixture {
     part: String,
     up: [f64; 3],
     features: Vec<Wall>,
     connections: Vec<[String; 2]>,
+    #[serde(default)]
+    holes: Vec<Hole>,
 }
 
 fn dir() -> std::path::PathBuf {
@@ -101,6 +111,29 @@ fn check(name: &str) -> Vec<String> {
             if !close(f.length, l, 1e-6) {
                 problems.push(format!("{id} length {:?}, expected {l}", f.length));
             }
+        }
+    }
+    // Holes in curved walls, found as in flat ones: faces, wall, diameter.
+    for h in &fx.holes {
+        let want = ids_at(&part, &h.faces_at);
+        let found = feats.iter().find(|f| {
+            f.kind.name() == "hole" && f.faces.iter().copied().collect::<BTreeSet<_>>() == want
+        });
+        let Some(f) = found else {
+            problems.push(format!(
+                "{name}: hole Ø{} in {} not found",
+                h.diameter, h.wall
+            ));
+            continue;
+        };
+        if f.wall != ours.get(&h.wall).copied()
+            || !close(f.diameter, h.diameter, 1e-9)
+            || f.through != Some(h.through)
+        {
+            problems.push(format!(
+                "{name}: {} in {:?} Ø{:?} through {:?}, expected in {} Ø{} through {}",
+                f.id, f.wall, f.diameter, f.through, h.wall, h.diameter, h.through
+            ));
         }
     }
     // Base-leaf connections between the walls, exactly the expected ones.

@@ -443,10 +443,7 @@ mod tests {
             // Blank from the corner to 6.5, part from there on.
             assert_eq!(c.edges[split - 1], EdgeKind::Blank);
             assert_eq!(c.edges[split], EdgeKind::Part);
-            assert_eq!(
-                c.edges.iter().filter(|&&k| k == EdgeKind::Blank).count(),
-                1
-            );
+            assert_eq!(c.edges.iter().filter(|&&k| k == EdgeKind::Blank).count(), 1);
         }
     }
 }
