@@ -232,9 +232,10 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
 
 /// The operations of every thin-walled part: the order never breaks a
 /// precedence, has no more tool changes than the plain layer by layer
-/// order; in every layer what the rough and semi-finish operations clear
-/// plus the rest is the layer's section (1e-6), their regions add up to
-/// their areas, a floor's finish lies over the layer's floors, and the
+/// order; in every layer what the rough, semi-finish and wall-finish
+/// operations clear plus the rest is the layer's section (1e-6), their
+/// regions add up to their areas (a wall finish's all boundary, the others'
+/// none), a wall finish follows its tool's roughing of the layer, a floor's finish lies over the layer's floors, and the
 /// volumes of the layer's operations add up to its section times its
 /// thickness.
 #[test]
@@ -245,6 +246,7 @@ fn operations_keep_their_order_and_add_up() {
     parts.push(common::root().join("fixtures/ops/pocket_islands.step"));
     parts.push(common::root().join("fixtures/ops/drill_plate.step"));
     let (mut fewer, mut ran, mut finishes, mut drilled_holes) = (0, 0, 0, 0);
+    let mut wall_finishes = 0;
     for path in parts {
         let part = thinwall_step::read_file(&path).unwrap().0;
         let Ok(r) = removal(&part) else { continue };
@@ -277,6 +279,25 @@ fn operations_keep_their_order_and_add_up() {
                 op.regions.is_none(),
                 matches!(op.stage, Stage::Finish | Stage::Drill)
             );
+            // A wall finish is its tool's boundary region alone, after
+            // that tool's roughing of the layer where it roughed there.
+            if op.stage == Stage::FinishWalls {
+                let g = op.regions.unwrap();
+                assert!(g.full_cut_mm2 == 0.0 && g.roughing_mm2 == 0.0, "{what}");
+                wall_finishes += 1;
+                for p in &op.passes {
+                    let rough = plan.operations.iter().find(|o| {
+                        matches!(o.stage, Stage::Rough | Stage::SemiFinish)
+                            && o.tool == op.tool
+                            && o.passes.iter().any(|q| q.layer == p.layer)
+                    });
+                    if let Some(r) = rough {
+                        assert!(r.step < op.step, "{what}: step {}", op.step);
+                    }
+                }
+            } else if op.stage.clears() {
+                assert!(op.regions.unwrap().boundary_mm2 == 0.0, "{what}");
+            }
             // An operation's figures are its passes' added up, its passes
             // in consecutive layers top down.
             if op.stage != Stage::Drill {
@@ -300,7 +321,7 @@ fn operations_keep_their_order_and_add_up() {
                 })
             };
             let cleared: f64 = ops()
-                .filter(|(s, _)| matches!(s, Stage::Rough | Stage::SemiFinish))
+                .filter(|(s, _)| s.clears())
                 .map(|(_, p)| p.area_mm2)
                 .sum();
             // Every field's rest, the listed ones and those below the
@@ -338,9 +359,9 @@ fn operations_keep_their_order_and_add_up() {
         }
         ran += 1;
     }
-    assert!(finishes > 0 && drilled_holes >= 5);
+    assert!(finishes > 0 && wall_finishes > 0 && drilled_holes >= 5);
     eprintln!(
-        "OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes, {drilled_holes} holes drilled"
+        "OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes, {wall_finishes} wall finishes, {drilled_holes} holes drilled"
     );
     assert!(ran >= 30);
 }

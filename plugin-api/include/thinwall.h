@@ -71,6 +71,8 @@ typedef enum tw_stage {
   TW_STAGE_FINISH = 2,
   // Holes with a drill.
   TW_STAGE_DRILL = 3,
+  // Along the walls: a tool's boundary region at finishing conditions.
+  TW_STAGE_FINISH_WALLS = 4,
 } tw_stage;
 
 // What a call did. Values are never reused for another meaning.

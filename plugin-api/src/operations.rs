@@ -31,6 +31,8 @@ pub enum tw_stage {
     TW_STAGE_FINISH = 2,
     /// Holes with a drill.
     TW_STAGE_DRILL = 3,
+    /// Along the walls: a tool's boundary region at finishing conditions.
+    TW_STAGE_FINISH_WALLS = 4,
 }
 
 /// The library of `tools_toml` (UTF-8 TOML text as the `--tools` file), or
@@ -187,6 +189,7 @@ pub unsafe extern "C" fn tw_operation(
                 Stage::Rough => tw_stage::TW_STAGE_ROUGH,
                 Stage::SemiFinish => tw_stage::TW_STAGE_SEMI_FINISH,
                 Stage::Finish => tw_stage::TW_STAGE_FINISH,
+                Stage::FinishWalls => tw_stage::TW_STAGE_FINISH_WALLS,
                 Stage::Drill => tw_stage::TW_STAGE_DRILL,
             };
         }

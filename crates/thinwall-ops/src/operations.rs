@@ -32,6 +32,11 @@ use thinwall_plan::removal::Removal;
 pub enum Stage {
     Rough,
     SemiFinish,
+    /// Along the part's walls: a tool's boundary region (Popma's, within
+    /// the finishing stepover of a part contour), down milling at the
+    /// finishing conditions, after that tool's roughing of the layer.
+    FinishWalls,
+    /// A floor's finishing layer.
     Finish,
     Drill,
 }
@@ -41,9 +46,16 @@ impl Stage {
         match self {
             Stage::Rough => "rough",
             Stage::SemiFinish => "semi_finish",
+            Stage::FinishWalls => "finish_walls",
             Stage::Finish => "finish",
             Stage::Drill => "drill",
         }
+    }
+
+    /// Whether it clears part of a layer's section (rough, semi-finish,
+    /// wall finish), as opposed to a floor's skin or holes.
+    pub fn clears(self) -> bool {
+        matches!(self, Stage::Rough | Stage::SemiFinish | Stage::FinishWalls)
     }
 }
 
@@ -331,7 +343,12 @@ pub(crate) fn assemble(
     let tiny = tol.powi(2);
     let mut ops: Vec<Draft> = Vec::new();
     for (k, fts) in field_tools.iter().enumerate() {
-        for stage in [Stage::Rough, Stage::SemiFinish, Stage::Finish] {
+        for stage in [
+            Stage::Rough,
+            Stage::SemiFinish,
+            Stage::FinishWalls,
+            Stage::Finish,
+        ] {
             for t in &mills {
                 if let Some(d) = draft(t, k, stage, fts, &layers[k], tiny) {
                     ops.push(d);
@@ -544,9 +561,11 @@ fn draft<'a>(
         let Some(s) = ft.shares.iter().find(|s| s.tool == t.name) else {
             continue;
         };
+        let walls = wall_share(s);
         let works = match stage {
-            Stage::Rough => s.first,
-            Stage::SemiFinish => !s.first,
+            Stage::Rough => s.first && s.cleared_mm2 - walls > 0.0,
+            Stage::SemiFinish => !s.first && s.cleared_mm2 - walls > 0.0,
+            Stage::FinishWalls => walls > tiny,
             Stage::Finish => s.floor_mm2 > tiny && !layer.floors.is_empty(),
             Stage::Drill => false,
         };
@@ -560,17 +579,49 @@ fn draft<'a>(
     (!d.fields.is_empty()).then_some(d)
 }
 
-fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
-    if stage == Stage::Finish {
-        d.area += s.floor_mm2;
-        return;
+/// What of a tool's share the wall finish takes: its boundary region, or
+/// all of it when what is left for roughing is below the disks' polygon
+/// noise (a small tool's corner is all boundary).
+fn wall_share(s: &ToolShare) -> f64 {
+    let boundary = s.boundary_mm2.min(s.cleared_mm2);
+    if s.cleared_mm2 - boundary <= crate::rest::noise(s.diameter_mm) {
+        s.cleared_mm2
+    } else {
+        boundary
     }
-    d.area += s.cleared_mm2;
-    d.floor += s.floor_mm2;
-    if let Some(r) = &mut d.regions {
-        r.boundary_mm2 += s.boundary_mm2;
-        r.full_cut_mm2 += s.full_cut_mm2;
-        r.roughing_mm2 += s.roughing_mm2;
+}
+
+/// Add a tool's share of a field to a draft: a floor finish takes its
+/// floor; a wall finish its boundary region; rough and semi-finish the
+/// rest of what it clears. The floor under what it clears goes with each
+/// in proportion (its finishing skin is the floor finish's).
+fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
+    let boundary = wall_share(s);
+    let on_floor = |area: f64| {
+        if s.cleared_mm2 > 0.0 {
+            s.floor_mm2 * area / s.cleared_mm2
+        } else {
+            0.0
+        }
+    };
+    match stage {
+        Stage::Finish => d.area += s.floor_mm2,
+        Stage::FinishWalls => {
+            d.area += boundary;
+            d.floor += on_floor(boundary);
+            if let Some(r) = &mut d.regions {
+                r.boundary_mm2 += boundary;
+            }
+        }
+        _ => {
+            let area = s.cleared_mm2 - boundary;
+            d.area += area;
+            d.floor += on_floor(area);
+            if let Some(r) = &mut d.regions {
+                r.full_cut_mm2 += s.full_cut_mm2;
+                r.roughing_mm2 += s.roughing_mm2;
+            }
+        }
     }
 }
 

@@ -61,17 +61,20 @@ pub(crate) fn precedence(
                 }
                 continue;
             }
-            if e.stage == Stage::Finish {
+            if matches!(e.stage, Stage::Finish | Stage::FinishWalls) {
                 continue;
             }
+            // A finish comes after the roughing of its layer (a larger or
+            // the same tool in a field it shares), nothing waits for it.
+            let finish = matches!(d.stage, Stage::Finish | Stage::FinishWalls);
             let larger = e.tool.diameter_mm > d.tool.diameter_mm;
             let same = e.tool.name == d.tool.name;
             let same_feature = layers[e.layer].feature == layers[d.layer].feature;
             let follows = if e.layer + 1 == d.layer && same_feature {
-                d.stage != Stage::Finish && (!nested[d.layer] || larger || same)
+                !finish && (!nested[d.layer] || larger || same)
             } else if e.layer == d.layer {
                 let shared = e.fields.iter().any(|f| d.fields.contains(f));
-                shared && (larger || (same && d.stage == Stage::Finish))
+                shared && (larger || (same && finish))
             } else {
                 false
             };

@@ -262,7 +262,7 @@ fn regions(
 /// disk being a polygon alone: twice the 128-gon's shortfall of the
 /// circle's area (about 4·10⁻⁴ of it). A share or a rest below it is noise,
 /// not an operation.
-fn noise(d: f64) -> f64 {
+pub(crate) fn noise(d: f64) -> f64 {
     2.0 * 4e-4 * std::f64::consts::PI * (0.5 * d).powi(2)
 }
 

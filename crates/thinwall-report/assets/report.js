@@ -742,7 +742,7 @@
         part.group.visible = true;
         part.opacity(0.28);
         part.paint(() => colour('other'));
-        legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']]]);
+        legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (walls)', P['ops.finish_walls']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']]]);
         this.list();
         if (!selected) details('Operations', [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['tool changes', rep.setup.tool_changes + ' (' + rep.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(rep.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(rep.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (rep.setup.other_setup || []).join(' ')], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
         viewer.render();

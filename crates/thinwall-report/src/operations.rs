@@ -46,7 +46,6 @@ impl OperationsReport {
             setup,
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
-                "finishing of walls after roughing (the pass along the product is the boundary region of each layer)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
             ],
         }
