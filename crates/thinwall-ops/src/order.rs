@@ -122,14 +122,18 @@ pub(crate) fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]
         .collect();
     let mut done = vec![false; ops.len()];
     let mut out = Vec::with_capacity(ops.len());
-    let mut current: Option<&str> = None;
+    let mut current: Option<(&str, Stage)> = None;
     let mut at: Option<[f64; 2]> = None;
     while out.len() < ops.len() {
         let ready = (0..ops.len()).filter(|&i| !done[i] && waiting[i] == 0);
+        // The same tool, the nearest, then the same stage (where a tool
+        // could go on down its layers or finish the walls of the one it
+        // roughed, it goes on down: one operation each).
         let key = |&i: &usize| {
-            let same = current == Some(ops[i].tool.name.as_str());
+            let tool = current.is_some_and(|c| c.0 == ops[i].tool.name);
+            let stage = current.is_some_and(|c| c.1 == ops[i].stage);
             let far = at.map_or(0.0, |p| (p[0] - pos[i][0]).hypot(p[1] - pos[i][1]));
-            (!same, -ops[i].tool.diameter_mm, far, ops[i].layer)
+            (!tool, -ops[i].tool.diameter_mm, far, !stage, ops[i].layer)
         };
         let Some(next) = ready.min_by(|a, b| {
             let (ka, kb) = (key(a), key(b));
@@ -137,11 +141,12 @@ pub(crate) fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]
                 .then(ka.1.total_cmp(&kb.1))
                 .then(ka.2.total_cmp(&kb.2))
                 .then(ka.3.cmp(&kb.3))
+                .then(ka.4.cmp(&kb.4))
         }) else {
             break;
         };
         done[next] = true;
-        current = Some(ops[next].tool.name.as_str());
+        current = Some((ops[next].tool.name.as_str(), ops[next].stage));
         at = Some(pos[next]);
         for n in g.neighbors_directed(NodeIndex::new(next), petgraph::Direction::Outgoing) {
             waiting[n.index()] -= 1;
