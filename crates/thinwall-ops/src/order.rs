@@ -137,9 +137,14 @@ pub(crate) fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]
         };
         let Some(next) = ready.min_by(|a, b| {
             let (ka, kb) = (key(a), key(b));
+            let far = if (ka.2 - kb.2).abs() <= FAR_TIE_MM {
+                std::cmp::Ordering::Equal
+            } else {
+                ka.2.total_cmp(&kb.2)
+            };
             ka.0.cmp(&kb.0)
                 .then(ka.1.total_cmp(&kb.1))
-                .then(ka.2.total_cmp(&kb.2))
+                .then(far)
                 .then(ka.3.cmp(&kb.3))
                 .then(ka.4.cmp(&kb.4))
         }) else {
@@ -155,3 +160,8 @@ pub(crate) fn tool_order(ops: &[Draft], g: &DiGraph<usize, ()>, pos: &[[f64; 2]]
     }
     out
 }
+
+/// Distances within this are a tie, mm: fields' centroids carry the
+/// booleans' rounding (1e-7 mm on a turned part), and a tie broken by it
+/// would order a turned copy otherwise.
+const FAR_TIE_MM: f64 = 1e-3;
