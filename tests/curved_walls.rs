@@ -232,18 +232,26 @@ fn a_curved_wall_reports_its_mid_surface_and_access_range() {
 }
 
 #[test]
-fn a_boss_around_a_hole_is_not_a_curved_wall() {
-    // The machining fixture's boss plate: bosses with holes (radius under
-    // three thicknesses) stay machining features.
-    let (part, _) =
-        thinwall_step::read_file(common::root().join("fixtures/machining/boss_plate.step"))
-            .unwrap();
-    let r = common::recognize_with(
-        &part,
-        [0.0, 0.0, 1.0],
-        &thinwall_recognize::Config::default(),
-    );
-    assert!(r.features.iter().all(|f| f.mid_surface.is_none()));
+fn a_boss_around_a_hole_is_not_a_curved_wall_and_a_tube_is() {
+    // The boss (5 thick at radius 7.5: under three thicknesses) stays a
+    // machining feature; the tube beside it, its faces closed round the
+    // axis, is one curved wall all the way round.
+    for name in ["tube_and_boss", "tube_and_boss_turned"] {
+        let fx: Fixture = serde_json::from_str(
+            &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
+        )
+        .unwrap();
+        let (_, out) = run(&fx);
+        let radii: Vec<f64> = out
+            .recognition
+            .features
+            .iter()
+            .filter_map(|f| f.mid_surface.as_ref()?.radius)
+            .collect();
+        assert_eq!(radii.len(), 1, "{name}: {radii:?}");
+        assert!((radii[0] - 19.25).abs() < 1e-9, "{name}: {radii:?}");
+        assert!(out.machining.iter().any(|m| m.kind.name() == "boss"));
+    }
 }
 
 #[test]

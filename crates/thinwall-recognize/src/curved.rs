@@ -31,10 +31,6 @@ use thinwall_geom::{Frame, Point3, Surface, Vector3};
 /// least this many thicknesses (a boss around a hole is not a wall).
 pub const MIN_RADIUS_TO_THICKNESS: f64 = 3.0;
 
-/// A face sweeping at least this much around its axis is closed around it
-/// (its polygon is the whole turn), radians.
-const CLOSED_SWEEP: f64 = TAU - 1e-3;
-
 /// Normals sampled along a free-form wall's centre line for its access
 /// range.
 const RANGE_SAMPLES: usize = 32;
@@ -155,32 +151,51 @@ pub struct MidSurface {
 /// and back.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Development {
-    /// About an axis: x the arc at `r_mid` from the centre angle, y along
-    /// the generator from the centre; offsets are the family's.
-    Revolution {
-        rev: Revolution,
-        /// The region's centre: angle (radians) and generator coordinate.
-        theta_c: f64,
-        s_c: f64,
-        /// The mid-surface's radius at the centre.
-        r_mid: f64,
-    },
+    Revolution(RevolutionDevelopment),
     /// Along side 0's free-form surface (`crate::offset`): x and y arc
     /// lengths on the mid-surface along the iso-curves through the centre;
     /// offsets from side 0 along its normal.
     Offset(Box<crate::offset::OffsetDevelopment>),
 }
 
+/// About an axis: x the arc at `r_mid` from the centre angle, y along the
+/// generator from the centre; offsets are the family's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RevolutionDevelopment {
+    pub rev: Revolution,
+    /// The region's centre: angle (radians) and generator coordinate.
+    pub theta_c: f64,
+    pub s_c: f64,
+    /// The mid-surface's radius at the centre.
+    pub r_mid: f64,
+}
+
+impl RevolutionDevelopment {
+    /// The angle at developed x.
+    fn theta(&self, x: f64) -> f64 {
+        self.theta_c + x / self.r_mid
+    }
+
+    fn to_world(&self, x: f64, y: f64, off: f64) -> Point3 {
+        self.rev.world(self.theta(x), self.s_c + y, off)
+    }
+
+    fn develop(&self, p: &Point3) -> (f64, f64, f64) {
+        let (theta, s, off) = self.rev.local(p);
+        (wrap(theta - self.theta_c) * self.r_mid, s - self.s_c, off)
+    }
+
+    fn axes(&self, x: f64) -> (Vector3, Vector3) {
+        let t = self.theta(x);
+        (self.rev.tangent(t), self.rev.generator(t))
+    }
+}
+
 impl Development {
     /// The point at developed (x, y) and offset `off`.
     pub fn to_world(&self, x: f64, y: f64, off: f64) -> Point3 {
         match self {
-            Development::Revolution {
-                rev,
-                theta_c,
-                s_c,
-                r_mid,
-            } => rev.world(theta_c + x / r_mid, s_c + y, off),
+            Development::Revolution(r) => r.to_world(x, y, off),
             Development::Offset(o) => o.to_world(x, y, off),
         }
     }
@@ -188,15 +203,7 @@ impl Development {
     /// Developed (x, y) and offset of a point.
     pub fn develop(&self, p: &Point3) -> (f64, f64, f64) {
         match self {
-            Development::Revolution {
-                rev,
-                theta_c,
-                s_c,
-                r_mid,
-            } => {
-                let (theta, s, off) = rev.local(p);
-                (wrap(theta - theta_c) * r_mid, s - s_c, off)
-            }
+            Development::Revolution(r) => r.develop(p),
             Development::Offset(o) => o.develop(p),
         }
     }
@@ -204,12 +211,7 @@ impl Development {
     /// The unit normal towards larger offsets at developed (x, y).
     pub fn normal(&self, x: f64, y: f64) -> Vector3 {
         match self {
-            Development::Revolution {
-                rev,
-                theta_c,
-                r_mid,
-                ..
-            } => rev.normal(theta_c + x / r_mid),
+            Development::Revolution(r) => r.rev.normal(r.theta(x)),
             Development::Offset(o) => o.normal(x, y),
         }
     }
@@ -217,15 +219,7 @@ impl Development {
     /// The developed x and y directions at (x, y) (unit; x × y = normal).
     pub fn axes(&self, x: f64, y: f64) -> (Vector3, Vector3) {
         match self {
-            Development::Revolution {
-                rev,
-                theta_c,
-                r_mid,
-                ..
-            } => {
-                let t = theta_c + x / r_mid;
-                (rev.tangent(t), rev.generator(t))
-            }
+            Development::Revolution(r) => r.axes(x),
             Development::Offset(o) => o.axes(x, y),
         }
     }
@@ -233,7 +227,7 @@ impl Development {
     /// Longest step along x when an outline is drawn in 3D, mm.
     fn outline_step(&self) -> f64 {
         match self {
-            Development::Revolution { r_mid, .. } => OUTLINE_STEP * r_mid,
+            Development::Revolution(r) => OUTLINE_STEP * r.r_mid,
             Development::Offset(o) => o.outline_step(),
         }
     }
@@ -319,7 +313,7 @@ impl CurvedWall {
         let (_, yc) = centre(region);
         let xyz = |v: Vector3| [v.x, v.y, v.z];
         let (a, b) = match self.dev {
-            Development::Revolution { .. } => (x0, x1),
+            Development::Revolution(_) => (x0, x1),
             Development::Offset(_) => {
                 let xs: Vec<f64> = (0..=RANGE_SAMPLES)
                     .map(|k| x0 + (x1 - x0) * k as f64 / RANGE_SAMPLES as f64)
@@ -351,12 +345,12 @@ impl CurvedWall {
         let centre = self.to_world(cx, cy, self.mid_offset());
         let normal = xyz(self.dev.normal(cx, cy));
         match &self.dev {
-            Development::Revolution {
+            Development::Revolution(RevolutionDevelopment {
                 rev,
                 theta_c,
                 r_mid,
                 ..
-            } => {
+            }) => {
                 let (x0, x1) = x_range(region);
                 let cone = rev.half_angle.abs() > 0.0;
                 MidSurface {
@@ -497,6 +491,31 @@ pub fn find_curved_walls(a: &PartAnalysis, config: &Config) -> Vec<crate::walls:
     walls
 }
 
+/// Whether a face goes all the way round its axis (its polygon is then the
+/// whole turn): it has a seam (an edge its loops run twice), or a loop
+/// winds round the axis. Its boundary samples cannot tell: they lie a few
+/// degrees apart.
+fn goes_round(a: &PartAnalysis, f: FaceId, loops: &FaceLoops, rev: &Revolution) -> bool {
+    let mut edges: Vec<_> = a
+        .part()
+        .face(f)
+        .loops
+        .iter()
+        .flat_map(|&l| a.part().loop_(l).coedges.iter().map(|c| c.edge))
+        .collect();
+    let n = edges.len();
+    edges.sort();
+    edges.dedup();
+    let winds = |ring: &Vec<Point3>| {
+        let t: Vec<f64> = ring.iter().map(|p| rev.local(p).0).collect();
+        let turn: f64 = (0..t.len())
+            .map(|k| wrap(t[(k + 1) % t.len()] - t[k]))
+            .sum();
+        turn.abs() > PI
+    };
+    edges.len() < n || loops.outer.iter().chain(&loops.inner).any(winds)
+}
+
 /// A face's offset and its polygon in (θ, s).
 fn face_polygon(a: &PartAnalysis, f: FaceId, rev: &Revolution) -> Option<(f64, MultiPolygon<f64>)> {
     let loops = face_loops(a.part(), f);
@@ -521,7 +540,7 @@ fn face_polygon(a: &PartAnalysis, f: FaceId, rev: &Revolution) -> Option<(f64, M
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &s| {
             (lo.min(s), hi.max(s))
         });
-    if TAU - gap >= CLOSED_SWEEP {
+    if goes_round(a, f, &loops, rev) {
         // Closed around the axis: the whole turn.
         let c = |x: f64, y: f64| Coord { x, y };
         let ring = LineString::new(vec![
@@ -759,12 +778,12 @@ fn build_wall(
     });
     let theta_c = wrap(theta_c);
     let curved = CurvedWall {
-        dev: Development::Revolution {
+        dev: Development::Revolution(RevolutionDevelopment {
             rev: *rev,
             theta_c,
             s_c,
             r_mid,
-        },
+        }),
         off,
         side_polygons,
         measured: None,
