@@ -47,6 +47,12 @@ fn dir() -> std::path::PathBuf {
     common::root().join("fixtures/curved")
 }
 
+/// A fixture's expectations, `NAME.expected.json`.
+fn fixture(name: &str) -> Fixture {
+    let text = std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
 fn run(fx: &Fixture) -> (thinwall_brep::Part, thinwall_pipeline::Outcome) {
     let (part, _) = thinwall_step::read_file(dir().join(&fx.part)).unwrap();
     let req = thinwall_pipeline::Request {
@@ -62,10 +68,7 @@ fn close(got: Option<f64>, want: f64, rel: f64) -> bool {
 }
 
 fn check(name: &str) -> Vec<String> {
-    let fx: Fixture = serde_json::from_str(
-        &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
-    )
-    .unwrap();
+    let fx = fixture(name);
     let (part, out) = run(&fx);
     let feats = &out.recognition.features;
     let mut problems = Vec::new();
@@ -187,10 +190,7 @@ fn every_curved_fixture_yields_its_walls_turned_or_not() {
 
 #[test]
 fn a_curved_wall_reports_its_mid_surface_and_access_range() {
-    let fx: Fixture = serde_json::from_str(
-        &std::fs::read_to_string(dir().join("frame_r400.expected.json")).unwrap(),
-    )
-    .unwrap();
+    let fx = fixture("frame_r400");
     let (_, out) = run(&fx);
     let outer = out
         .recognition
@@ -237,10 +237,7 @@ fn a_boss_around_a_hole_is_not_a_curved_wall_and_a_tube_is() {
     // machining feature; the tube beside it, its faces closed round the
     // axis, is one curved wall all the way round.
     for name in ["tube_and_boss", "tube_and_boss_turned"] {
-        let fx: Fixture = serde_json::from_str(
-            &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
-        )
-        .unwrap();
+        let fx = fixture(name);
         let (_, out) = run(&fx);
         let radii: Vec<f64> = out
             .recognition
@@ -283,10 +280,7 @@ fn the_plan_says_where_curved_walls_are_not_planned_yet() {
 
 #[test]
 fn machining_features_on_a_frame_segment_are_not_degenerate() {
-    let fx: Fixture = serde_json::from_str(
-        &std::fs::read_to_string(dir().join("frame_r400_turned.expected.json")).unwrap(),
-    )
-    .unwrap();
+    let fx = fixture("frame_r400_turned");
     let (part, out) = run(&fx);
     let extent = part.bounding_box().diagonal();
     for m in &out.machining {
@@ -309,10 +303,7 @@ fn machining_features_on_a_frame_segment_are_not_degenerate() {
 #[test]
 fn a_free_form_wall_reports_its_measured_thickness_and_sweep() {
     for name in ["freeform_rib", "freeform_rib_turned"] {
-        let fx: Fixture = serde_json::from_str(
-            &std::fs::read_to_string(dir().join(format!("{name}.expected.json"))).unwrap(),
-        )
-        .unwrap();
+        let fx = fixture(name);
         let (_, out) = run(&fx);
         let rib = out
             .recognition
