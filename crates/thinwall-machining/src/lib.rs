@@ -30,6 +30,7 @@ mod boss;
 mod catalog;
 mod chamfer;
 mod facing;
+mod fragments;
 mod options;
 mod patterns;
 mod shape;
@@ -273,18 +274,23 @@ fn cut_features(
                 && matches!((a.concave_cylinder(f), a.concave_cylinder(g)),
                     (Some(x), Some(y)) if x.coaxial(&y, tol * 100.0)))
     };
-    for mut group in a.components(&rest, joined) {
-        group.retain(|f| !concave_blends.contains(f));
-        if group.is_empty() {
-            continue;
-        }
+    let groups: Vec<Vec<FaceId>> = a
+        .components(&rest, joined)
+        .into_iter()
+        .map(|mut g| {
+            g.retain(|f| !concave_blends.contains(f));
+            g
+        })
+        .filter(|g| !g.is_empty())
+        .collect();
+    for group in fragments::join_pieces(a, groups) {
         let touched: BTreeSet<usize> = group
             .iter()
             .flat_map(|&f| a.graph().neighbours(f))
             .filter_map(|(h, _)| on_block[h.index()])
             .collect();
-        if group.len() == 1 && a.planar(group[0]).is_some() {
-            out.extend(lone_face(a, block, group[0], &touched));
+        if one_plane(a, &group) {
+            out.extend(lone_face(a, block, &group, &touched));
             continue;
         }
         out.push(depression_feature(a, block, &group, &touched));
@@ -292,27 +298,45 @@ fn cut_features(
     out
 }
 
-/// A lone planar face (no walls meet it along concave edges): facing a
-/// block plane below it, a face to mill down (the material above it, as
-/// round a boss); else a bevel on the block's edge, or, spanning half the
-/// part or more, a side of a part not cut from a block (no feature), or
-/// typed as any group.
+/// Whether a group is planar faces on one plane (one face, or pieces of
+/// one that another feature split).
+fn one_plane(a: &PartAnalysis, group: &[FaceId]) -> bool {
+    let tol = a.tol().feature * 10.0;
+    let plane = |f: FaceId| {
+        let n = a.props(f).normal?;
+        a.planar(f)?;
+        Some((n, n.dot(&a.props(f).centroid.coords)))
+    };
+    let Some((n, o)) = plane(group[0]) else {
+        return false;
+    };
+    group
+        .iter()
+        .all(|&f| plane(f).is_some_and(|(m, p)| same_direction(&n, &m) && (o - p).abs() < tol))
+}
+
+/// A lone planar face (no walls meet it along concave edges), or the
+/// pieces of one: facing a block plane below it, a face to mill down (the
+/// material above it, as round a boss); else a bevel on the block's edge,
+/// or, spanning half the part or more, a side of a part not cut from a
+/// block (no feature), or typed as any group.
 fn lone_face(
     a: &PartAnalysis,
     block: &Stock,
-    f: FaceId,
+    faces: &[FaceId],
     touched: &BTreeSet<usize>,
 ) -> Option<MachiningFeature> {
+    let f = faces[0];
     let n = a.props(f).normal?;
     let offset = n.dot(&a.props(f).centroid.coords);
     let facing = (0..6).find(|&sp| same_direction(&block.normal(sp), &n));
     if let Some(sp) = facing {
         let depth = block.plane_offset(sp) - offset;
         if depth > a.tol().coplanar {
-            return Some(facing::face_feature(a, &[f], &n, depth));
+            return Some(facing::face_feature(a, faces, &n, depth));
         }
     }
-    let feature = depression_feature(a, block, &[f], touched);
+    let feature = depression_feature(a, block, faces, touched);
     let side = feature.kind != MachiningKind::Chamfer
         && feature.length >= PART_SIDE_SHARE * block.largest_extent();
     (!side).then_some(feature)
@@ -320,7 +344,7 @@ fn lone_face(
 
 /// A curved face tangent to two or more faces, but not a hole's cylinder
 /// whose tangent neighbours are all hole cylinders (its other half).
-fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
+pub(crate) fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
     if a.cylinder_sweep_deg(f)
         .is_some_and(|s| s >= shape::HALF_SWEEP_DEG && a.concave_cylinder(f).is_some())
     {

@@ -1,0 +1,109 @@
+//! Pieces of one feature that a later feature cut apart: a pocket split
+//! in two by a hole through its floor, a step floor left as an island
+//! inside an O-ring. Such pieces lie on a common plane facing the same
+//! way (a floor, or a wall) and both meet a third group (the feature that
+//! split them); they are typed as one feature.
+
+use crate::same_direction;
+use petgraph::unionfind::UnionFind;
+use std::collections::{BTreeSet, HashMap};
+use thinwall_analysis::PartAnalysis;
+use thinwall_brep::FaceId;
+use thinwall_geom::Vector3;
+
+/// A planar face of a group: its plane (normal, offset) and the other
+/// groups it meets.
+struct PlaneFace {
+    normal: Vector3,
+    offset: f64,
+    meets: BTreeSet<usize>,
+}
+
+/// Whether two groups are pieces of one feature: a planar face each on
+/// one plane, facing the same way, both meeting one third group, which
+/// either is cut down from that plane (nothing of it above: a hole through
+/// a pocket's floor, an O-ring round an island of a step's floor) or
+/// leaves the pieces sharing a second plane too (a passage's walls on
+/// either side of a slot through it).
+fn split_by_one(
+    a: &PartAnalysis,
+    groups: &[Vec<FaceId>],
+    x: &[PlaneFace],
+    y: &[PlaneFace],
+) -> bool {
+    let tol = a.tol().feature * 10.0;
+    let coplanar = |p: &PlaneFace, q: &PlaneFace| {
+        same_direction(&p.normal, &q.normal) && (p.offset - q.offset).abs() < tol
+    };
+    let below = |k: usize, p: &PlaneFace| a.extent(&groups[k], &p.normal).1 < p.offset + tol;
+    let mut shared: Vec<&PlaneFace> = Vec::new();
+    let mut split = false;
+    for p in x {
+        for q in y.iter().filter(|q| coplanar(p, q)) {
+            if !shared.iter().any(|s| coplanar(s, p)) {
+                shared.push(p);
+            }
+            split |= p.meets.intersection(&q.meets).any(|&k| below(k, p));
+        }
+    }
+    let common = x.iter().any(|p| {
+        y.iter()
+            .any(|q| coplanar(p, q) && p.meets.intersection(&q.meets).next().is_some())
+    });
+    split || (common && shared.len() >= 2)
+}
+
+/// The groups with the pieces of one feature joined.
+pub(crate) fn join_pieces(a: &PartAnalysis, groups: Vec<Vec<FaceId>>) -> Vec<Vec<FaceId>> {
+    let of: HashMap<FaceId, usize> = groups
+        .iter()
+        .enumerate()
+        .flat_map(|(i, g)| g.iter().map(move |&f| (f, i)))
+        .collect();
+    let meets = |f: FaceId, i: usize| -> BTreeSet<usize> {
+        a.graph()
+            .neighbours(f)
+            .filter_map(|(h, _)| of.get(&h).copied())
+            .filter(|&j| j != i)
+            .collect()
+    };
+    let planes: Vec<Vec<PlaneFace>> = groups
+        .iter()
+        .enumerate()
+        .map(|(i, g)| {
+            g.iter()
+                .filter_map(|&f| {
+                    let normal = a.props(f).normal?;
+                    let offset = normal.dot(&a.props(f).centroid.coords);
+                    let meets = meets(f, i);
+                    Some(PlaneFace {
+                        normal,
+                        offset,
+                        meets,
+                    })
+                })
+                .collect()
+        })
+        .collect();
+    let adjacent = |i: usize, j: usize| {
+        planes[i].iter().any(|p| p.meets.contains(&j))
+            || groups[i].iter().any(|&f| meets(f, i).contains(&j))
+    };
+    let mut sets = UnionFind::new(groups.len());
+    for i in 0..groups.len() {
+        for j in i + 1..groups.len() {
+            if split_by_one(a, &groups, &planes[i], &planes[j]) && !adjacent(i, j) {
+                sets.union(i, j);
+            }
+        }
+    }
+    let mut joined: Vec<Vec<FaceId>> = vec![Vec::new(); groups.len()];
+    for (i, g) in groups.into_iter().enumerate() {
+        joined[sets.find(i)].extend(g);
+    }
+    joined.retain(|g| !g.is_empty());
+    for g in &mut joined {
+        g.sort();
+    }
+    joined
+}
