@@ -13,6 +13,10 @@ use thinwall_geom::{Surface, Vector3};
 /// A concave cylinder sweeping this much or more is the round end of a
 /// slot or pocket (half a circle), not a blend, degrees.
 pub(crate) const HALF_SWEEP_DEG: f64 = 150.0;
+/// The round ends of a slot along a block edge are quarter circles,
+/// degrees, within this slack (boundary sampling), degrees.
+const QUARTER_DEG: f64 = 90.0;
+const QUARTER_SLACK_DEG: f64 = 2.0;
 /// Coaxial concave cylinders sweeping this much together are a hole (a
 /// full circle less its boundary sampling), degrees.
 const FULL_SWEEP_DEG: f64 = 300.0;
@@ -288,12 +292,22 @@ impl<'g> GroupShape<'g> {
                 Profile::CircularEnd,
                 Some(C::VCircularEndBlindSlot),
             )
-        } else {
+        } else if sweeps.iter().all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG) {
+            // Quarter circles at its ends: half an obround, cut lengthwise
+            // by the side it opens to.
             typed(
                 Slot,
                 false,
                 Profile::CircularEnd,
                 Some(C::HCircularEndBlindSlot),
+            )
+        } else {
+            // Ends cut short by another feature: what is left of a pocket.
+            typed(
+                Pocket,
+                false,
+                Profile::CircularEnd,
+                Some(C::CircularEndPocket),
             )
         }
     }
