@@ -292,7 +292,10 @@ impl<'g> GroupShape<'g> {
                 Profile::CircularEnd,
                 Some(C::VCircularEndBlindSlot),
             )
-        } else if sweeps.iter().all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG) {
+        } else if sweeps
+            .iter()
+            .all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG)
+        {
             // Quarter circles at its ends: half an obround, cut lengthwise
             // by the side it opens to.
             typed(
@@ -363,10 +366,22 @@ impl<'g> GroupShape<'g> {
             // One wall: square to the stock, a step along a whole edge;
             // else a triangle in a corner or a slanted step, by the floor.
             Some(_) if w == 1 && self.stock.aligned(&walls[0]) => (Step, true, P::Rectangular),
-            Some((_, fill)) if w == 1 && fill < TRIANGLE_FILL => (Step, false, P::Triangular),
-            Some(_) if w == 1 => (Step, true, P::Slanted),
+            Some((n, fill)) if w == 1 => match self.wall_ends(a, &wall_faces, &n) {
+                Some(true) => (Step, true, P::Slanted),
+                Some(false) => (Step, false, P::Triangular),
+                None if fill < TRIANGLE_FILL => (Step, false, P::Triangular),
+                None => (Step, true, P::Slanted),
+            },
             Some(_) if w == 2 && parallel => (Slot, true, P::Rectangular),
             Some(_) if w == 2 && square => (Step, false, P::Rectangular),
+            // Two walls, one square to the block and one across a corner:
+            // a triangle in a corner beside another cut's wall (a
+            // two-sided step's walls meet in a V, neither square).
+            Some(_)
+                if w == 2 && (self.stock.aligned(&walls[0]) != self.stock.aligned(&walls[1])) =>
+            {
+                (Step, false, P::Triangular)
+            }
             Some(_) if w == 2 => (Step, true, P::TwoSided),
             // Two sides and a back: a slot, unless it opens to three stock
             // planes (a notch through a corner: a step).
@@ -481,6 +496,34 @@ impl<'g> GroupShape<'g> {
                 .map(|&p| self.planes[p].0)
                 .collect(),
         )
+    }
+
+    /// What the ends of a lone inclined wall on a floor `n` meet: block
+    /// faces square to the floor. Two of them facing opposite
+    /// ways, the wall runs across from side to side (a slanted step along
+    /// a whole edge): true; two square to each other, it cuts a corner (a
+    /// triangular step): false; neither, none.
+    fn wall_ends(&self, a: &PartAnalysis, walls: &[FaceId], n: &Vector3) -> Option<bool> {
+        let sides: Vec<Vector3> = walls
+            .iter()
+            .flat_map(|&w| a.graph().neighbours(w))
+            .filter_map(|(g, _)| self.stock.plane_of(a, g))
+            .map(|sp| self.stock.normal(sp))
+            .filter(|m| m.dot(n).abs() < NEAR_PARALLEL_EPS)
+            .collect();
+        let pairs = || {
+            sides
+                .iter()
+                .enumerate()
+                .flat_map(|(i, p)| sides[i + 1..].iter().map(move |q| p.dot(q)))
+        };
+        if pairs().any(|c| c < -1.0 + NEAR_PARALLEL_EPS) {
+            Some(true)
+        } else if pairs().any(|c| c.abs() < NEAR_PARALLEL_EPS) {
+            Some(false)
+        } else {
+            None
+        }
     }
 
     /// The floor: a plane every other plane of the group stands square on
