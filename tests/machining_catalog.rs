@@ -59,6 +59,18 @@ fn print_wrong(f: &std::path::Path, feats: &[MachiningFeature], truth: &HashMap<
             m.open_to.len()
         );
     }
+    let mut missed: Vec<(u64, u32)> = truth
+        .iter()
+        .filter(|(f, &t)| t != STOCK && !feats.iter().any(|m| m.faces.contains(f)))
+        .map(|(&f, &t)| (f, t))
+        .collect();
+    missed.sort();
+    if !missed.is_empty() {
+        println!(
+            "{} in no feature: {missed:?}",
+            f.file_stem().unwrap().to_string_lossy()
+        );
+    }
 }
 
 fn class_name(c: u32) -> &'static str {

@@ -9,7 +9,8 @@
 //! does not close with them alone a face it meets (a triangular step's
 //! floor); a cone is a chamfer when it joins a plane square to
 //! its axis and a coaxial cylinder and is shorter along the axis than the
-//! cylinder's radius (a longer cone is a countersink, part of its hole).
+//! cylinder's radius (a longer cone is a countersink, part of its hole),
+//! or when it carries a chain of planar bevels round a curved edge.
 
 use crate::{MachiningFeature, Stock};
 use thinwall_analysis::polygon::min_rect_sides;
@@ -30,9 +31,20 @@ const ELONGATED: f64 = 3.0;
 pub(crate) fn is_chamfer(a: &PartAnalysis, f: FaceId) -> bool {
     match a.part().face(f).surface {
         Surface::Plane { .. } => is_planar_bevel(a, f),
-        Surface::Cone { .. } => is_conical_bevel(a, f),
+        Surface::Cone { .. } => is_conical_bevel(a, f) || is_bevel_corner(a, f),
         _ => false,
     }
+}
+
+/// A cone carrying a chain of planar bevels round a curved edge (a
+/// chamfered obround rim): tangent to a planar bevel.
+pub(crate) fn is_bevel_corner(a: &PartAnalysis, f: FaceId) -> bool {
+    matches!(a.part().face(f).surface, Surface::Cone { .. })
+        && a.graph().neighbours(f).any(|(g, adj)| {
+            adj.convexity == Convexity::Smooth
+                && matches!(a.part().face(g).surface, Surface::Plane { .. })
+                && is_planar_bevel(a, g)
+        })
 }
 
 fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
@@ -82,7 +94,10 @@ fn closes_a_floor(a: &PartAnalysis, f: FaceId, g: FaceId, h: FaceId) -> bool {
 }
 
 fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
-    let Surface::Cone { frame, .. } = a.part().face(f).surface else {
+    let Surface::Cone {
+        frame, semi_angle, ..
+    } = a.part().face(f).surface
+    else {
         return false;
     };
     let axis = frame.z;
@@ -98,7 +113,10 @@ fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
                 && (c.origin - frame.origin).cross(&axis).norm() < a.tol().feature * 100.0
         })
     });
-    square_plane && cylinder.is_some_and(|c| hi - lo < c.radius)
+    // A symmetric bevel (45°) of any size is a chamfer; a steeper or
+    // flatter cone only when short (else a countersink).
+    let symmetric = (semi_angle.to_degrees() - 45.0).abs() < BISECT_DEG;
+    square_plane && cylinder.is_some_and(|c| symmetric || hi - lo < c.radius)
 }
 
 /// A chamfer feature: a chain of bevel faces, its long and short sides.

@@ -230,7 +230,7 @@ fn cut_features(
     // Blends: chains of tangent curved faces.
     let blends: Vec<FaceId> = part
         .face_ids()
-        .filter(|&f| is_left(f) && is_blend(a, f))
+        .filter(|&f| is_left(f) && is_blend(a, f) && !chamfer::is_bevel_corner(a, f))
         .collect();
     for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
         out.push(blend_feature(a, block, &group));
