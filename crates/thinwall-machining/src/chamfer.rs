@@ -75,8 +75,16 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
                 && n.dot(&sum.normalize()) > cos
                 && width < NARROWER * a.strip_width(*g).0.max(a.strip_width(*h).0)
                 && !closes_a_floor(a, f, *g, *h)
+                && !(*cg == Convexity::Concave && hexagon_side(&n, ng))
         })
     })
+}
+
+/// Whether a face meeting a neighbour inside at 60° between normals is a
+/// side of a hexagon (a six-sided pocket or passage), not a bevel in an
+/// inside corner.
+fn hexagon_side(n: &Vector3, neighbour: &Vector3) -> bool {
+    (n.dot(neighbour) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt()
 }
 
 /// Whether bevel candidate `f` between `g` and `h` bounds, with them only,
