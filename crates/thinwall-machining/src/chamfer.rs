@@ -5,11 +5,13 @@
 //! A planar face is a chamfer when it is one strip (one loop, at least
 //! three times longer than wide), its normal bisects the normals of two of
 //! its non-parallel planar neighbours met with the same convexity (a
-//! symmetric bevel), it is narrower than half the wider of the two, and it
+//! symmetric bevel), it is narrower than half the larger of the two (the
+//! square root of its area), it is not a hexagon's side, and it
 //! does not close with them alone a face it meets (a triangular step's
 //! floor); a cone is a chamfer when it joins a plane square to
 //! its axis and a coaxial cylinder and is shorter along the axis than the
-//! cylinder's radius (a longer cone is a countersink, part of its hole),
+//! cylinder's radius or is at 45° (a longer, steeper or flatter cone is a
+//! countersink, part of its hole),
 //! or when it carries a chain of planar bevels round a curved edge.
 
 use crate::{MachiningFeature, Stock};
@@ -22,7 +24,11 @@ use thinwall_graph::Convexity;
 
 /// A bevel's normal bisects its neighbours' within this angle, degrees.
 const BISECT_DEG: f64 = 0.5;
-/// A bevel is narrower than this share of the wider face it joins.
+/// A hexagon side meets its neighbour at 60° within this slack on the
+/// cosine (about half a degree).
+const HEXAGON_COS_SLACK: f64 = 1e-3;
+/// A bevel is narrower than this share of the larger face it joins (the
+/// square root of its area).
 const NARROWER: f64 = 0.5;
 /// A bevel is at least this many times longer than wide (a strip).
 const ELONGATED: f64 = 3.0;
@@ -73,18 +79,17 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
                 && ng.dot(nh) < 1.0 - NEAR_PARALLEL_EPS
                 && sum.norm() > NEAR_PARALLEL_EPS
                 && n.dot(&sum.normalize()) > cos
-                && width < NARROWER * a.strip_width(*g).0.max(a.strip_width(*h).0)
+                && width < NARROWER * a.props(*g).area.sqrt().max(a.props(*h).area.sqrt())
                 && !closes_a_floor(a, f, *g, *h)
-                && !(*cg == Convexity::Concave && hexagon_side(&n, ng))
+                && !hexagon_side(&n, ng)
         })
     })
 }
 
-/// Whether a face meeting a neighbour inside at 60° between normals is a
-/// side of a hexagon (a six-sided pocket or passage), not a bevel in an
-/// inside corner.
+/// Whether a face meeting a neighbour at 60° between normals is a side of
+/// a hexagon (a six-sided pocket, passage or boss), not a bevel.
 fn hexagon_side(n: &Vector3, neighbour: &Vector3) -> bool {
-    (n.dot(neighbour) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt()
+    (n.dot(neighbour) - 0.5).abs() < HEXAGON_COS_SLACK
 }
 
 /// Whether bevel candidate `f` between `g` and `h` bounds, with them only,
