@@ -273,6 +273,10 @@ fn cut_features(
             || (adj.convexity == Convexity::Smooth
                 && matches!((a.concave_cylinder(f), a.concave_cylinder(g)),
                     (Some(x), Some(y)) if x.coaxial(&y, tol * 100.0)))
+            // A round end and the wall it runs into (its floor cut away).
+            || (adj.convexity == Convexity::Smooth
+                && (a.concave_cylinder(f).is_some() && a.planar(g).is_some()
+                    || a.concave_cylinder(g).is_some() && a.planar(f).is_some()))
     };
     let groups: Vec<Vec<FaceId>> = a
         .components(&rest, joined)
