@@ -39,7 +39,8 @@ fn labels(path: &std::path::Path) -> HashMap<u64, u32> {
         .collect()
 }
 
-/// The features whose faces are not all of the class they give.
+/// The features whose faces are not all of the class they give, and the
+/// feature faces in no feature.
 fn print_wrong(f: &std::path::Path, feats: &[MachiningFeature], truth: &HashMap<u64, u32>) {
     for m in feats {
         let t: Vec<u32> = m.faces.iter().map(|x| truth[x]).collect();
@@ -162,9 +163,10 @@ fn print(s: &Score, what: &str) {
     println!("wrong parts: {:?}", s.wrong_files);
 }
 
-/// Measured on the data the rules were written against (in-sample): a
-/// floor that keeps them from getting worse. The target is 99.5 %.
-const FLOOR: f64 = 0.95;
+/// Measured on the data the rules were written against (in-sample:
+/// 98.20 % today): a floor that keeps them from getting worse. The issue's
+/// target is 99.5 %.
+const FLOOR: f64 = 0.98;
 
 #[test]
 fn mfcadpp_catalog_face_accuracy() {

@@ -9,6 +9,7 @@ use thinwall_analysis::{Catalog, Cylinder, MachiningKind, PartAnalysis, Profile}
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Surface, Vector3};
+use thinwall_graph::Convexity;
 
 /// A concave cylinder sweeping this much or more is the round end of a
 /// slot or pocket (half a circle), not a blend, degrees.
@@ -248,6 +249,11 @@ impl<'g> GroupShape<'g> {
             .filter_map(|&f| a.cylinder_sweep_deg(f))
             .sum();
         let halves = sweeps.iter().filter(|&&s| s >= HALF_SWEEP_DEG).count();
+        let tangent_wall = walls.iter().any(|&w| {
+            a.graph().neighbours(w).any(|(g, adj)| {
+                adj.convexity == Convexity::Smooth && a.concave_cylinder(g).is_some()
+            })
+        });
         let half = halves > 0;
         let typed = |kind, through, profile, catalog| Typed {
             kind,
@@ -292,6 +298,11 @@ impl<'g> GroupShape<'g> {
                 Profile::CircularEnd,
                 Some(C::VCircularEndBlindSlot),
             )
+        } else if !tangent_wall {
+            // A quarter circle in a corner whose other walls meet it at an
+            // angle (cut by another feature), not a slot's ends running
+            // into its back wall.
+            typed(Step, false, Profile::Circular, Some(C::CircularBlindStep))
         } else if sweeps
             .iter()
             .all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG)
