@@ -7,8 +7,10 @@
 //! the block's six planes is **stock**. The other faces are grouped into
 //! features: curved faces tangent to two or more faces are blends (fillets
 //! and rounds, chained along tangent edges); the rest are joined across
-//! concave edges (the inside corners of a depression), and the two halves
-//! of a hole's cylinder across their tangent seam. Each group is typed from
+//! concave edges (the inside corners of a depression), the two halves
+//! of a hole's cylinder across their tangent seam, and a round end with the
+//! plane it runs into; pieces of one feature that a later cut split apart
+//! are joined (`fragments`). Each group is typed from
 //! which stock planes it opens to and its faces' directions:
 //!
 //! - a floor facing the only stock plane it opens to: **pocket**;
