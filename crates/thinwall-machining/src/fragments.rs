@@ -1,8 +1,9 @@
 //! Pieces of one feature that a later feature cut apart: a pocket split
 //! in two by a hole through its floor, a step floor left as an island
-//! inside an O-ring. Such pieces lie on a common plane facing the same
-//! way (a floor, or a wall) and both meet a third group (the feature that
-//! split them); they are typed as one feature.
+//! inside an O-ring, a passage's walls on either side of a slot through
+//! it. Such pieces lie on a common plane facing the same way (a floor, or
+//! a wall), do not meet each other, and both meet a third group (the
+//! feature that split them); they are typed as one feature.
 
 use crate::same_direction;
 use petgraph::unionfind::UnionFind;
@@ -85,14 +86,15 @@ pub(crate) fn join_pieces(a: &PartAnalysis, groups: Vec<Vec<FaceId>>) -> Vec<Vec
                 .collect()
         })
         .collect();
-    let adjacent = |i: usize, j: usize| {
-        planes[i].iter().any(|p| p.meets.contains(&j))
-            || groups[i].iter().any(|&f| meets(f, i).contains(&j))
-    };
+    let touching: Vec<BTreeSet<usize>> = groups
+        .iter()
+        .enumerate()
+        .map(|(i, g)| g.iter().flat_map(|&f| meets(f, i)).collect())
+        .collect();
     let mut sets = UnionFind::new(groups.len());
     for i in 0..groups.len() {
         for j in i + 1..groups.len() {
-            if split_by_one(a, &groups, &planes[i], &planes[j]) && !adjacent(i, j) {
+            if !touching[i].contains(&j) && split_by_one(a, &groups, &planes[i], &planes[j]) {
                 sets.union(i, j);
             }
         }

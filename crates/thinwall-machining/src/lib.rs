@@ -31,6 +31,7 @@
 mod boss;
 mod catalog;
 mod chamfer;
+mod closed_slot;
 mod facing;
 mod fragments;
 mod options;

@@ -3,6 +3,7 @@
 //! it goes through, its profile and its catalogue name.
 
 use crate::catalog;
+use crate::closed_slot;
 use crate::{radii, same_direction, Stock};
 use std::collections::BTreeSet;
 use thinwall_analysis::{Catalog, Cylinder, MachiningKind, PartAnalysis, Profile};
@@ -401,112 +402,17 @@ impl<'g> GroupShape<'g> {
             }
             Some(_) if w == 3 && parallel && square => (Slot, false, P::Rectangular),
             Some(_) => (Pocket, false, sides),
-            None if closed => match self.open_side_closed_below(a, &wall_faces) {
-                Some(rest) => through_slot(&rest),
-                None => (Passage, true, sides),
-            },
+            None if closed => {
+                match closed_slot::slot_walls(a, self.group, &self.planes, &wall_faces) {
+                    Some(rest) => through_slot(&rest),
+                    None => (Passage, true, sides),
+                }
+            }
             None if w == 2 && parallel => (Slot, true, P::Rectangular),
             None if w == 2 => (Slot, true, P::Triangular),
             None if w >= 3 => (Passage, true, sides),
             None => (Slot, true, P::Free),
         }
-    }
-
-    /// A ring of walls through the part that is a slot cut at a block or
-    /// feature edge: every wall plane but one meets the face it was entered
-    /// from (square to the ring's axis), and that one wall, under the entry
-    /// edge, meets material beyond the edge that closed the slot's open
-    /// side lower down (a face not square to the axis, nor a blend or
-    /// bevel: a passage's rim chamfered on one edge stays a passage). At
-    /// the far end it meets only faces every wall meets (the exit; a
-    /// passage whose exit is split by another feature stays a passage).
-    /// The other walls' normals, or none.
-    fn open_side_closed_below(&self, a: &PartAnalysis, walls: &[FaceId]) -> Option<Vec<Vector3>> {
-        let tol = a.tol().feature * 10.0;
-        let plane_of = |f: FaceId| {
-            let n = a.props(f).normal?;
-            let off = n.dot(&a.props(f).centroid.coords);
-            self.planes
-                .iter()
-                .position(|(m, o)| same_direction(m, &n) && (o - off).abs() < tol)
-        };
-        let wall_planes: BTreeSet<usize> = walls.iter().filter_map(|&f| plane_of(f)).collect();
-        let normals: Vec<Vector3> = wall_planes.iter().map(|&p| self.planes[p].0).collect();
-        let axis = normals
-            .iter()
-            .flat_map(|n| normals.iter().map(move |m| n.cross(m)))
-            .max_by(|x, y| x.norm().total_cmp(&y.norm()))?
-            .try_normalize(NEAR_PARALLEL_EPS)?;
-        if normals.len() < 3
-            || normals
-                .iter()
-                .any(|n| n.dot(&axis).abs() > NEAR_PARALLEL_EPS)
-        {
-            return None;
-        }
-        let beyond = |f: FaceId| {
-            a.graph()
-                .neighbours(f)
-                .map(|(g, _)| g)
-                .filter(|g| !self.group.contains(g))
-                .collect::<Vec<FaceId>>()
-        };
-        let end_face = |g: FaceId| {
-            a.props(g)
-                .normal
-                .is_some_and(|n| n.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
-        };
-        // Which wall planes meet each end face.
-        let mut meets: std::collections::BTreeMap<FaceId, BTreeSet<usize>> = Default::default();
-        for &w in walls {
-            let Some(p) = plane_of(w) else { continue };
-            for g in beyond(w).into_iter().filter(|&g| end_face(g)) {
-                meets.entry(g).or_default().insert(p);
-            }
-        }
-        let all = wall_planes.len();
-        // Material beyond the entry edge: any face but the exit (an end
-        // face every wall meets), a blend or a bevel.
-        let closed_by = |g: FaceId| {
-            meets.get(&g).is_none_or(|ps| ps.len() < all)
-                && !crate::is_blend(a, g)
-                && !crate::chamfer::is_chamfer(a, g)
-        };
-        // The entry face has an edge in the odd wall's plane (the slot's
-        // open side was sketched on it).
-        let on_plane = |f: FaceId, (n, off): (Vector3, f64)| {
-            let part = a.part();
-            a.graph().neighbours(f).any(|(h, adj)| {
-                !self.group.contains(&h)
-                    && adj.edges.iter().any(|&e| {
-                        let edge = part.edge(a.graph().edges[e].edge);
-                        [edge.start, edge.end]
-                            .iter()
-                            .all(|&v| (n.dot(&part.vertex(v).point.coords) - off).abs() < tol)
-                    })
-            })
-        };
-        let odd = meets
-            .iter()
-            .filter(|(_, ps)| ps.len() == all - 1)
-            .find_map(|(&entry, ps)| {
-                let odd = *wall_planes.difference(ps).next()?;
-                let odd_meets: Vec<FaceId> = walls
-                    .iter()
-                    .filter(|&&w| plane_of(w) == Some(odd))
-                    .flat_map(|&w| beyond(w))
-                    .collect();
-                let closed =
-                    odd_meets.iter().any(|&g| closed_by(g)) && on_plane(entry, self.planes[odd]);
-                closed.then_some(odd)
-            })?;
-        Some(
-            wall_planes
-                .iter()
-                .filter(|&&p| p != odd)
-                .map(|&p| self.planes[p].0)
-                .collect(),
-        )
     }
 
     /// What the ends of a lone inclined wall on a floor `n` meet: block
