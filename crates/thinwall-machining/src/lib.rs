@@ -247,6 +247,19 @@ fn cut_features(
     for group in a.components(&bevels, |_, _, adj| adj.convexity == Convexity::Smooth) {
         out.push(chamfer::chamfer_feature(a, block, &group));
     }
+    // Bevels in inside corners (between a floor and its wall) still join
+    // the faces either side of them, as the corner would.
+    let inside_bevels: BTreeSet<FaceId> = bevels
+        .iter()
+        .copied()
+        .filter(|&f| {
+            a.graph()
+                .neighbours(f)
+                .filter(|(_, adj)| adj.convexity == Convexity::Concave)
+                .count()
+                >= 2
+        })
+        .collect();
     taken.extend(bevels);
     // Bosses: round convex cylinders standing on a face.
     let candidates: Vec<FaceId> = part
@@ -258,12 +271,13 @@ fn cut_features(
         taken.extend(group);
     }
     // Depressions: concave-connected groups (hole halves across their
-    // seam), joined also through the concave blends between their faces
-    // (a filleted pocket's floor and walls are one pocket).
+    // seam), joined also through the concave blends and bevels between
+    // their faces (a filleted pocket's floor and walls are one pocket).
     let concave_blends: BTreeSet<FaceId> = blends
         .iter()
         .copied()
         .filter(|&f| a.is_concave_blend(f))
+        .chain(inside_bevels)
         .collect();
     let rest: Vec<FaceId> = part
         .face_ids()
