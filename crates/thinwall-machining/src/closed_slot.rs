@@ -5,15 +5,12 @@
 //! the one under the entry edge, never meets the face the slot was entered
 //! from, while every other wall does.
 
-use crate::same_direction;
+use crate::{face_plane, same_plane, Plane};
 use std::collections::{BTreeMap, BTreeSet};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::Vector3;
-
-/// A plane: unit normal and offset along it.
-type Plane = (Vector3, f64);
 
 /// A ring of walls through the part, square to one axis.
 struct Ring<'r> {
@@ -24,6 +21,7 @@ struct Ring<'r> {
     /// Indices into `planes` of the walls' planes.
     wall_planes: BTreeSet<usize>,
     axis: Vector3,
+    /// Within this of a plane is on it, mm.
     tol: f64,
 }
 
@@ -60,11 +58,8 @@ impl<'r> Ring<'r> {
 
     /// Which of the group's planes face `f` lies on.
     fn plane_of(&self, f: FaceId) -> Option<usize> {
-        let n = self.a.props(f).normal?;
-        let off = n.dot(&self.a.props(f).centroid.coords);
-        self.planes
-            .iter()
-            .position(|(m, o)| same_direction(m, &n) && (o - off).abs() < self.tol)
+        let q = face_plane(self.a, f)?;
+        self.planes.iter().position(|p| same_plane(self.a, p, &q))
     }
 
     /// The faces outside the group that `f` meets.

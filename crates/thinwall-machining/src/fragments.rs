@@ -5,18 +5,16 @@
 //! a wall), do not meet each other, and both meet a third group (the
 //! feature that split them); they are typed as one feature.
 
-use crate::same_direction;
+use crate::{face_plane, same_plane, Plane};
 use petgraph::unionfind::UnionFind;
 use std::collections::{BTreeSet, HashMap};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
-use thinwall_geom::Vector3;
 
 /// A planar face of a group: its plane (normal, offset) and the other
 /// groups it meets.
 struct PlaneFace {
-    normal: Vector3,
-    offset: f64,
+    plane: Plane,
     meets: BTreeSet<usize>,
 }
 
@@ -33,10 +31,11 @@ fn split_by_one(
     y: &[PlaneFace],
 ) -> bool {
     let tol = a.tol().feature * 10.0;
-    let coplanar = |p: &PlaneFace, q: &PlaneFace| {
-        same_direction(&p.normal, &q.normal) && (p.offset - q.offset).abs() < tol
+    let coplanar = |p: &PlaneFace, q: &PlaneFace| same_plane(a, &p.plane, &q.plane);
+    let below = |k: usize, p: &PlaneFace| {
+        let (n, offset) = p.plane;
+        a.extent(&groups[k], &n).1 < offset + tol
     };
-    let below = |k: usize, p: &PlaneFace| a.extent(&groups[k], &p.normal).1 < p.offset + tol;
     let mut shared: Vec<&PlaneFace> = Vec::new();
     let mut split = false;
     for p in x {
@@ -74,13 +73,9 @@ pub(crate) fn join_pieces(a: &PartAnalysis, groups: Vec<Vec<FaceId>>) -> Vec<Vec
         .map(|(i, g)| {
             g.iter()
                 .filter_map(|&f| {
-                    let normal = a.props(f).normal?;
-                    let offset = normal.dot(&a.props(f).centroid.coords);
-                    let meets = meets(f, i);
                     Some(PlaneFace {
-                        normal,
-                        offset,
-                        meets,
+                        plane: face_plane(a, f)?,
+                        meets: meets(f, i),
                     })
                 })
                 .collect()

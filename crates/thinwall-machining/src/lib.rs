@@ -143,6 +143,21 @@ fn same_direction(a: &Vector3, b: &Vector3) -> bool {
     a.dot(b) > 1.0 - UNIT_PARALLEL_EPS
 }
 
+/// A plane: unit normal and offset along it, mm.
+pub(crate) type Plane = (Vector3, f64);
+
+/// The plane of a planar face (its outward normal and offset).
+pub(crate) fn face_plane(a: &PartAnalysis, f: FaceId) -> Option<Plane> {
+    let n = a.props(f).normal?;
+    Some((n, n.dot(&a.props(f).centroid.coords)))
+}
+
+/// Whether two planes are one, facing the same way (within ten times the
+/// feature tolerance).
+pub(crate) fn same_plane(a: &PartAnalysis, (n, o): &Plane, (m, p): &Plane) -> bool {
+    same_direction(n, m) && (o - p).abs() < a.tol().feature * 10.0
+}
+
 /// A lone face at least this share of the block's largest extent long is a
 /// side of the part, not a feature.
 const PART_SIDE_SHARE: f64 = 0.5;
@@ -273,7 +288,7 @@ fn cut_features(
     // Depressions: concave-connected groups (hole halves across their
     // seam), joined also through the concave blends and bevels between
     // their faces (a filleted pocket's floor and walls are one pocket).
-    let concave_blends: BTreeSet<FaceId> = blends
+    let connectors: BTreeSet<FaceId> = blends
         .iter()
         .copied()
         .filter(|&f| a.is_concave_blend(f))
@@ -281,12 +296,12 @@ fn cut_features(
         .collect();
     let rest: Vec<FaceId> = part
         .face_ids()
-        .filter(|f| (is_left(*f) && !taken.contains(f)) || concave_blends.contains(f))
+        .filter(|f| (is_left(*f) && !taken.contains(f)) || connectors.contains(f))
         .collect();
     let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
         adj.convexity == Convexity::Concave
             || (adj.convexity == Convexity::Smooth
-                && (concave_blends.contains(&f) || concave_blends.contains(&g)))
+                && (connectors.contains(&f) || connectors.contains(&g)))
             || (adj.convexity == Convexity::Smooth
                 && matches!((a.concave_cylinder(f), a.concave_cylinder(g)),
                     (Some(x), Some(y)) if x.coaxial(&y, tol * 100.0)))
@@ -299,7 +314,7 @@ fn cut_features(
         .components(&rest, joined)
         .into_iter()
         .map(|mut g| {
-            g.retain(|f| !concave_blends.contains(f));
+            g.retain(|f| !connectors.contains(f));
             g
         })
         .filter(|g| !g.is_empty())
@@ -322,18 +337,13 @@ fn cut_features(
 /// Whether a group is planar faces on one plane (one face, or pieces of
 /// one that another feature split).
 fn one_plane(a: &PartAnalysis, group: &[FaceId]) -> bool {
-    let tol = a.tol().feature * 10.0;
-    let plane = |f: FaceId| {
-        let n = a.props(f).normal?;
-        a.planar(f)?;
-        Some((n, n.dot(&a.props(f).centroid.coords)))
-    };
-    let Some((n, o)) = plane(group[0]) else {
+    let plane = |f: FaceId| a.planar(f).and_then(|_| face_plane(a, f));
+    let Some(first) = plane(group[0]) else {
         return false;
     };
     group
         .iter()
-        .all(|&f| plane(f).is_some_and(|(m, p)| same_direction(&n, &m) && (o - p).abs() < tol))
+        .all(|&f| plane(f).is_some_and(|q| same_plane(a, &first, &q)))
 }
 
 /// A lone planar face (no walls meet it along concave edges), or the

@@ -4,7 +4,7 @@
 
 use crate::catalog;
 use crate::closed_slot;
-use crate::{radii, same_direction, Stock};
+use crate::{face_plane, radii, same_direction, same_plane, Plane, Stock};
 use std::collections::BTreeSet;
 use thinwall_analysis::{Catalog, Cylinder, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
@@ -16,7 +16,7 @@ use thinwall_graph::Convexity;
 /// slot or pocket (half a circle), not a blend, degrees.
 pub(crate) const HALF_SWEEP_DEG: f64 = 150.0;
 /// The round ends of a slot along a block edge are quarter circles,
-/// degrees, within this slack (boundary sampling), degrees.
+/// within this slack (boundary sampling), degrees.
 const QUARTER_DEG: f64 = 90.0;
 const QUARTER_SLACK_DEG: f64 = 2.0;
 /// Coaxial concave cylinders sweeping this much together are a hole (a
@@ -54,14 +54,18 @@ fn ring_profile(walls: &[Vector3]) -> Profile {
     }
 }
 
+/// Whether some pair of the unit normals has a cosine that `holds`.
+fn any_pair(normals: &[Vector3], holds: impl Fn(f64) -> bool) -> bool {
+    normals
+        .iter()
+        .enumerate()
+        .any(|(i, n)| normals[i + 1..].iter().any(|m| holds(n.dot(m))))
+}
+
 /// A slot through the part typed by its walls: a parallel pair, a
 /// rectangle; two walls meeting in a V, a triangle.
 fn through_slot(walls: &[Vector3]) -> (MachiningKind, bool, Profile) {
-    let parallel = walls.iter().enumerate().any(|(i, n)| {
-        walls[i + 1..]
-            .iter()
-            .any(|m| n.dot(m) < -1.0 + NEAR_PARALLEL_EPS)
-    });
+    let parallel = any_pair(walls, |c| c < -1.0 + NEAR_PARALLEL_EPS);
     match (walls.len(), parallel) {
         (_, true) => (MachiningKind::Slot, true, Profile::Rectangular),
         (2, false) => (MachiningKind::Slot, true, Profile::Triangular),
@@ -126,19 +130,14 @@ impl<'g> GroupShape<'g> {
         group: &'g [FaceId],
         touched: &'g BTreeSet<usize>,
     ) -> Self {
-        let tol = a.tol().feature;
         let opposite: Vec<usize> = (0..3)
             .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
             .collect();
-        let mut planes: Vec<(Vector3, f64)> = Vec::new();
+        let mut planes: Vec<Plane> = Vec::new();
         for &f in group {
-            if let Some(n) = a.props(f).normal {
-                let off = n.dot(&a.props(f).centroid.coords);
-                if !planes
-                    .iter()
-                    .any(|(m, o)| same_direction(m, &n) && (o - off).abs() < tol * 10.0)
-                {
-                    planes.push((n, off));
+            if let Some(q) = face_plane(a, f) {
+                if !planes.iter().any(|p| same_plane(a, p, &q)) {
+                    planes.push(q);
                 }
             }
         }
@@ -354,14 +353,8 @@ impl<'g> GroupShape<'g> {
             .map(|p| p.0)
             .collect();
         let w = walls.len();
-        let pair = |f: &dyn Fn(f64) -> bool| {
-            walls
-                .iter()
-                .enumerate()
-                .any(|(i, n)| walls[i + 1..].iter().any(|m| f(n.dot(m))))
-        };
-        let parallel = pair(&|c| c < -1.0 + NEAR_PARALLEL_EPS);
-        let square = pair(&|c| c.abs() < NEAR_PARALLEL_EPS);
+        let parallel = any_pair(&walls, |c| c < -1.0 + NEAR_PARALLEL_EPS);
+        let square = any_pair(&walls, |c| c.abs() < NEAR_PARALLEL_EPS);
         let wall_faces: Vec<FaceId> = self
             .group
             .iter()
@@ -428,15 +421,9 @@ impl<'g> GroupShape<'g> {
             .map(|sp| self.stock.normal(sp))
             .filter(|m| m.dot(n).abs() < NEAR_PARALLEL_EPS)
             .collect();
-        let pairs = || {
-            sides
-                .iter()
-                .enumerate()
-                .flat_map(|(i, p)| sides[i + 1..].iter().map(move |q| p.dot(q)))
-        };
-        if pairs().any(|c| c < -1.0 + NEAR_PARALLEL_EPS) {
+        if any_pair(&sides, |c| c < -1.0 + NEAR_PARALLEL_EPS) {
             Some(true)
-        } else if pairs().any(|c| c.abs() < NEAR_PARALLEL_EPS) {
+        } else if any_pair(&sides, |c| c.abs() < NEAR_PARALLEL_EPS) {
             Some(false)
         } else {
             None
