@@ -9,7 +9,8 @@
 //! face's axes comes out exact (others within 3·10⁻⁴ of the radius), a
 //! sharp inner corner's uncut area r²(1 − π/4) 0.15 % high.
 
-use super::scene::{clip, Scene};
+use super::obstacle::Obstacle;
+use super::scene::{clip_tagged, Scene};
 use super::{Ctx, Judged};
 use geo::{Area, BooleanOps, BoundingRect, ConvexHull, Coord, MultiPoint, MultiPolygon, Point};
 use geo::{Polygon, Rect};
@@ -65,28 +66,33 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
         [l.x, l.y]
     };
     let (small_disk, holder_disk) = (disk(r), disk(big));
-    let mut groups: BTreeMap<(u32, bool), Vec<MultiPolygon<f64>>> = BTreeMap::new();
+    let mut obstacles: BTreeMap<(u32, bool), Obstacle> = BTreeMap::new();
+    let top = h + tool.cutting_length;
     for k in scene.near(lo, hi, h + ctx.touch) {
         let t = &scene.tris[k as usize];
         if t.face == own {
             continue;
         }
-        let top = h + tool.cutting_length;
-        for (holder, a, b, d) in [
-            (false, h + ctx.touch, top, &small_disk),
-            (true, top + ctx.touch, f64::INFINITY, &holder_disk),
+        for (holder, a, b) in [
+            (false, h + ctx.touch, top),
+            (true, top + ctx.touch, f64::INFINITY),
         ] {
-            let pts: Vec<[f64; 2]> = clip(&t.p, a, b).into_iter().map(to_face).collect();
-            if let Some(p) = grown(&pts, d) {
-                groups
+            let clipped = clip_tagged(&t.p, a, b);
+            if !clipped.is_empty() {
+                obstacles
                     .entry((t.face, holder))
                     .or_default()
-                    .push(MultiPolygon::new(vec![p]));
+                    .push(t, clipped, to_face);
             }
         }
     }
-    let groups: Vec<((u32, bool), MultiPolygon<f64>)> =
-        groups.into_iter().map(|(k, v)| (k, union_all(v))).collect();
+    let groups: Vec<((u32, bool), MultiPolygon<f64>)> = obstacles
+        .into_iter()
+        .map(|((face, holder), ob)| {
+            let d = if holder { &holder_disk } else { &small_disk };
+            ((face, holder), ob.grown(d))
+        })
+        .collect();
     let stopped = union_all(groups.iter().map(|(_, g)| g.clone()).collect());
     let margin = 1.01 * r + 1e-6;
     let frame_box = Rect::new(

@@ -77,7 +77,7 @@ fn meet(x: Option<Span>, y: Option<Span>) -> Option<Span> {
 /// The strip of half-width `rho` along segment `pq`, between its ends.
 fn line_in_strip(q0: [f64; 2], e: [f64; 2], p: [f64; 2], q: [f64; 2], rho: f64) -> Option<Span> {
     let t = sub(q, p);
-    let len = t[0].hypot(t[1]);
+    let len = (t[0] * t[0] + t[1] * t[1]).sqrt();
     if len < 1e-300 {
         return None;
     }

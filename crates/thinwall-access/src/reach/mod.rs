@@ -21,6 +21,7 @@
 
 pub mod floor;
 pub mod interval;
+pub mod obstacle;
 pub mod sampled;
 pub mod scene;
 pub mod side;
@@ -508,8 +509,10 @@ pub const TOOL_PRECISION: f64 = 0.005;
 /// The largest tool (the run's proportions) that reaches the whole floor
 /// `own` on the scene's axis, within [`TOOL_PRECISION`]: the run's own
 /// tool brackets it (`given_whole`: whether it reached the floor whole),
-/// doubling up or halving down to [`SMALLEST_TOOL`] until the answer
-/// changes, up to twice the face's size, then bisecting in proportion.
+/// doubling up (to twice the face's size) or halving down until the
+/// answer changes, then bisecting in proportion. Down, the smallest tool
+/// ([`SMALLEST_TOOL`]) is tried first: a floor it cannot reach whole has
+/// no answer, found in one judgement rather than a halving each.
 /// The result is always a size judged whole.
 pub fn largest_tool(
     a: &PartAnalysis,
@@ -530,7 +533,13 @@ pub fn largest_tool(
     let f = mesh.faces[own as usize].face;
     let limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
     let given = ctx.tool.diameter.clamp(SMALLEST_TOOL, limit);
-    let (mut lo, mut hi) = if given_whole || whole(given) {
+    // The run's own tool was judged already, unless clamped.
+    let given_reaches = if given == ctx.tool.diameter {
+        given_whole
+    } else {
+        whole(given)
+    };
+    let (mut lo, mut hi) = if given_reaches {
         // Up: the first size that fails bounds it.
         let mut lo = given;
         loop {
@@ -544,13 +553,18 @@ pub fn largest_tool(
             lo = next;
         }
     } else {
-        // Down: the first size that reaches it whole bounds it.
+        // Down: none when the smallest fails (a sharp inside corner
+        // larger than the allowance); else the first size that reaches it
+        // whole bounds it.
+        if given <= SMALLEST_TOOL || !whole(SMALLEST_TOOL) {
+            return None;
+        }
         let mut hi = given;
         loop {
-            if hi <= SMALLEST_TOOL {
-                return None;
+            let next = 0.5 * hi;
+            if next <= SMALLEST_TOOL {
+                break (SMALLEST_TOOL, hi);
             }
-            let next = (0.5 * hi).max(SMALLEST_TOOL);
             if whole(next) {
                 break (next, hi);
             }

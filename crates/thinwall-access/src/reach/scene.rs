@@ -10,10 +10,27 @@ use thinwall_geom::{Frame, Point3, Vector3};
 /// One triangle of the part, in the axis frame.
 pub struct Tri {
     pub p: [[f64; 3]; 3],
+    /// The corners' indices into the mesh's points (edges shared by two
+    /// triangles share them).
+    pub v: [u32; 3],
     /// Index into the mesh's faces.
     pub face: u32,
     lo: [f64; 3],
     hi: [f64; 3],
+}
+
+impl Tri {
+    pub fn new(p: [[f64; 3]; 3], v: [u32; 3], face: u32) -> Self {
+        let mut lo = p[0];
+        let mut hi = p[0];
+        for q in &p[1..] {
+            for c in 0..3 {
+                lo[c] = lo[c].min(q[c]);
+                hi[c] = hi[c].max(q[c]);
+            }
+        }
+        Self { p, v, face, lo, hi }
+    }
 }
 
 /// Triangles in the frame of one tool axis.
@@ -41,20 +58,7 @@ impl Scene {
                     let l = frame.to_local(&mesh.points[i as usize]);
                     [l.x, l.y, l.z]
                 });
-                let mut lo = p[0];
-                let mut hi = p[0];
-                for q in &p[1..] {
-                    for c in 0..3 {
-                        lo[c] = lo[c].min(q[c]);
-                        hi[c] = hi[c].max(q[c]);
-                    }
-                }
-                tris.push(Tri {
-                    p,
-                    face: k as u32,
-                    lo,
-                    hi,
-                });
+                tris.push(Tri::new(p, *t, k as u32));
             }
         }
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -190,17 +194,21 @@ pub fn blocked(
         if off.iter().all(|&d| d >= big) || off.iter().all(|&d| d <= -big) {
             continue;
         }
-        let low = clip(&t.p, h + touch, top);
-        if let Some(span) = line_near_convex(q, e, &low, r - touch) {
-            out.push(Block {
-                span,
-                tri: k,
-                holder: false,
-            });
+        let rho = r - touch;
+        let near_cutter = !(off.iter().all(|&d| d >= rho) || off.iter().all(|&d| d <= -rho));
+        if near_cutter && t.lo[2] <= top {
+            let (low, n) = clip(&t.p, h + touch, top);
+            if let Some(span) = line_near_convex(q, e, &low[..n], rho) {
+                out.push(Block {
+                    span,
+                    tri: k,
+                    holder: false,
+                });
+            }
         }
         if t.hi[2] > top + touch {
-            let high = clip(&t.p, top + touch, f64::INFINITY);
-            if let Some(span) = line_near_convex(q, e, &high, big - touch) {
+            let (high, n) = clip(&t.p, top + touch, f64::INFINITY);
+            if let Some(span) = line_near_convex(q, e, &high[..n], big - touch) {
                 out.push(Block {
                     span,
                     tri: k,
@@ -211,30 +219,80 @@ pub fn blocked(
     }
 }
 
-/// The triangle's part with `lo < z ≤ hi`, its corners seen from above.
-pub(super) fn clip(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> Vec<[f64; 2]> {
-    let mut poly: Vec<[f64; 3]> = tri.to_vec();
+/// Corners a triangle cut by two levels can have.
+const MOST_CORNERS: usize = 5;
+
+/// A clipped triangle's corners, each with the edge from it to the next
+/// (see [`clip_tagged`]), on the stack.
+type Corners = [([f64; 3], Option<u8>); MOST_CORNERS];
+
+/// The triangle's part with `lo < z ≤ hi`, its corners seen from above:
+/// the first `n` of the array.
+pub(super) fn clip(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> ([[f64; 2]; MOST_CORNERS], usize) {
+    let (corners, n) = clip_corners(tri, lo, hi);
+    (corners.map(|(p, _)| [p[0], p[1]]), n)
+}
+
+/// The triangle's part with `lo < z ≤ hi` as a polygon, each corner with
+/// the edge of the triangle that the polygon's edge from it to the next
+/// corner lies on (`Some(k)`: from corner `k` to `k + 1`), or `None` where
+/// that edge runs along a cut. A point where a cut crosses an edge is
+/// computed from the edge's lower end (then by coordinates), so the two
+/// triangles sharing an edge cut it at the same point.
+pub(super) fn clip_tagged(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> Vec<([f64; 3], Option<u8>)> {
+    let (corners, n) = clip_corners(tri, lo, hi);
+    corners[..n].to_vec()
+}
+
+fn clip_corners(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> (Corners, usize) {
+    let mut poly: Corners = [([0.0; 3], None); MOST_CORNERS];
+    for k in 0..3 {
+        poly[k] = (tri[k], Some(k as u8));
+    }
+    let mut n = 3;
     for (limit, above) in [(lo, true), (hi, false)] {
         if !limit.is_finite() {
             continue;
         }
         let inside = |p: &[f64; 3]| if above { p[2] > limit } else { p[2] <= limit };
-        let mut next = Vec::with_capacity(poly.len() + 2);
-        for k in 0..poly.len() {
-            let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
+        let mut next: Corners = [([0.0; 3], None); MOST_CORNERS];
+        let mut m = 0;
+        // A plane cuts a convex polygon at two points at most: one corner
+        // more each time (the guard only keeps rounding from panicking).
+        let mut put = |corner| {
+            if m < MOST_CORNERS {
+                next[m] = corner;
+                m += 1;
+            }
+        };
+        for k in 0..n {
+            let ((p, tag), (q, _)) = (poly[k], poly[(k + 1) % n]);
             let (ip, iq) = (inside(&p), inside(&q));
             if ip {
-                next.push(p);
+                put((p, tag));
             }
             if ip != iq {
-                let t = (limit - p[2]) / (q[2] - p[2]);
-                next.push([p[0] + (q[0] - p[0]) * t, p[1] + (q[1] - p[1]) * t, limit]);
+                // Leaving: the edge from the crossing runs along the cut.
+                put((crossing(&p, &q, limit), if ip { None } else { tag }));
             }
         }
-        poly = next;
-        if poly.is_empty() {
+        (poly, n) = (next, m);
+        if n == 0 {
             break;
         }
     }
-    poly.iter().map(|p| [p[0], p[1]]).collect()
+    (poly, n)
+}
+
+/// Where the segment `p`–`q` crosses the level `z`, computed the same way
+/// whichever end comes first.
+fn crossing(p: &[f64; 3], q: &[f64; 3], z: f64) -> [f64; 3] {
+    let key = |a: &[f64; 3]| (a[2], a[0], a[1]);
+    let (a, b) = if key(p).partial_cmp(&key(q)) == Some(std::cmp::Ordering::Greater) {
+        (q, p)
+    } else {
+        (p, q)
+    };
+    let t = (z - a[2]) / (b[2] - a[2]);
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, z]
 }
