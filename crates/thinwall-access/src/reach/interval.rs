@@ -6,34 +6,58 @@
 pub type Span = (f64, f64);
 
 /// The parameters `s` where `q0 + s·e` (`e` unit) lies closer than `rho` to
-/// the convex polygon `pts` (its corners in order, or a segment, or a point):
-/// the union of the corners' disks, the edges' strips and the inside.
+/// the convex polygon `pts` (its corners in order, or a segment, or a point).
+/// The polygon grown by the disk is convex, so this is one interval: from
+/// the first to the last parameter within `rho` of its outline (where the
+/// line crosses the inside, it crosses the outline first). Computed in the
+/// line's frame (along it, across it), corner disks and edge strips.
 pub fn line_near_convex(q0: [f64; 2], e: [f64; 2], pts: &[[f64; 2]], rho: f64) -> Option<Span> {
     if rho <= 0.0 || pts.is_empty() {
         return None;
     }
-    let mut acc: Option<Span> = None;
-    let mut add = |s: Option<Span>| {
-        if let Some((a, b)) = s {
+    let local = |p: [f64; 2]| {
+        let w = sub(p, q0);
+        [dot(w, e), cross(e, w)]
+    };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut add = |span: Option<Span>| {
+        if let Some((a, b)) = span {
             if b > a {
-                acc = Some(match acc {
-                    Some((x, y)) => (x.min(a), y.max(b)),
-                    None => (a, b),
-                });
+                lo = lo.min(a);
+                hi = hi.max(b);
             }
         }
     };
-    for (k, p) in pts.iter().enumerate() {
-        add(line_in_disk(q0, e, *p, rho));
-        if pts.len() > 1 {
-            let q = pts[(k + 1) % pts.len()];
-            add(line_in_strip(q0, e, *p, q, rho));
+    let n = pts.len();
+    for k in 0..n {
+        let a = local(pts[k]);
+        // The corner's disk.
+        let d2 = rho * rho - a[1] * a[1];
+        if d2 > 0.0 {
+            let h = d2.sqrt();
+            add(Some((a[0] - h, a[0] + h)));
+        }
+        if n > 1 {
+            add(strip(a, local(pts[(k + 1) % n]), rho));
         }
     }
-    if pts.len() >= 3 {
-        add(line_in_convex(q0, e, pts));
+    (hi > lo).then_some((lo, hi))
+}
+
+/// Where the axis (`across` = 0) passes within `rho` of segment `a`–`b`
+/// between its ends, in the line's frame.
+fn strip(a: [f64; 2], b: [f64; 2], rho: f64) -> Option<Span> {
+    let d = sub(b, a);
+    let len2 = dot(d, d);
+    if len2 < 1e-300 {
+        return None;
     }
-    acc
+    let len = len2.sqrt();
+    // Between the ends: 0 < (x − a)·d < |d|², x = (s, 0).
+    let between = slab(-dot(a, d), d[0], 0.0, len2);
+    // Near the line: |d × (x − a)| < rho·|d|.
+    let near = slab(d[1] * a[0] - d[0] * a[1], -d[1], -rho * len, rho * len);
+    meet(between, near)
 }
 
 fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
@@ -46,17 +70,6 @@ fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
 
 fn cross(a: [f64; 2], b: [f64; 2]) -> f64 {
     a[0] * b[1] - a[1] * b[0]
-}
-
-fn line_in_disk(q0: [f64; 2], e: [f64; 2], c: [f64; 2], rho: f64) -> Option<Span> {
-    let w = sub(c, q0);
-    let along = dot(w, e);
-    let off = cross(e, w);
-    let d2 = rho * rho - off * off;
-    (d2 > 0.0).then(|| {
-        let h = d2.sqrt();
-        (along - h, along + h)
-    })
 }
 
 /// `lo < a + s·b < hi` as an interval of `s` (all or none when `b` is 0).
@@ -72,43 +85,6 @@ fn meet(x: Option<Span>, y: Option<Span>) -> Option<Span> {
     let (x, y) = (x?, y?);
     let (a, b) = (x.0.max(y.0), x.1.min(y.1));
     (b > a).then_some((a, b))
-}
-
-/// The strip of half-width `rho` along segment `pq`, between its ends.
-fn line_in_strip(q0: [f64; 2], e: [f64; 2], p: [f64; 2], q: [f64; 2], rho: f64) -> Option<Span> {
-    let t = sub(q, p);
-    let len = (t[0] * t[0] + t[1] * t[1]).sqrt();
-    if len < 1e-300 {
-        return None;
-    }
-    let t = [t[0] / len, t[1] / len];
-    let n = [-t[1], t[0]];
-    let w = sub(q0, p);
-    meet(
-        slab(dot(w, t), dot(e, t), 0.0, len),
-        slab(dot(w, n), dot(e, n), -rho, rho),
-    )
-}
-
-/// Inside a convex polygon with area (either orientation).
-fn line_in_convex(q0: [f64; 2], e: [f64; 2], pts: &[[f64; 2]]) -> Option<Span> {
-    let n = pts.len();
-    let area: f64 = (0..n).map(|k| cross(pts[k], pts[(k + 1) % n])).sum();
-    if area.abs() < 1e-300 {
-        return None;
-    }
-    let sign = area.signum();
-    let mut span = Some((f64::NEG_INFINITY, f64::INFINITY));
-    for k in 0..n {
-        let (p, q) = (pts[k], pts[(k + 1) % n]);
-        let t = sub(q, p);
-        // Inside: sign · cross(t, x − p) > 0.
-        let a = sign * cross(t, sub(q0, p));
-        let b = sign * cross(t, e);
-        span = meet(span, slab(a, b, 0.0, f64::INFINITY));
-        span?;
-    }
-    span
 }
 
 /// Sorted, disjoint spans from any.

@@ -229,8 +229,18 @@ type Corners = [([f64; 3], Option<u8>); MOST_CORNERS];
 /// The triangle's part with `lo < z ≤ hi`, its corners seen from above:
 /// the first `n` of the array.
 pub(super) fn clip(tri: &[[f64; 3]; 3], lo: f64, hi: f64) -> ([[f64; 2]; MOST_CORNERS], usize) {
+    let mut out = [[0.0; 2]; MOST_CORNERS];
+    if tri.iter().all(|p| p[2] > lo && p[2] <= hi) {
+        for (o, p) in out.iter_mut().zip(tri) {
+            *o = [p[0], p[1]];
+        }
+        return (out, 3);
+    }
     let (corners, n) = clip_corners(tri, lo, hi);
-    (corners.map(|(p, _)| [p[0], p[1]]), n)
+    for (o, (p, _)) in out.iter_mut().zip(&corners[..n]) {
+        *o = [p[0], p[1]];
+    }
+    (out, n)
 }
 
 /// The triangle's part with `lo < z ≤ hi` as a polygon, each corner with

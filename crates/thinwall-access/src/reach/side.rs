@@ -122,17 +122,11 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
             if face.is_empty() {
                 continue;
             }
-            let p = frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r;
+            let p = scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r));
+            // Only the triangles reaching above the tip (highest first).
+            let above = cands.partition_point(|&k| scene.top(k) > p[2] + ctx.touch);
             blocks.clear();
-            blocked(
-                scene,
-                &cands,
-                scene.local(&p),
-                e2,
-                tool,
-                ctx.touch,
-                &mut blocks,
-            );
+            blocked(scene, &cands[..above], p, e2, tool, ctx.touch, &mut blocks);
             let stop = merge(blocks.iter().map(|b| b.span).collect());
             let weight = wt * half;
             out.area += weight * length(&face);
