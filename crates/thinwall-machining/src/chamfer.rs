@@ -12,7 +12,8 @@
 //! its axis and a coaxial cylinder and is shorter along the axis than the
 //! cylinder's radius or is at 45° (a longer, steeper or flatter cone is a
 //! countersink, part of its hole),
-//! or when it carries a chain of planar bevels round a curved edge.
+//! or when it carries a chain of planar bevels round a curved edge. A
+//! plane coplanar with a planar bevel it meets smoothly is a piece of it.
 
 use crate::{MachiningFeature, Stock};
 use thinwall_analysis::polygon::min_rect_sides;
@@ -36,7 +37,7 @@ const ELONGATED: f64 = 3.0;
 /// Whether face `f` is a chamfer (module docs).
 pub(crate) fn is_chamfer(a: &PartAnalysis, f: FaceId) -> bool {
     match a.part().face(f).surface {
-        Surface::Plane { .. } => is_planar_bevel(a, f),
+        Surface::Plane { .. } => is_planar_bevel(a, f) || is_bevel_piece(a, f),
         Surface::Cone { .. } => is_conical_bevel(a, f) || is_bevel_corner(a, f),
         _ => false,
     }
@@ -51,6 +52,21 @@ pub(crate) fn is_bevel_corner(a: &PartAnalysis, f: FaceId) -> bool {
                 && matches!(a.part().face(g).surface, Surface::Plane { .. })
                 && is_planar_bevel(a, g)
         })
+}
+
+/// A piece of a planar bevel split along a smooth edge (a sliver the
+/// modeller left beside it): coplanar with a bevel it meets smoothly.
+fn is_bevel_piece(a: &PartAnalysis, f: FaceId) -> bool {
+    let Some(n) = a.props(f).normal else {
+        return false;
+    };
+    a.graph().neighbours(f).any(|(g, adj)| {
+        adj.convexity == Convexity::Smooth
+            && a.props(g)
+                .normal
+                .is_some_and(|m| n.dot(&m) > 1.0 - NEAR_PARALLEL_EPS)
+            && is_planar_bevel(a, g)
+    })
 }
 
 fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
