@@ -205,6 +205,51 @@ impl<'g> GroupShape<'g> {
         }
     }
 
+    /// Whether the group is what is left of a through hole that another
+    /// hole crosses: concave cylinders on parallel axes only, entered and
+    /// left through block faces square to them, and along their length
+    /// meeting (convexly) only other features' faces parallel to the axis,
+    /// at least one of them another hole. A circular slot's edges meet the
+    /// block instead.
+    fn crossing_holes_piece(&self, a: &PartAnalysis) -> bool {
+        let first = self.cylinders[0];
+        let tol = a.tol().feature * 100.0;
+        let parallel = |c: &Cylinder| c.axis.dot(&first.axis).abs() > 1.0 - NEAR_PARALLEL_EPS;
+        if !self
+            .group
+            .iter()
+            .all(|&f| a.concave_cylinder(f).is_some_and(|c| parallel(&c)))
+        {
+            return false;
+        }
+        let mut other_hole = false;
+        for &f in self.group {
+            for (g, adj) in a.graph().neighbours(f) {
+                if self.group.contains(&g) {
+                    continue;
+                }
+                let across = a.props(g).normal.map(|n| n.dot(&first.axis).abs());
+                let on_block = self.stock.plane_of(a, g).is_some();
+                let fits = match (a.concave_cylinder(g), across) {
+                    (_, Some(c)) if c > 1.0 - NEAR_PARALLEL_EPS => on_block,
+                    (_, Some(c)) => {
+                        c < NEAR_PARALLEL_EPS && !on_block && adj.convexity == Convexity::Convex
+                    }
+                    (Some(h), None) => {
+                        let other = parallel(&h) && !h.coaxial(&first, tol);
+                        other_hole |= other;
+                        parallel(&h) && adj.convexity == Convexity::Convex
+                    }
+                    (None, None) => false,
+                };
+                if !fits {
+                    return false;
+                }
+            }
+        }
+        other_hole
+    }
+
     /// Groups with concave cylinders: holes, O-rings, circular slots,
     /// steps and pocket ends.
     fn curved_typing(&self, a: &PartAnalysis) -> Typed {
@@ -272,6 +317,8 @@ impl<'g> GroupShape<'g> {
                 _ => None,
             };
             typed(kind, through, profile, name)
+        } else if walls.is_empty() && !floor && self.crossing_holes_piece(a) {
+            typed(Hole, true, Profile::Circular, Some(C::ThroughHole))
         } else if walls.len() <= 1 && !floor && half && sweeps.len() == 1 {
             // A half circle through the part (one plane beside it: where
             // material beyond the edge closed its open side lower down).
