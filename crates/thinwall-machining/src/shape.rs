@@ -22,6 +22,10 @@ const QUARTER_SLACK_DEG: f64 = 2.0;
 /// Coaxial concave cylinders sweeping this much together are a hole (a
 /// full circle less its boundary sampling), degrees.
 const FULL_SWEEP_DEG: f64 = 300.0;
+/// What is left of a hole that another feature (not a hole) cuts sweeps
+/// at least this much: a circular slot's round floor is half a circle at
+/// most, degrees.
+const CUT_HOLE_SWEEP_DEG: f64 = 200.0;
 
 /// A floor outline filling less of its minimum rectangle than this is a
 /// triangle (a right triangle fills ½).
@@ -205,20 +209,26 @@ impl<'g> GroupShape<'g> {
         }
     }
 
-    /// Whether the group is what is left of a through hole that another
-    /// hole crosses: concave cylinders on parallel axes only, entered and
-    /// left through block faces square to them, and along their length
-    /// meeting (convexly) only other features' faces parallel to the axis,
-    /// at least one of them another hole. A circular slot's edges meet the
-    /// block instead.
+    /// Whether the group is what is left of a hole that another hole
+    /// crosses: concave cylinders on parallel axes (and the bottom, a plane
+    /// square to them, when blind), entered through block faces square to
+    /// them, and along their length meeting (convexly) only other
+    /// features' faces parallel to the axis: at least one of them another
+    /// hole, or more than half the circle left. A circular slot's edges
+    /// meet the block instead, and its arc is half a circle at most.
     fn crossing_holes_piece(&self, a: &PartAnalysis) -> bool {
         let first = self.cylinders[0];
         let tol = a.tol().feature * 100.0;
         let parallel = |c: &Cylinder| c.axis.dot(&first.axis).abs() > 1.0 - NEAR_PARALLEL_EPS;
+        let bottom = |f: FaceId| {
+            a.props(f)
+                .normal
+                .is_some_and(|n| n.dot(&first.axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
+        };
         if !self
             .group
             .iter()
-            .all(|&f| a.concave_cylinder(f).is_some_and(|c| parallel(&c)))
+            .all(|&f| a.concave_cylinder(f).is_some_and(|c| parallel(&c)) || bottom(f))
         {
             return false;
         }
@@ -247,7 +257,16 @@ impl<'g> GroupShape<'g> {
                 }
             }
         }
-        other_hole
+        let sweep: f64 = self
+            .group
+            .iter()
+            .filter(|&&f| {
+                a.concave_cylinder(f)
+                    .is_some_and(|c| c.coaxial(&first, tol))
+            })
+            .filter_map(|&f| a.cylinder_sweep_deg(f))
+            .sum();
+        other_hole || sweep >= CUT_HOLE_SWEEP_DEG
     }
 
     /// Groups with concave cylinders: holes, O-rings, circular slots,
@@ -317,8 +336,9 @@ impl<'g> GroupShape<'g> {
                 _ => None,
             };
             typed(kind, through, profile, name)
-        } else if walls.is_empty() && !floor && self.crossing_holes_piece(a) {
-            typed(Hole, true, Profile::Circular, Some(C::ThroughHole))
+        } else if walls.is_empty() && self.crossing_holes_piece(a) {
+            let name = if floor { C::BlindHole } else { C::ThroughHole };
+            typed(Hole, !floor, Profile::Circular, Some(name))
         } else if walls.len() <= 1 && !floor && half && sweeps.len() == 1 {
             // A half circle through the part (one plane beside it: where
             // material beyond the edge closed its open side lower down).
