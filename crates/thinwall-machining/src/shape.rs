@@ -462,7 +462,9 @@ impl<'g> GroupShape<'g> {
             }
             Some(_) if w == 3 && parallel && square => (Slot, false, P::Rectangular),
             Some(_) => (Pocket, false, sides),
-            None if closed => {
+            // A ring of walls (or what is left of one where another cut
+            // split a wall): a passage, unless a slot closed lower down.
+            None if w >= 3 => {
                 match closed_slot::slot_walls(a, self.group, &self.planes, &wall_faces) {
                     Some(rest) => through_slot(&rest),
                     None => (Passage, true, sides),
@@ -470,7 +472,6 @@ impl<'g> GroupShape<'g> {
             }
             None if w == 2 && parallel => (Slot, true, P::Rectangular),
             None if w == 2 => (Slot, true, P::Triangular),
-            None if w >= 3 => (Passage, true, sides),
             None => (Slot, true, P::Free),
         }
     }
