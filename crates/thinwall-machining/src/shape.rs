@@ -382,6 +382,15 @@ impl<'g> GroupShape<'g> {
                 Profile::CircularEnd,
                 Some(C::HCircularEndBlindSlot),
             )
+        } else if self.touched.len() >= 2 {
+            // An end cut short by another feature, open to a second block
+            // face: what is left of a slot with a round end.
+            typed(
+                Slot,
+                false,
+                Profile::CircularEnd,
+                Some(C::VCircularEndBlindSlot),
+            )
         } else {
             // Ends cut short by another feature: what is left of a pocket.
             typed(
