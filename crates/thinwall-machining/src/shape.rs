@@ -257,16 +257,22 @@ impl<'g> GroupShape<'g> {
                 }
             }
         }
-        let sweep: f64 = self
-            .group
+        other_hole || self.round_sweep(a) >= CUT_HOLE_SWEEP_DEG
+    }
+
+    /// How far round, together, the concave cylinders on the first one's
+    /// axis go, degrees.
+    fn round_sweep(&self, a: &PartAnalysis) -> f64 {
+        let first = self.cylinders[0];
+        let tol = a.tol().feature * 100.0;
+        self.group
             .iter()
             .filter(|&&f| {
                 a.concave_cylinder(f)
                     .is_some_and(|c| c.coaxial(&first, tol))
             })
             .filter_map(|&f| a.cylinder_sweep_deg(f))
-            .sum();
-        other_hole || sweep >= CUT_HOLE_SWEEP_DEG
+            .sum()
     }
 
     /// Groups with concave cylinders: holes, O-rings, circular slots,
@@ -303,15 +309,7 @@ impl<'g> GroupShape<'g> {
             .filter(|&&f| a.concave_cylinder(f).is_some())
             .filter_map(|&f| a.cylinder_sweep_deg(f))
             .collect();
-        let round_sweep: f64 = self
-            .group
-            .iter()
-            .filter(|&&f| {
-                a.concave_cylinder(f)
-                    .is_some_and(|c| c.coaxial(&first, tol))
-            })
-            .filter_map(|&f| a.cylinder_sweep_deg(f))
-            .sum();
+        let round_sweep = self.round_sweep(a);
         let halves = sweeps.iter().filter(|&&s| s >= HALF_SWEEP_DEG).count();
         let tangent_wall = walls.iter().any(|&w| {
             a.graph().neighbours(w).any(|(g, adj)| {
