@@ -317,6 +317,9 @@ impl<'g> GroupShape<'g> {
             })
         });
         let half = halves > 0;
+        let quarters = sweeps
+            .iter()
+            .all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG);
         let typed = |kind, through, profile, catalog| Typed {
             kind,
             through,
@@ -346,6 +349,15 @@ impl<'g> GroupShape<'g> {
         } else if walls.is_empty() {
             let name = (!half).then_some(C::CircularBlindStep);
             typed(Step, false, Profile::Circular, name)
+        } else if !floor && walls.len() == 1 && tangent_wall && quarters {
+            // Quarter circles either side of one face they run into, their
+            // axes along it: the same slot lying on its side.
+            typed(
+                Slot,
+                false,
+                Profile::CircularEnd,
+                Some(C::HCircularEndBlindSlot),
+            )
         } else if !floor {
             typed(Slot, true, Profile::CircularEnd, None)
         } else if halves >= 1 && sweeps.len() >= 2 {
@@ -368,10 +380,7 @@ impl<'g> GroupShape<'g> {
             // angle (cut by another feature), not a slot's ends running
             // into its back wall.
             typed(Step, false, Profile::Circular, Some(C::CircularBlindStep))
-        } else if sweeps
-            .iter()
-            .all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG)
-        {
+        } else if quarters {
             // Quarter circles at its ends: half an obround, cut lengthwise
             // by the side it opens to.
             typed(
