@@ -34,7 +34,7 @@ fn is_groove_core(a: &PartAnalysis, group: &[FaceId]) -> bool {
     let Some(c) = a.cylinder(group[0]) else {
         return false;
     };
-    let tol = a.tol().feature * 100.0;
+    let tol = crate::axis_tol(a);
     group
         .iter()
         .flat_map(|&f| a.graph().neighbours(f))

@@ -139,7 +139,7 @@ fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
     let cylinder = a.graph().neighbours(f).find_map(|(g, _)| {
         a.cylinder(g).filter(|c| {
             c.axis.dot(&axis).abs() > 1.0 - NEAR_PARALLEL_EPS
-                && (c.origin - frame.origin).cross(&axis).norm() < a.tol().feature * 100.0
+                && (c.origin - frame.origin).cross(&axis).norm() < crate::axis_tol(a)
         })
     });
     // A symmetric bevel (45°) of any size is a chamfer; a steeper or

@@ -41,7 +41,7 @@ impl<'r> Ring<'r> {
             walls,
             wall_planes: BTreeSet::new(),
             axis: Vector3::zeros(),
-            tol: a.tol().feature * 10.0,
+            tol: crate::plane_tol(a),
         };
         ring.wall_planes = walls.iter().filter_map(|&f| ring.plane_of(f)).collect();
         let normals: Vec<Vector3> = ring.wall_planes.iter().map(|&p| planes[p].0).collect();

@@ -30,7 +30,7 @@ fn split_by_one(
     x: &[PlaneFace],
     y: &[PlaneFace],
 ) -> bool {
-    let tol = a.tol().feature * 10.0;
+    let tol = crate::plane_tol(a);
     let coplanar = |p: &PlaneFace, q: &PlaneFace| same_plane(a, &p.plane, &q.plane);
     let below = |k: usize, p: &PlaneFace| {
         let (n, offset) = p.plane;

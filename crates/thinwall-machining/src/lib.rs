@@ -152,10 +152,22 @@ pub(crate) fn face_plane(a: &PartAnalysis, f: FaceId) -> Option<Plane> {
     Some((n, n.dot(&a.props(f).centroid.coords)))
 }
 
-/// Whether two planes are one, facing the same way (within ten times the
-/// feature tolerance).
+/// Two planes facing the same way are one within this, mm: ten feature
+/// tolerances.
+pub(crate) fn plane_tol(a: &PartAnalysis) -> f64 {
+    a.tol().feature * 10.0
+}
+
+/// Two cylinders (or a cylinder and a point) share an axis line within
+/// this, mm: a hundred feature tolerances.
+pub(crate) fn axis_tol(a: &PartAnalysis) -> f64 {
+    a.tol().feature * 100.0
+}
+
+/// Whether two planes are one, facing the same way (within
+/// [`plane_tol`]).
 pub(crate) fn same_plane(a: &PartAnalysis, (n, o): &Plane, (m, p): &Plane) -> bool {
-    same_direction(n, m) && (o - p).abs() < a.tol().feature * 10.0
+    same_direction(n, m) && (o - p).abs() < plane_tol(a)
 }
 
 /// A lone face at least this share of the block's largest extent long is a

@@ -216,9 +216,10 @@ impl<'g> GroupShape<'g> {
     /// features' faces parallel to the axis: at least one of them another
     /// hole, or more than half the circle left. A circular slot's edges
     /// meet the block instead, and its arc is half a circle at most.
-    fn crossing_holes_piece(&self, a: &PartAnalysis) -> bool {
+    /// `round_sweep`: [`Self::round_sweep`].
+    fn crossing_holes_piece(&self, a: &PartAnalysis, round_sweep: f64) -> bool {
         let first = self.cylinders[0];
-        let tol = a.tol().feature * 100.0;
+        let tol = crate::axis_tol(a);
         let parallel = |c: &Cylinder| c.axis.dot(&first.axis).abs() > 1.0 - NEAR_PARALLEL_EPS;
         let bottom = |f: FaceId| {
             a.props(f)
@@ -245,26 +246,25 @@ impl<'g> GroupShape<'g> {
                     (_, Some(c)) => {
                         c < NEAR_PARALLEL_EPS && !on_block && adj.convexity == Convexity::Convex
                     }
-                    (Some(h), None) => {
-                        let other = parallel(&h) && !h.coaxial(&first, tol);
-                        other_hole |= other;
-                        parallel(&h) && adj.convexity == Convexity::Convex
+                    (Some(h), None) if parallel(&h) => {
+                        other_hole |= !h.coaxial(&first, tol);
+                        adj.convexity == Convexity::Convex
                     }
-                    (None, None) => false,
+                    (_, None) => false,
                 };
                 if !fits {
                     return false;
                 }
             }
         }
-        other_hole || self.round_sweep(a) >= CUT_HOLE_SWEEP_DEG
+        other_hole || round_sweep >= CUT_HOLE_SWEEP_DEG
     }
 
     /// How far round, together, the concave cylinders on the first one's
     /// axis go, degrees.
     fn round_sweep(&self, a: &PartAnalysis) -> f64 {
         let first = self.cylinders[0];
-        let tol = a.tol().feature * 100.0;
+        let tol = crate::axis_tol(a);
         self.group
             .iter()
             .filter(|&&f| {
@@ -280,7 +280,7 @@ impl<'g> GroupShape<'g> {
     fn curved_typing(&self, a: &PartAnalysis) -> Typed {
         use MachiningKind::*;
         let first = self.cylinders[0];
-        let tol = a.tol().feature * 100.0;
+        let tol = crate::axis_tol(a);
         let normal_along = |f: FaceId, across: bool| {
             a.props(f).normal.is_some_and(|n| {
                 let c = n.dot(&first.axis).abs();
@@ -337,7 +337,7 @@ impl<'g> GroupShape<'g> {
                 _ => None,
             };
             typed(kind, through, profile, name)
-        } else if walls.is_empty() && self.crossing_holes_piece(a) {
+        } else if walls.is_empty() && self.crossing_holes_piece(a, round_sweep) {
             let name = if floor { C::BlindHole } else { C::ThroughHole };
             typed(Hole, !floor, Profile::Circular, Some(name))
         } else if walls.len() <= 1 && !floor && half && sweeps.len() == 1 {

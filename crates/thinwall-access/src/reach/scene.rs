@@ -191,12 +191,18 @@ pub fn blocked(
         }
         // Wholly to one side of the line, farther than the holder's radius.
         let off = t.p.map(|p| e[0] * (p[1] - q[1]) - e[1] * (p[0] - q[0]));
-        if off.iter().all(|&d| d >= big) || off.iter().all(|&d| d <= -big) {
+        let (least, most) = (
+            off[0].min(off[1]).min(off[2]),
+            off[0].max(off[1]).max(off[2]),
+        );
+        let farther = |d: f64| least >= d || most <= -d;
+        if farther(big) {
             continue;
         }
+        // Wholly to one side, farther than the cutter's radius: only the
+        // holder can meet it.
         let rho = r - touch;
-        let near_cutter = !(off.iter().all(|&d| d >= rho) || off.iter().all(|&d| d <= -rho));
-        if near_cutter && t.lo[2] <= top {
+        if !farther(rho) && t.lo[2] <= top {
             let (low, n) = clip(&t.p, h + touch, top);
             if let Some(span) = line_near_convex(q, e, &low[..n], rho) {
                 out.push(Block {
