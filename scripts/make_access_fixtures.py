@@ -16,6 +16,10 @@ values in docs/ACCESS.md):
     10 wide (x 10..20) and one 24 wide (x 30..54), both y 5..35.
   overhang.step: a 100 x 60 x 10 plate, a wall x 0..10 to z 50 and a shelf
     from its top x 10..40, z 40..50, over the plate's top face.
+  rounded_pocket.step: an 80 x 50 x 20 block with a closed pocket 40 x 30
+    (x 10..50, y 10..40), 10 deep, its four upright corners rounded R5, and
+    a through hole D8 at (65, 25): the largest tool that reaches the whole
+    pocket is D10 (twice the corner radius), the hole's D8.
 
 Harik & Ris's worked case rebuilt (their figures 6 and 10-13 are not in the
 text we have: a semi-open planar face with three closed linear edges, so
@@ -35,7 +39,13 @@ sys.path.insert(0, os.path.dirname(__file__))
 from make_recognition_fixtures import box, cut, fuse, write  # noqa: E402
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakePolygon  # noqa: E402
 from OCP.BRepPrimAPI import BRepPrimAPI_MakePrism  # noqa: E402
-from OCP.gp import gp_Pnt, gp_Vec  # noqa: E402
+from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt, gp_Vec  # noqa: E402
+from OCP.BRepAdaptor import BRepAdaptor_Curve  # noqa: E402
+from OCP.BRepFilletAPI import BRepFilletAPI_MakeFillet  # noqa: E402
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder  # noqa: E402
+from OCP.TopAbs import TopAbs_EDGE  # noqa: E402
+from OCP.TopExp import TopExp_Explorer  # noqa: E402
+from OCP.TopoDS import TopoDS  # noqa: E402
 
 
 def prism_z(points, z0, z1):
@@ -55,6 +65,21 @@ def bay_with_lip():
     return fuse(block, box(40, -40, 4, 50, -10, 8))
 
 
+def rounded_pocket():
+    cutter = box(10, 10, 10, 50, 40, 30)
+    fillet = BRepFilletAPI_MakeFillet(cutter)
+    e = TopExp_Explorer(cutter, TopAbs_EDGE)
+    while e.More():
+        edge = TopoDS.Edge(e.Current())
+        c = BRepAdaptor_Curve(edge)
+        p, q = c.Value(c.FirstParameter()), c.Value(c.LastParameter())
+        if abs(p.X() - q.X()) < 1e-9 and abs(p.Y() - q.Y()) < 1e-9:
+            fillet.Add(5.0, edge)
+        e.Next()
+    hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(65, 25, -5), gp_Dir(0, 0, 1)), 4.0, 30).Shape()
+    return cut(box(0, 0, 0, 80, 50, 20), fillet.Shape(), hole)
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/access"
     os.makedirs(out, exist_ok=True)
@@ -67,6 +92,7 @@ def main():
     shelf = fuse(box(0, 0, 0, 100, 60, 10), box(0, 0, 10, 10, 60, 50), box(10, 0, 40, 40, 60, 50))
     write(shelf, os.path.join(out, "overhang.step"))
     write(bay_with_lip(), os.path.join(out, "bay_with_lip.step"))
+    write(rounded_pocket(), os.path.join(out, "rounded_pocket.step"))
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@ mod common;
 
 use thinwall_access::reach::{reach, Contact, FaceReach, ReachOptions, Tool, ToolPart};
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
+use thinwall_brep::tessellate::RELATIVE_DEVIATION;
 use thinwall_brep::Part;
 
 fn read(name: &str) -> (Part, String) {
@@ -458,4 +459,61 @@ fn largest_tool_fits(path: &std::path::Path, part: &Part, faces: &[FaceReach]) -
         }
     }
     checked
+}
+
+/// The largest tool per machining feature (rounded_pocket.step, hand
+/// values in docs/ACCESS.md): a closed 40 × 30 pocket with R5 upright
+/// corners is reached whole by Ø10 (twice the corner radius), bounded by a
+/// wall beside a corner, though Ø30 fits its floor; the Ø8 hole by Ø8.
+/// Tessellated material touches the tool within twice the tessellation's
+/// deviation (0.19 mm here), which a diameter may gain twice over, and the
+/// search's step is 0.5 %. The same as built and on turned copies.
+#[test]
+fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
+    let path = common::root().join("fixtures/access/rounded_pocket.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let opts = ReachOptions {
+        largest_tool: true,
+        ..ReachOptions::default()
+    };
+    for pose in poses() {
+        let part = posed_part(&text, &pose);
+        let up = pose.up();
+        let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
+        let mesh = thinwall_brep::tessellate::part_mesh(&part);
+        let faces = reach(&a, &mesh, &opts).unwrap();
+        let req = thinwall_pipeline::Request {
+            setup: Setup::new(up, Machine::ThreeAxis).unwrap(),
+            allow_open: true,
+            ..Default::default()
+        };
+        let out = thinwall_pipeline::run(&part, None, &req).unwrap();
+        let tools = thinwall_access::reach::features::feature_tools(&out.machining, &faces);
+        let of = |kind| {
+            tools
+                .iter()
+                .find(|t| t.kind == kind)
+                .unwrap_or_else(|| panic!("no {kind:?} in {tools:?}"))
+        };
+        let touch = 2.0 * RELATIVE_DEVIATION * part.bounding_box().diagonal();
+        let near = |got: Option<f64>, want: f64, what: &str| {
+            let got = got.unwrap_or_else(|| panic!("{what}: no tool"));
+            assert!(
+                (got - want).abs() <= 2.0 * touch + 0.005 * want,
+                "{what}: Ø{got}, want Ø{want}"
+            );
+        };
+        let pocket = of(thinwall_analysis::MachiningKind::Pocket);
+        near(pocket.largest_tool_mm, 10.0, "pocket");
+        near(pocket.floors_mm, 10.0, "pocket floor");
+        close(pocket.fits_mm.unwrap(), 30.0, 1e-6, "pocket fits");
+        let wall = faces
+            .iter()
+            .find(|f| Some(f.face) == pocket.bounded_by)
+            .unwrap();
+        assert_eq!(wall.contact, Contact::Side, "bounded by a wall");
+        let hole = of(thinwall_analysis::MachiningKind::Hole);
+        near(hole.largest_tool_mm, 8.0, "hole");
+        close(hole.fits_mm.unwrap(), 8.0, 1e-6, "hole fits");
+    }
 }

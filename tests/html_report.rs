@@ -262,7 +262,11 @@ fn access_page_colours_every_planar_face_and_outlines_g_zones() {
         setup.up,
         options,
         faces,
-        (settings, reached, Default::default()),
+        settings,
+        thinwall_report::access::ReachResult {
+            faces: reached,
+            ..Default::default()
+        },
     );
     let page = html::access_page("access", &a, &report);
     assert_self_contained(&page);

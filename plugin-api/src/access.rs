@@ -10,7 +10,7 @@ use std::ffi::c_char;
 use thinwall_access::reach::{self, ReachOptions, Tool};
 use thinwall_access::{FlankOptions, Nature};
 use thinwall_analysis::PartAnalysis;
-use thinwall_report::access::{AccessReport, ReachSettings};
+use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
 
 /// An accessibility result (opaque). Immutable; safe to share between
 /// threads.
@@ -86,7 +86,7 @@ pub unsafe extern "C" fn tw_access(
         request.allow_open = true;
         let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &request)
             .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
-        let sides = reach::walls::wall_sides(&a, &outcome.recognition, &reached, tool.diameter);
+        let tool_diameter = tool.diameter;
         let settings = ReachSettings {
             tool,
             machine: setup.machine,
@@ -97,7 +97,8 @@ pub unsafe extern "C" fn tw_access(
                 setup.up,
                 options,
                 faces,
-                (settings, reached, sides),
+                settings,
+                ReachResult::new(&a, reached, &outcome, tool_diameter),
             ),
         })
     })

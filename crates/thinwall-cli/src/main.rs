@@ -574,25 +574,18 @@ fn access_command(
         ..Default::default()
     };
     let outcome = thinwall_pipeline::run(&model, None, &request)?;
-    let sides = thinwall_access::reach::walls::wall_sides(
-        &a,
-        &outcome.recognition,
-        &reached,
-        tool.diameter,
-    );
+    let reach_result =
+        thinwall_report::access::ReachResult::new(&a, reached, &outcome, tool.diameter);
     let report = thinwall_report::access::AccessReport::new(
         &part.display().to_string(),
         setup.up,
         options,
         faces,
-        (
-            thinwall_report::access::ReachSettings {
-                tool,
-                machine: reach.machine,
-            },
-            reached,
-            sides,
-        ),
+        thinwall_report::access::ReachSettings {
+            tool,
+            machine: reach.machine,
+        },
+        reach_result,
     );
     let text = match format {
         AccessFormat::Text => report.to_text(),

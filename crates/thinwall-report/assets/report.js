@@ -627,13 +627,22 @@
     const tool = rep.reach.tool;
     const toolText = 'Ø' + fmt(tool.diameter) + ' mm, cutting ' + fmt(tool.cutting_length) + ' mm, holder Ø' + fmt(tool.holder_diameter) + ' mm';
     const machine = rep.reach.machine.class === 'five_axis' ? 'five axes, tilt ≤ ' + fmt(rep.reach.machine.tilt_limit_deg) + '°' : 'three axes';
+    // Each machining feature's largest tool, beside the floor's own bound.
+    function featureTools() {
+      const feats = rep.features || [];
+      if (!feats.length) return [];
+      const dia = (d) => (d != null ? 'Ø' + fmt(d) : '—');
+      const table = el('table', null, el('tr', null, el('td', null, 'feature'), el('td', null, 'largest tool (face bounding it)'), el('td', null, 'fits the floor')));
+      for (const m of feats) table.append(el('tr', null, el('td', null, m.feature + ' ' + m.kind), el('td', null, dia(m.largest_tool_mm) + (m.bounded_by != null ? ' (#' + m.bounded_by + ')' : '')), el('td', null, dia(m.fits_mm))));
+      return [el('h3', null, 'Largest tool reaching each machining feature whole'), table];
+    }
     return {
       name: 'Reach',
       enter() {
         part.group.visible = true;
         legend([['reached whole', P['reach.whole']], ['75 % or more', P['reach.most']], ['partly', P['reach.part']], ['not reached', P['reach.none']]]);
         this.list(); this.paint();
-        if (!selected) details('Reach', [['tool', toolText], ['machine', machine], ['faces', String(faces.length)], ['reached whole', String(faces.filter((f) => f.fraction >= WHOLE).length)], ['not reached', String(faces.filter((f) => f.fraction <= 0).length)]], [el('p', { class: 'muted' }, 'Faces coloured by the share the tool reaches without the cutter or holder cutting into the part. Choose a face: the part it does not reach is outlined red.')]);
+        if (!selected) details('Reach', [['tool', toolText], ['machine', machine], ['faces', String(faces.length)], ['reached whole', String(faces.filter((f) => f.fraction >= WHOLE).length)], ['not reached', String(faces.filter((f) => f.fraction <= 0).length)]], [el('p', { class: 'muted' }, 'Faces coloured by the share the tool reaches without the cutter or holder cutting into the part. Choose a face: the part it does not reach is outlined red.'), ...featureTools()]);
       },
       leave() { marks.clear(); },
       list() {

@@ -7,16 +7,43 @@
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use thinwall_access::reach::walls::SideReach;
+use thinwall_access::reach::features::{feature_tools, FeatureTool};
+use thinwall_access::reach::walls::{wall_sides, SideReach};
 use thinwall_access::reach::{FaceReach, Tool};
 use thinwall_access::{FlankOptions, Nature, PlanarFaceAccess};
-use thinwall_analysis::{FeatureId, Machine};
+use thinwall_analysis::{FeatureId, Machine, PartAnalysis};
 
 /// What reach was judged with.
 #[derive(Clone, Debug, Serialize)]
 pub struct ReachSettings {
     pub tool: Tool,
     pub machine: Machine,
+}
+
+/// Reach of the part's faces, with what follows from it for its walls and
+/// machining features.
+#[derive(Clone, Debug, Default)]
+pub struct ReachResult {
+    pub faces: Vec<FaceReach>,
+    pub wall_sides: BTreeMap<FeatureId, [SideReach; 2]>,
+    pub features: Vec<FeatureTool>,
+}
+
+impl ReachResult {
+    /// From every face's reach (`faces`, the largest-tool search on) and
+    /// the pipeline's recognition and machining features of the same part.
+    pub fn new(
+        a: &PartAnalysis,
+        faces: Vec<FaceReach>,
+        outcome: &thinwall_pipeline::Outcome,
+        tool_diameter: f64,
+    ) -> Self {
+        Self {
+            wall_sides: wall_sides(a, &outcome.recognition, &faces, tool_diameter),
+            features: feature_tools(&outcome.machining, &faces),
+            faces,
+        }
+    }
 }
 
 /// Version tag of the JSON layout.
@@ -37,6 +64,9 @@ pub struct AccessReport {
     pub faces: Vec<FaceReach>,
     /// Each wall's two sides (by feature id of the recognition report).
     pub wall_sides: BTreeMap<FeatureId, [SideReach; 2]>,
+    /// Each machining feature's largest tool along up (by id of the
+    /// recognition report's machining features).
+    pub features: Vec<FeatureTool>,
     /// What this report does not cover yet.
     pub not_yet: Vec<String>,
 }
@@ -47,13 +77,9 @@ impl AccessReport {
         up: [f64; 3],
         options: FlankOptions,
         planar_faces: Vec<PlanarFaceAccess>,
-        reach: (
-            ReachSettings,
-            Vec<FaceReach>,
-            BTreeMap<FeatureId, [SideReach; 2]>,
-        ),
+        settings: ReachSettings,
+        reach: ReachResult,
     ) -> Self {
-        let (settings, faces, wall_sides) = reach;
         Self {
             schema: ACCESS_SCHEMA.to_string(),
             thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -62,10 +88,10 @@ impl AccessReport {
             flank_milling: options,
             planar_faces,
             reach: settings,
-            faces,
-            wall_sides,
+            faces: reach.faces,
+            wall_sides: reach.wall_sides,
+            features: reach.features,
             not_yet: vec![
-                "the largest tool is searched for floors only".into(),
                 "five axes: up and 24 tilted axes are tried, not every axis within the limit"
                     .into(),
             ],
@@ -155,12 +181,17 @@ impl AccessReport {
             }
             s.push('\n');
         }
-        for f in self.faces.iter().filter(|f| f.largest_tool_mm.is_some()) {
+        let mm = |d: Option<f64>| d.map_or("none".to_string(), |d| format!("Ø{d:.2}"));
+        for m in &self.features {
             let _ = writeln!(
                 s,
-                "  #{:<6} floor: largest tool reaching it whole Ø{:.2} mm",
-                f.face,
-                f.largest_tool_mm.unwrap_or(0.0)
+                "  {:<5} {:<9} largest tool reaching it whole {} mm (bounded by #{}), floors {}, fits {}",
+                m.feature.to_string(),
+                format!("{:?}", m.kind).to_lowercase(),
+                mm(m.largest_tool_mm),
+                m.bounded_by.map_or("-".to_string(), |f| f.to_string()),
+                mm(m.floors_mm),
+                mm(m.fits_mm),
             );
         }
         for (id, sides) in &self.wall_sides {

@@ -66,7 +66,11 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
         [l.x, l.y]
     };
     let (small_disk, holder_disk) = (disk(r), disk(big));
+    // Tessellated material touches within its own tolerance.
+    let slack = ctx.touch_tessellated();
+    let (small_tess, holder_tess) = (disk((r - slack).max(0.0)), disk((big - slack).max(0.0)));
     let mut obstacles: BTreeMap<(u32, bool), Obstacle> = BTreeMap::new();
+    let mut tessellated: BTreeMap<u32, bool> = BTreeMap::new();
     let top = h + tool.cutting_length;
     for k in scene.near(lo, hi, h + ctx.touch) {
         let t = &scene.tris[k as usize];
@@ -79,6 +83,7 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
         ] {
             let clipped = clip_tagged(&t.p, a, b);
             if !clipped.is_empty() {
+                tessellated.insert(t.face, t.tessellated);
                 obstacles
                     .entry((t.face, holder))
                     .or_default()
@@ -89,7 +94,12 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
     let groups: Vec<((u32, bool), MultiPolygon<f64>)> = obstacles
         .into_iter()
         .map(|((face, holder), ob)| {
-            let d = if holder { &holder_disk } else { &small_disk };
+            let d = match (holder, tessellated.get(&face) == Some(&true)) {
+                (false, false) => &small_disk,
+                (false, true) => &small_tess,
+                (true, false) => &holder_disk,
+                (true, true) => &holder_tess,
+            };
             ((face, holder), ob.grown(d))
         })
         .collect();

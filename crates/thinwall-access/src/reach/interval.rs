@@ -44,6 +44,40 @@ pub fn line_near_convex(q0: [f64; 2], e: [f64; 2], pts: &[[f64; 2]], rho: f64) -
     (hi > lo).then_some((lo, hi))
 }
 
+/// Whether `q` lies closer than `rho` to the convex polygon `pts` (its
+/// corners in order either way round, or a segment, or a point): inside
+/// it, or within `rho` of its outline. [`line_near_convex`] for one point.
+pub fn point_near_convex(q: [f64; 2], pts: &[[f64; 2]], rho: f64) -> bool {
+    if rho <= 0.0 || pts.is_empty() {
+        return false;
+    }
+    let n = pts.len();
+    let (mut left, mut right) = (0, 0);
+    let mut near2 = f64::INFINITY;
+    for k in 0..n {
+        let (a, b) = (pts[k], pts[(k + 1) % n]);
+        let (d, w) = (sub(b, a), sub(q, a));
+        let side = cross(d, w);
+        if side > 0.0 {
+            left += 1;
+        } else if side < 0.0 {
+            right += 1;
+        }
+        let len2 = dot(d, d);
+        let t = if len2 > 0.0 {
+            (dot(w, d) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let off = [w[0] - t * d[0], w[1] - t * d[1]];
+        near2 = near2.min(dot(off, off));
+    }
+    // Inside: on one side of every edge (a polygon shrunk to a point or a
+    // segment by the clip has no inside).
+    let inside = n >= 3 && (left == 0 || right == 0) && left + right > 0;
+    inside || near2 < rho * rho
+}
+
 /// Where the axis (`across` = 0) passes within `rho` of segment `a`–`b`
 /// between its ends, in the line's frame.
 fn strip(a: [f64; 2], b: [f64; 2], rho: f64) -> Option<Span> {
@@ -173,5 +207,50 @@ mod tests {
         assert_eq!(d, vec![(0.0, 1.0), (2.0, 3.0), (5.0, 5.5)]);
         assert_eq!(length(&d), 2.5);
         assert_eq!(intersect(&a, &[(2.0, 5.5)]), vec![(2.0, 3.0), (5.0, 5.5)]);
+    }
+
+    /// The point test agrees with the line's span at the point (lo < 0 <
+    /// hi), away from ties, on random triangles, clipped shapes and
+    /// segments either way round.
+    #[test]
+    fn the_point_test_is_the_line_at_one_point() {
+        let mut seed = 7u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 20.0 - 10.0
+        };
+        let mut checked = 0;
+        for n in [1usize, 2, 3, 3, 4] {
+            for _ in 0..4000 {
+                let mut pts: Vec<[f64; 2]> = (0..n).map(|_| [rnd(), rnd()]).collect();
+                if n == 4 {
+                    // A convex quadrilateral: a square turned and moved.
+                    let (c, s, x, y) = (rnd() / 10.0, rnd() / 10.0, rnd(), rnd());
+                    pts = [[0.0, 0.0], [3.0, 0.0], [3.0, 2.0], [0.0, 2.0]]
+                        .map(|p| [x + c * p[0] - s * p[1], y + s * p[0] + c * p[1]])
+                        .to_vec();
+                }
+                let (q, rho) = ([rnd(), rnd()], rnd().abs() / 2.0);
+                let e = [1.0, 0.0];
+                let span = line_near_convex(q, e, &pts, rho);
+                let by_line = span.is_some_and(|(a, b)| a < 0.0 && b > 0.0);
+                let tie = span.is_some_and(|(a, b)| a.abs() < 1e-9 || b.abs() < 1e-9);
+                if !tie {
+                    assert_eq!(
+                        point_near_convex(q, &pts, rho),
+                        by_line,
+                        "{pts:?} {q:?} {rho}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 19_000);
+        // A triangle meeting a slab at one corner clips to that point thrice.
+        let dot3 = [[5.0, 1.0]; 3];
+        assert!(!point_near_convex([0.0, 0.0], &dot3, 3.0));
+        assert!(point_near_convex([3.0, 0.0], &dot3, 3.0));
     }
 }

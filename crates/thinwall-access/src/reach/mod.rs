@@ -19,14 +19,17 @@
 //! a face reports the axes that reach it whole, or the best and its
 //! fraction.
 
+pub mod features;
 pub mod floor;
 pub mod interval;
+pub mod largest;
 pub mod obstacle;
 pub mod sampled;
 pub mod scene;
 pub mod side;
 pub mod walls;
 
+pub use largest::{largest_tool, SMALLEST_TOOL, TOOL_PRECISION};
 use rayon::prelude::*;
 use scene::Scene;
 use serde::{Deserialize, Serialize};
@@ -229,10 +232,14 @@ pub struct Judged {
     /// mm² stopped per (mesh face, holder).
     pub blockers: BTreeMap<(u32, bool), f64>,
     pub unreachable: Vec<Vec<[f64; 3]>>,
+    /// Stopped early, more than its budget lost: the rest is not judged.
+    pub cut_short: bool,
+    /// Curved faces: the triangles not reached (indices into the face's).
+    pub lost: Vec<u32>,
 }
 
 impl Judged {
-    fn fraction(&self) -> f64 {
+    pub fn fraction(&self) -> f64 {
         if self.area > 0.0 {
             (self.reached / self.area).clamp(0.0, 1.0)
         } else {
@@ -258,6 +265,23 @@ impl Ctx {
             touch: TOUCH * size,
             touch_curved: 2.0 * RELATIVE_DEVIATION * size,
         }
+    }
+}
+
+/// Tessellated material (a curved face's triangles, or a planar face's
+/// with a curved edge) touches the tool within this share of its radius
+/// (and within twice the tessellation's deviation): the chords of a
+/// concave blend the tool runs along lie inside the arc, by
+/// R·(1 − cos 0.075) for the mesh's 0.15 rad steps, 2 % of the radius for
+/// a blend up to seven times the tool's.
+pub const TESSELLATED_TOUCH: f64 = 0.02;
+
+impl Ctx {
+    /// mm: how near tessellated material may come and only touch.
+    pub fn touch_tessellated(&self) -> f64 {
+        self.touch_curved
+            .min(TESSELLATED_TOUCH * 0.5 * self.tool.diameter)
+            .max(self.touch)
     }
 }
 
@@ -371,9 +395,22 @@ pub fn scenes(a: &PartAnalysis, mesh: &Mesh, axes: &[Vector3]) -> Vec<Scene> {
     axes.par_iter()
         .map(|ax| {
             let frame = Frame::from_axis(centre, *ax, Some(reference)).unwrap_or_else(Frame::world);
-            Scene::new(mesh, frame)
+            Scene::new(mesh, frame, |k| tessellated(a, mesh.faces[k].face))
         })
         .collect()
+}
+
+/// Whether a face's triangles only approximate it: a curved face, or a
+/// planar one with a curved edge (its outline's chords cut inside the arc).
+fn tessellated(a: &PartAnalysis, f: FaceId) -> bool {
+    let part = a.part();
+    a.planar(f).is_none()
+        || part.face(f).loops.iter().any(|&l| {
+            part.loop_(l)
+                .coedges
+                .iter()
+                .any(|c| !matches!(part.edge(c.edge).curve, CurveKind::Line { .. }))
+        })
 }
 
 /// How face `own` (mesh index) is judged on one scene.
@@ -474,9 +511,10 @@ fn face_reach(
     let note = (j.away > 0.5 * j.area && j.area > 0.0).then(|| {
         "turned away from the tool axis (an undercut): another set-up, or a tilted axis".to_string()
     });
-    let given_whole = judged[0].1.fraction() >= 1.0 - WHOLE_SHARE;
-    let largest_tool_mm = (largest && *contact == Contact::Floor)
-        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, given_whole))
+    // Not for a face turned away from up: no tool reaches it.
+    let facing = judged[0].1.away <= 0.5 * judged[0].1.area;
+    let largest_tool_mm = (largest && facing)
+        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, &judged[0].1))
         .flatten();
     FaceReach {
         face: face.step_id,
@@ -497,87 +535,4 @@ fn face_reach(
         largest_tool_mm,
         note,
     }
-}
-
-/// Smallest tool the largest-tool search tries, mm.
-pub const SMALLEST_TOOL: f64 = 0.5;
-
-/// The largest-tool search stops when the sizes that reach the floor whole
-/// and that do not are this close (relative), or 0.01 mm apart.
-pub const TOOL_PRECISION: f64 = 0.005;
-
-/// The largest tool (the run's proportions) that reaches the whole floor
-/// `own` on the scene's axis, within [`TOOL_PRECISION`]: the run's own
-/// tool brackets it (`given_whole`: whether it reached the floor whole),
-/// doubling up (to twice the face's size) or halving down until the
-/// answer changes, then bisecting in proportion. Down, the smallest tool
-/// ([`SMALLEST_TOOL`]) is tried first: a floor it cannot reach whole has
-/// no answer, found in one judgement rather than a halving each.
-/// The result is always a size judged whole.
-pub fn largest_tool(
-    a: &PartAnalysis,
-    mesh: &Mesh,
-    ctx: &Ctx,
-    scene: &Scene,
-    own: u32,
-    given_whole: bool,
-) -> Option<f64> {
-    let whole = |d: f64| {
-        let c = Ctx {
-            tool: ctx.tool.scaled(d),
-            touch: ctx.touch,
-            touch_curved: ctx.touch_curved,
-        };
-        judge(a, mesh, &c, scene, own).1.fraction() >= 1.0 - WHOLE_SHARE
-    };
-    let f = mesh.faces[own as usize].face;
-    let limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
-    let given = ctx.tool.diameter.clamp(SMALLEST_TOOL, limit);
-    // The run's own tool was judged already, unless clamped.
-    let given_reaches = if given == ctx.tool.diameter {
-        given_whole
-    } else {
-        whole(given)
-    };
-    let (mut lo, mut hi) = if given_reaches {
-        // Up: the first size that fails bounds it.
-        let mut lo = given;
-        loop {
-            if lo >= limit {
-                return Some(limit);
-            }
-            let next = (2.0 * lo).min(limit);
-            if !whole(next) {
-                break (lo, next);
-            }
-            lo = next;
-        }
-    } else {
-        // Down: none when the smallest fails (a sharp inside corner
-        // larger than the allowance); else the first size that reaches it
-        // whole bounds it.
-        if given <= SMALLEST_TOOL || !whole(SMALLEST_TOOL) {
-            return None;
-        }
-        let mut hi = given;
-        loop {
-            let next = 0.5 * hi;
-            if next <= SMALLEST_TOOL {
-                break (SMALLEST_TOOL, hi);
-            }
-            if whole(next) {
-                break (next, hi);
-            }
-            hi = next;
-        }
-    };
-    while hi / lo > 1.0 + TOOL_PRECISION && hi - lo > 0.01 {
-        let mid = (lo * hi).sqrt();
-        if whole(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(lo)
 }

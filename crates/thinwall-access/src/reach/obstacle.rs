@@ -206,7 +206,7 @@ mod tests {
         ];
         let tris: Vec<Tri> = [[0, 3, 5], [3, 1, 4], [5, 4, 2], [3, 4, 5]]
             .into_iter()
-            .map(|v: [u32; 3]| Tri::new(v.map(|i| pts[i as usize]), v, 0))
+            .map(|v: [u32; 3]| Tri::new(v.map(|i| pts[i as usize]), v, 0, false))
             .collect();
         for (lo, hi, whole_middle) in [(-1.0, 10.0, true), (-1.0, 4.0, false)] {
             let mut ob = Obstacle::default();
@@ -241,7 +241,7 @@ mod tests {
         ];
         let mut ob = Obstacle::default();
         for v in [[0u32, 1, 2], [1, 0, 3]] {
-            let t = Tri::new(v.map(|i| pts[i as usize]), v, 0);
+            let t = Tri::new(v.map(|i| pts[i as usize]), v, 0, false);
             ob.push(&t, clip_tagged(&t.p, -1.0, 10.0), |p| p);
         }
         assert!(ob.inner_edges().is_empty());

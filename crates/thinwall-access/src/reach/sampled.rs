@@ -5,19 +5,43 @@
 //! cut into any material, the face's own included (a flat end mill cannot
 //! touch the bottom of a bowl narrower than itself).
 
-use super::scene::{blocked, Block, Scene};
+use super::scene::{point_stops, Scene};
 use super::{Ctx, Judged, FLOOR_COS, UNDERCUT_SIN};
 use thinwall_brep::tessellate::Mesh;
 use thinwall_geom::Point3;
 
 pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, own: u32) -> Judged {
+    let n = mesh.faces[own as usize].triangles.len() as u32;
+    judge_some(ctx, scene, mesh, own, 0..n, f64::INFINITY)
+}
+
+/// As [`judge`], at the triangles `some` of the face only (indices into
+/// its triangles, in the order given; `area` is theirs), stopping
+/// (`cut_short`) once more than `budget` mm² is lost. A larger tool in the
+/// same proportions stops wherever a smaller one does: touching the same
+/// point, its cutter's and its holder's disks hold the smaller tool's
+/// (they touch at the point, and the holder grows with the cutter). So a
+/// search over tool sizes judges, below a size that failed, only the
+/// triangles that size left (`Judged::lost`).
+pub fn judge_some(
+    ctx: &Ctx,
+    scene: &Scene,
+    mesh: &Mesh,
+    own: u32,
+    some: impl Iterator<Item = u32>,
+    budget: f64,
+) -> Judged {
     let tool = &ctx.tool;
     let r = 0.5 * tool.diameter;
-    let reach = 0.5 * tool.holder_diameter;
+    let tris = &mesh.faces[own as usize].triangles;
     let mut out = Judged::default();
-    let mut blocks: Vec<Block> = Vec::new();
-    for t in &mesh.faces[own as usize].triangles {
-        let [a, b, c] = t.map(|i| mesh.points[i as usize]);
+    let mut stops: Vec<(u32, bool)> = Vec::new();
+    for k in some {
+        if out.area - out.reached > budget {
+            out.cut_short = true;
+            return out;
+        }
+        let [a, b, c] = tris[k as usize].map(|i| mesh.points[i as usize]);
         let n = (b - a).cross(&(c - a));
         let area = 0.5 * n.norm();
         if area <= 0.0 {
@@ -29,6 +53,7 @@ pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, own: u32) -> Judged {
         let n = scene.local_vector(&(n / (2.0 * area)));
         if n[2] < -UNDERCUT_SIN {
             out.away += area;
+            out.lost.push(k);
             out.unreachable.push(vec![a.into(), b.into(), c.into()]);
             continue;
         }
@@ -38,35 +63,21 @@ pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, own: u32) -> Judged {
         } else {
             [p[0] + r * n[0] / level, p[1] + r * n[1] / level, p[2]]
         };
-        let lo = [centre[0] - reach, centre[1] - reach];
-        let hi = [centre[0] + reach, centre[1] + reach];
-        let cands = scene.near(lo, hi, centre[2] + ctx.touch_curved);
-        blocks.clear();
-        blocked(
-            scene,
-            &cands,
-            centre,
-            [1.0, 0.0],
-            tool,
-            ctx.touch_curved,
-            &mut blocks,
-        );
-        let hits: Vec<&Block> = blocks
-            .iter()
-            .filter(|b| b.span.0 < 0.0 && b.span.1 > 0.0)
-            .collect();
-        if hits.is_empty() {
+        stops.clear();
+        point_stops(scene, centre, tool, ctx.touch_curved, |k, holder| {
+            let key = (scene.tris[k as usize].face, holder);
+            if !stops.contains(&key) {
+                stops.push(key);
+            }
+        });
+        if stops.is_empty() {
             out.reached += area;
             continue;
         }
         out.unreachable.push(vec![a.into(), b.into(), c.into()]);
-        let mut seen: Vec<(u32, bool)> = Vec::new();
-        for h in hits {
-            let key = (scene.tris[h.tri as usize].face, h.holder);
-            if !seen.contains(&key) {
-                seen.push(key);
-                *out.blockers.entry(key).or_default() += area;
-            }
+        out.lost.push(k);
+        for key in &stops {
+            *out.blockers.entry(*key).or_default() += area;
         }
     }
     out

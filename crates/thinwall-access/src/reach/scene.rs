@@ -2,7 +2,7 @@
 //! bucketed by their footprint, and what stops a tool whose tip runs along
 //! a level line.
 
-use super::interval::{line_near_convex, Span};
+use super::interval::{line_near_convex, point_near_convex, Span};
 use super::Tool;
 use thinwall_brep::tessellate::Mesh;
 use thinwall_geom::{Frame, Point3, Vector3};
@@ -15,12 +15,16 @@ pub struct Tri {
     pub v: [u32; 3],
     /// Index into the mesh's faces.
     pub face: u32,
+    /// Of a curved face, or a planar one with a curved edge: its chords
+    /// lie up to the tessellation's deviation off the face, so it touches
+    /// the tool within a wider tolerance.
+    pub tessellated: bool,
     lo: [f64; 3],
     hi: [f64; 3],
 }
 
 impl Tri {
-    pub fn new(p: [[f64; 3]; 3], v: [u32; 3], face: u32) -> Self {
+    pub fn new(p: [[f64; 3]; 3], v: [u32; 3], face: u32, tessellated: bool) -> Self {
         let mut lo = p[0];
         let mut hi = p[0];
         for q in &p[1..] {
@@ -29,7 +33,14 @@ impl Tri {
                 hi[c] = hi[c].max(q[c]);
             }
         }
-        Self { p, v, face, lo, hi }
+        Self {
+            p,
+            v,
+            face,
+            tessellated,
+            lo,
+            hi,
+        }
     }
 }
 
@@ -42,6 +53,8 @@ pub struct Scene {
     nx: usize,
     ny: usize,
     cells: Vec<Vec<u32>>,
+    /// The highest corner filed in each cell.
+    cell_top: Vec<f64>,
 }
 
 /// Buckets per side of the footprint grid, at most.
@@ -49,8 +62,9 @@ const GRID_CELLS: f64 = 96.0;
 
 impl Scene {
     /// `frame.z` is the tool axis; the origin near the part keeps the
-    /// coordinates small.
-    pub fn new(mesh: &Mesh, frame: Frame) -> Self {
+    /// coordinates small. `curved` tells the mesh's faces whose triangles
+    /// only approximate them ([`Tri::tessellated`]).
+    pub fn new(mesh: &Mesh, frame: Frame, curved: impl Fn(usize) -> bool) -> Self {
         let mut tris = Vec::new();
         for (k, fm) in mesh.faces.iter().enumerate() {
             for t in &fm.triangles {
@@ -58,7 +72,7 @@ impl Scene {
                     let l = frame.to_local(&mesh.points[i as usize]);
                     [l.x, l.y, l.z]
                 });
-                tris.push(Tri::new(p, *t, k as u32));
+                tris.push(Tri::new(p, *t, k as u32, curved(k)));
             }
         }
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -83,12 +97,15 @@ impl Scene {
             nx,
             ny,
             cells: vec![Vec::new(); nx * ny],
+            cell_top: vec![f64::NEG_INFINITY; nx * ny],
         };
         for k in 0..scene.tris.len() {
             let (a, b) = scene.range(scene.tris[k].lo, scene.tris[k].hi);
             for j in a[1]..=b[1] {
                 for i in a[0]..=b[0] {
                     scene.cells[j * nx + i].push(k as u32);
+                    let top = &mut scene.cell_top[j * nx + i];
+                    *top = top.max(scene.tris[k].hi[2]);
                 }
             }
         }
@@ -146,6 +163,37 @@ impl Scene {
         out
     }
 
+    /// Each triangle whose footprint meets the rectangle `lo..hi` and whose
+    /// top is above `zmin`, told to `f` once, in no order and without
+    /// gathering them: in the first cell of the rectangle it is filed in
+    /// (its lower corner's and the rectangle's, whichever is later). Cells
+    /// with nothing above `zmin` are skipped whole.
+    pub fn for_near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64, mut f: impl FnMut(u32)) {
+        let (a, b) = self.range([lo[0], lo[1], 0.0], [hi[0], hi[1], 0.0]);
+        for j in a[1]..=b[1] {
+            for i in a[0]..=b[0] {
+                let cell = j * self.nx + i;
+                if self.cell_top[cell] <= zmin {
+                    continue;
+                }
+                for &k in &self.cells[cell] {
+                    let t = &self.tris[k as usize];
+                    if t.hi[2] > zmin
+                        && t.hi[0] >= lo[0]
+                        && t.lo[0] <= hi[0]
+                        && t.hi[1] >= lo[1]
+                        && t.lo[1] <= hi[1]
+                    {
+                        let (first, _) = self.range(t.lo, t.hi);
+                        if first[0].max(a[0]) == i && first[1].max(a[1]) == j {
+                            f(k);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// The height of triangle `k`'s highest corner.
     pub fn top(&self, k: u32) -> f64 {
         self.tris[k as usize].hi[2]
@@ -170,14 +218,16 @@ pub struct Block {
 /// Where a tool whose tip centre runs along `q0 + s·e` (`q0[2]` its height,
 /// `e` level and unit) would cut into the triangles `cands`: the cutter
 /// (radius r, from the tip up to the cutting length) or the holder above
-/// it. Material within `touch` of the tool's surface only touches it.
+/// it. Material within `touch` of the tool's surface only touches it, a
+/// curved face's triangle within `touch_tessellated` (its chords cut
+/// inside a concave blend the tool touches).
 pub fn blocked(
     scene: &Scene,
     cands: &[u32],
     q0: [f64; 3],
     e: [f64; 2],
     tool: &Tool,
-    touch: f64,
+    (exact, touch_tessellated): (f64, f64),
     out: &mut Vec<Block>,
 ) {
     let h = q0[2];
@@ -186,6 +236,11 @@ pub fn blocked(
     let q = [q0[0], q0[1]];
     for &k in cands {
         let t = &scene.tris[k as usize];
+        let touch = if t.tessellated {
+            touch_tessellated
+        } else {
+            exact
+        };
         if t.hi[2] <= h + touch {
             continue;
         }
@@ -223,6 +278,39 @@ pub fn blocked(
             }
         }
     }
+}
+
+/// The triangles a tool with its tip centre at `c` would cut into (as
+/// [`blocked`] tells at the line's point `c`), each told to `stop` with
+/// whether the holder (not the cutter) meets it: the cutter's within its
+/// radius, the holder's within its own among the triangles reaching above
+/// the cutting length (cells with nothing that high are skipped).
+pub fn point_stops(
+    scene: &Scene,
+    c: [f64; 3],
+    tool: &Tool,
+    touch: f64,
+    mut stop: impl FnMut(u32, bool),
+) {
+    let h = c[2];
+    let (r, big) = (0.5 * tool.diameter, 0.5 * tool.holder_diameter);
+    let top = h + tool.cutting_length;
+    let q = [c[0], c[1]];
+    let mut near = |rho: f64, lo: f64, hi: f64, holder: bool| {
+        let (a, b) = ([q[0] - rho, q[1] - rho], [q[0] + rho, q[1] + rho]);
+        scene.for_near(a, b, lo, |k| {
+            let t = &scene.tris[k as usize];
+            if t.lo[2] > hi {
+                return;
+            }
+            let (part, n) = clip(&t.p, lo, hi);
+            if point_near_convex(q, &part[..n], rho - touch) {
+                stop(k, holder);
+            }
+        });
+    };
+    near(r, h + touch, top, false);
+    near(big, top + touch, f64::INFINITY, true);
 }
 
 /// Corners a triangle cut by two levels can have.

@@ -12,7 +12,7 @@
 use super::interval::{intersect, length, merge, subtract, Span};
 use super::scene::{blocked, Block};
 use super::{Ctx, Judged};
-use geo::{BoundingRect, MultiPolygon};
+use geo::{Area, BoundingRect, MultiPolygon};
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 
@@ -28,6 +28,18 @@ const GAUSS: [(f64, f64); 3] = [
 ];
 
 pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) -> Judged {
+    judge_within(ctx, scene, pf, own, f64::INFINITY)
+}
+
+/// As [`judge`], but stopping (`cut_short`) after the first band that
+/// brings the area lost above the share `budget` of the face's.
+pub fn judge_within(
+    ctx: &Ctx,
+    scene: &super::scene::Scene,
+    pf: &PlanarFace,
+    own: u32,
+    budget: f64,
+) -> Judged {
     let axis = scene.frame.z;
     let n = pf.normal();
     let e = axis.cross(&n).normalize();
@@ -45,6 +57,7 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
     let Some(rect) = region.bounding_rect() else {
         return out;
     };
+    let budget = budget * region.unsigned_area();
     let tool = &ctx.tool;
     let r = 0.5 * tool.diameter;
     let reach = r + 0.5 * tool.holder_diameter;
@@ -114,6 +127,10 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
     );
     let mut blocks: Vec<Block> = Vec::new();
     for w in bands.windows(2) {
+        if out.area - out.reached > budget {
+            out.cut_short = true;
+            return out;
+        }
         let (va, vb) = (w[0], w[1]);
         let half = 0.5 * (vb - va);
         for (k, (x, wt)) in GAUSS.iter().enumerate() {
@@ -126,7 +143,15 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
             // Only the triangles reaching above the tip (highest first).
             let above = cands.partition_point(|&k| scene.top(k) > p[2] + ctx.touch);
             blocks.clear();
-            blocked(scene, &cands[..above], p, e2, tool, ctx.touch, &mut blocks);
+            blocked(
+                scene,
+                &cands[..above],
+                p,
+                e2,
+                tool,
+                (ctx.touch, ctx.touch_tessellated()),
+                &mut blocks,
+            );
             let stop = merge(blocks.iter().map(|b| b.span).collect());
             let weight = wt * half;
             out.area += weight * length(&face);
