@@ -21,7 +21,9 @@ use thinwall_geom::{Frame, Vector3};
 /// Corners of the polygon standing for a disk.
 const DISK_CORNERS: usize = 128;
 
-pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
+/// `named`: also which obstacles stop the tool, and how much (the
+/// largest-tool search needs only the fraction).
+pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -> Judged {
     let axis = scene.frame.z;
     let Some(frame) = Frame::from_axis(pf.frame.origin, axis, Some(pf.frame.x)) else {
         return Judged::default();
@@ -116,30 +118,15 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
         },
     );
     let free = MultiPolygon::new(vec![frame_box.to_polygon()]).difference(&stopped);
-    let mut pieces = vec![free.clone()];
-    for poly in &free {
-        for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
-            for l in ring.lines() {
-                if let Some(p) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], &small_disk) {
-                    pieces.push(MultiPolygon::new(vec![p]));
-                }
-            }
-        }
-    }
-    let reached = region.intersection(&union_all(pieces));
+    let reached = region.intersection(&opened(&free, &small_disk));
     let lost = region.difference(&reached);
     let mut out = Judged {
         area,
         reached: reached.unsigned_area().min(area),
         ..Judged::default()
     };
-    if area - out.reached > 1e-9 * area {
-        for (key, g) in &groups {
-            let a = lost.intersection(g).unsigned_area();
-            if a > 0.0 {
-                *out.blockers.entry(*key).or_default() += a;
-            }
-        }
+    if named && area - out.reached > 1e-9 * area {
+        out.blockers = blockers(&groups, &lost);
         out.unreachable = lost
             .iter()
             .flat_map(|p| std::iter::once(p.exterior()).chain(p.interiors()))
@@ -151,6 +138,38 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32) -> Judged {
             .collect();
     }
     out
+}
+
+/// The positions `free` grown by `disk`: the points the tool's end covers
+/// from them (free positions, and each edge of their outline grown).
+fn opened(free: &MultiPolygon<f64>, disk: &[[f64; 2]]) -> MultiPolygon<f64> {
+    let mut pieces = vec![free.clone()];
+    for poly in free {
+        for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
+            for l in ring.lines() {
+                if let Some(p) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], disk) {
+                    pieces.push(MultiPolygon::new(vec![p]));
+                }
+            }
+        }
+    }
+    union_all(pieces)
+}
+
+/// Which obstacles stop the tool on the `lost` floor: every one whose
+/// grown shape covers some of it, with the area it covers (overlapping).
+/// Naming only the obstacles that stop the tool alone does not work face
+/// by face: a rib's top and its sides each cover what the others do, so
+/// none gains alone.
+fn blockers(
+    groups: &[((u32, bool), MultiPolygon<f64>)],
+    lost: &MultiPolygon<f64>,
+) -> BTreeMap<(u32, bool), f64> {
+    groups
+        .iter()
+        .map(|(key, g)| (*key, lost.intersection(g).unsigned_area()))
+        .filter(|(_, a)| *a > 0.0)
+        .collect()
 }
 
 /// A disk of radius `r` as a polygon with its corners on the circle, one

@@ -143,7 +143,7 @@ impl<'a> WholeJudge<'a> {
             return false;
         }
         let j = if n[2] >= FLOOR_COS {
-            floor::judge(&ctx, self.scene, pf, self.own)
+            floor::judge(&ctx, self.scene, pf, self.own, false)
         } else {
             side::judge_within(&ctx, self.scene, pf, self.own, WHOLE_SHARE)
         };

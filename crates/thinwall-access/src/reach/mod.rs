@@ -435,7 +435,7 @@ pub fn judge(
             return (Contact::Side, j);
         }
         if n[2] >= FLOOR_COS {
-            return (Contact::Floor, floor::judge(ctx, scene, pf, own));
+            return (Contact::Floor, floor::judge(ctx, scene, pf, own, true));
         }
         return (Contact::Side, side::judge(ctx, scene, pf, own));
     }
