@@ -141,25 +141,9 @@ impl Scene {
     /// Triangles whose footprint meets the rectangle `lo..hi` and whose top
     /// is above `zmin`, each once, in index order.
     pub fn near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64) -> Vec<u32> {
-        let (a, b) = self.range([lo[0], lo[1], 0.0], [hi[0], hi[1], 0.0]);
         let mut out = Vec::new();
-        for j in a[1]..=b[1] {
-            for i in a[0]..=b[0] {
-                for &k in &self.cells[j * self.nx + i] {
-                    let t = &self.tris[k as usize];
-                    if t.hi[2] > zmin
-                        && t.hi[0] >= lo[0]
-                        && t.lo[0] <= hi[0]
-                        && t.hi[1] >= lo[1]
-                        && t.lo[1] <= hi[1]
-                    {
-                        out.push(k);
-                    }
-                }
-            }
-        }
+        self.for_near(lo, hi, zmin, |k| out.push(k));
         out.sort_unstable();
-        out.dedup();
         out
     }
 
