@@ -72,7 +72,6 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
     let slack = ctx.touch_tessellated();
     let (small_tess, holder_tess) = (disk((r - slack).max(0.0)), disk((big - slack).max(0.0)));
     let mut obstacles: BTreeMap<(u32, bool), Obstacle> = BTreeMap::new();
-    let mut tessellated: BTreeMap<u32, bool> = BTreeMap::new();
     let top = h + tool.cutting_length;
     for k in scene.near(lo, hi, h + ctx.touch) {
         let t = &scene.tris[k as usize];
@@ -85,7 +84,6 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
         ] {
             let clipped = clip_tagged(&t.p, a, b);
             if !clipped.is_empty() {
-                tessellated.insert(t.face, t.tessellated);
                 obstacles
                     .entry((t.face, holder))
                     .or_default()
@@ -96,7 +94,7 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
     let groups: Vec<((u32, bool), MultiPolygon<f64>)> = obstacles
         .into_iter()
         .map(|((face, holder), ob)| {
-            let d = match (holder, tessellated.get(&face) == Some(&true)) {
+            let d = match (holder, ob.tessellated) {
                 (false, false) => &small_disk,
                 (false, true) => &small_tess,
                 (true, false) => &holder_disk,

@@ -9,7 +9,7 @@
 //! judged again only at the triangles that size left.
 
 use super::scene::Scene;
-use super::{floor, sampled, side, Ctx, Judged, FLOOR_COS, UNDERCUT_SIN, WHOLE_SHARE};
+use super::{contact, floor, sampled, side, Contact, Ctx, Judged, WHOLE_SHARE};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::tessellate::Mesh;
 
@@ -106,6 +106,8 @@ struct WholeJudge<'a> {
     failed: Option<(f64, Vec<u32>)>,
     /// A curved face: triangles that stopped some size.
     hints: Vec<u32>,
+    /// A curved face: its triangles' area, mm².
+    area: f64,
 }
 
 impl<'a> WholeJudge<'a> {
@@ -124,6 +126,7 @@ impl<'a> WholeJudge<'a> {
             own,
             failed: None,
             hints: Vec::new(),
+            area: mesh.face_area(&mesh.faces[own as usize]),
         }
     }
 
@@ -135,17 +138,13 @@ impl<'a> WholeJudge<'a> {
             touch_curved: self.ctx.touch_curved,
         };
         let f = self.mesh.faces[self.own as usize].face;
-        let Some(pf) = self.a.planar(f) else {
-            return self.curved_whole(&ctx, d);
-        };
-        let n = self.scene.local_vector(&pf.normal());
-        if n[2] < -UNDERCUT_SIN {
-            return false;
-        }
-        let j = if n[2] >= FLOOR_COS {
-            floor::judge(&ctx, self.scene, pf, self.own, false)
-        } else {
-            side::judge_within(&ctx, self.scene, pf, self.own, WHOLE_SHARE)
+        let j = match contact(self.a, self.scene, f) {
+            None => return false,
+            Some((Contact::Floor, Some(pf))) => floor::judge(&ctx, self.scene, pf, self.own, false),
+            Some((Contact::Side, Some(pf))) => {
+                side::judge_within(&ctx, self.scene, pf, self.own, WHOLE_SHARE)
+            }
+            Some(_) => return self.curved_whole(&ctx, d),
         };
         !j.cut_short && j.fraction() >= 1.0 - WHOLE_SHARE
     }
@@ -166,8 +165,7 @@ impl<'a> WholeJudge<'a> {
         }
         // Stable: hinted first, each part in its own order.
         order.sort_by_key(|&k| !hinted[k as usize]);
-        let area = self.mesh.face_area(&self.mesh.faces[self.own as usize]);
-        let budget = WHOLE_SHARE * area;
+        let budget = WHOLE_SHARE * self.area;
         let j = sampled::judge_some(
             ctx,
             self.scene,

@@ -34,7 +34,7 @@ use rayon::prelude::*;
 use scene::Scene;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use thinwall_analysis::{Machine, PartAnalysis};
+use thinwall_analysis::{Machine, PartAnalysis, PlanarFace};
 use thinwall_brep::tessellate::{Mesh, RELATIVE_DEVIATION};
 use thinwall_brep::FaceId;
 use thinwall_geom::{CurveKind, Frame, Vector3};
@@ -392,10 +392,11 @@ pub fn scenes(a: &PartAnalysis, mesh: &Mesh, axes: &[Vector3]) -> Vec<Scene> {
         0.5 * (bb.min[2] + bb.max[2]),
     );
     let reference = azimuth_reference(a, &a.up());
+    let tess: Vec<bool> = mesh.faces.iter().map(|m| tessellated(a, m.face)).collect();
     axes.par_iter()
         .map(|ax| {
             let frame = Frame::from_axis(centre, *ax, Some(reference)).unwrap_or_else(Frame::world);
-            Scene::new(mesh, frame, |k| tessellated(a, mesh.faces[k].face))
+            Scene::new(mesh, frame, |k| tess[k])
         })
         .collect()
 }
@@ -413,6 +414,26 @@ fn tessellated(a: &PartAnalysis, f: FaceId) -> bool {
         })
 }
 
+/// How the tool meets face `f` on the scene's axis: none when the face is
+/// turned away from it (an undercut).
+pub fn contact<'p>(
+    a: &'p PartAnalysis,
+    scene: &Scene,
+    f: FaceId,
+) -> Option<(Contact, Option<&'p PlanarFace>)> {
+    let Some(pf) = a.planar(f) else {
+        return Some((Contact::Curved, None));
+    };
+    let n = scene.local_vector(&pf.normal());
+    if n[2] < -UNDERCUT_SIN {
+        None
+    } else if n[2] >= FLOOR_COS {
+        Some((Contact::Floor, Some(pf)))
+    } else {
+        Some((Contact::Side, Some(pf)))
+    }
+}
+
 /// How face `own` (mesh index) is judged on one scene.
 pub fn judge(
     a: &PartAnalysis,
@@ -422,24 +443,23 @@ pub fn judge(
     own: u32,
 ) -> (Contact, Judged) {
     let f: FaceId = mesh.faces[own as usize].face;
-    if let Some(pf) = a.planar(f) {
-        let n = scene.local_vector(&pf.normal());
-        if n[2] < -UNDERCUT_SIN {
+    match contact(a, scene, f) {
+        None => {
             let area = a.props(f).area;
-            let mut j = Judged {
+            let j = Judged {
                 area,
                 away: area,
+                unreachable: sampled_outline(mesh, own),
                 ..Judged::default()
             };
-            j.unreachable = sampled_outline(mesh, own);
-            return (Contact::Side, j);
+            (Contact::Side, j)
         }
-        if n[2] >= FLOOR_COS {
-            return (Contact::Floor, floor::judge(ctx, scene, pf, own, true));
+        Some((Contact::Floor, Some(pf))) => {
+            (Contact::Floor, floor::judge(ctx, scene, pf, own, true))
         }
-        return (Contact::Side, side::judge(ctx, scene, pf, own));
+        Some((Contact::Side, Some(pf))) => (Contact::Side, side::judge(ctx, scene, pf, own)),
+        Some(_) => (Contact::Curved, sampled::judge(ctx, scene, mesh, own)),
     }
-    (Contact::Curved, sampled::judge(ctx, scene, mesh, own))
 }
 
 /// A face's triangles as outlines.

@@ -35,6 +35,8 @@ const EDGE_ON: f64 = 1e-9;
 #[derive(Default)]
 pub struct Obstacle {
     pieces: Vec<Piece>,
+    /// Its triangles only approximate their face ([`Tri::tessellated`]).
+    pub tessellated: bool,
 }
 
 struct Piece {
@@ -71,6 +73,7 @@ impl Obstacle {
         if clipped.is_empty() {
             return;
         }
+        self.tessellated |= t.tessellated;
         let (corners, tags) = clipped
             .into_iter()
             .map(|(p, tag)| (project([p[0], p[1]]), tag))

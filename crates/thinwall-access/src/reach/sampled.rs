@@ -17,7 +17,7 @@ pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, own: u32) -> Judged {
 
 /// As [`judge`], at the triangles `some` of the face only (indices into
 /// its triangles, in the order given; `area` is theirs), stopping
-/// (`cut_short`) once more than `budget` mm² is lost. A larger tool in the
+/// (`cut_short`) once more than `lost_mm2` is lost. A larger tool in the
 /// same proportions stops wherever a smaller one does: touching the same
 /// point, its cutter's and its holder's disks hold the smaller tool's
 /// (they touch at the point, and the holder grows with the cutter). So a
@@ -29,7 +29,7 @@ pub fn judge_some(
     mesh: &Mesh,
     own: u32,
     some: impl Iterator<Item = u32>,
-    budget: f64,
+    lost_mm2: f64,
 ) -> Judged {
     let tool = &ctx.tool;
     let r = 0.5 * tool.diameter;
@@ -37,7 +37,7 @@ pub fn judge_some(
     let mut out = Judged::default();
     let mut stops: Vec<(u32, bool)> = Vec::new();
     for k in some {
-        if out.area - out.reached > budget {
+        if out.area - out.reached > lost_mm2 {
             out.cut_short = true;
             return out;
         }

@@ -32,13 +32,13 @@ pub fn judge(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) 
 }
 
 /// As [`judge`], but stopping (`cut_short`) after the first band that
-/// brings the area lost above the share `budget` of the face's.
+/// brings the area lost above the share `lost_share` of the face's.
 pub fn judge_within(
     ctx: &Ctx,
     scene: &super::scene::Scene,
     pf: &PlanarFace,
     own: u32,
-    budget: f64,
+    lost_share: f64,
 ) -> Judged {
     let axis = scene.frame.z;
     let n = pf.normal();
@@ -57,7 +57,7 @@ pub fn judge_within(
     let Some(rect) = region.bounding_rect() else {
         return out;
     };
-    let budget = budget * region.unsigned_area();
+    let budget = lost_share * region.unsigned_area();
     let tool = &ctx.tool;
     let r = 0.5 * tool.diameter;
     let reach = r + 0.5 * tool.holder_diameter;
