@@ -79,7 +79,7 @@ fn wall_feature(
     f.thin = Some(s.thin);
     f.thickness = Some(wall.thickness_range.0);
     if wall.drafted() {
-        let (foot, top) = foot_and_top(wall, &s.height_dir);
+        let (foot, top) = foot_and_top(wall, &s.height_dir, a.tol().feature);
         f.thickness_foot = Some(foot);
         f.thickness_top = Some(top);
     }
@@ -107,16 +107,26 @@ fn wall_feature(
     f
 }
 
-/// A drafted wall's thickness at its lowest and highest region vertex
-/// along its height direction, mm.
-fn foot_and_top(wall: &Wall, up: &Vector3) -> (f64, f64) {
+/// A drafted wall's thickness at its lowest and highest region vertices
+/// along its height direction, mm: where several are level (within
+/// `tol`), the thinnest of them, so that which corner of a level edge the
+/// region's outline lists first does not decide.
+fn foot_and_top(wall: &Wall, up: &Vector3, tol: f64) -> (f64, f64) {
     let pts = crate::walls::region_outline(&wall.frame, &wall.region, 0.0);
-    let key = |p: &&Point3| p.coords.dot(up);
-    let at = |p: Option<&Point3>| p.map_or(wall.thickness, |p| wall.thickness_at(p));
-    (
-        at(pts.iter().min_by(|a, b| key(a).total_cmp(&key(b)))),
-        at(pts.iter().max_by(|a, b| key(a).total_cmp(&key(b)))),
-    )
+    let level = |p: &Point3| p.coords.dot(up);
+    let thinnest_at = |h: f64| {
+        pts.iter()
+            .filter(|p| (level(p) - h).abs() <= tol)
+            .map(|p| wall.thickness_at(p))
+            .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))))
+            .unwrap_or(wall.thickness)
+    };
+    let (lo, hi) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(level(p)), hi.max(level(p)))
+        });
+    (thinnest_at(lo), thinnest_at(hi))
 }
 
 /// The wall's region, side polygons and foot line.

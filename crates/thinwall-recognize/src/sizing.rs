@@ -44,7 +44,7 @@ pub fn size_walls(
     let mut sizes: Vec<WallSize> = walls
         .iter()
         .enumerate()
-        .map(|(w, wall)| on_base(walls, wall, w, junctions, heights, a.up()))
+        .map(|(w, wall)| on_base(walls, wall, w, junctions, heights, a))
         .collect();
     for (w, wall) in walls.iter().enumerate() {
         if sizes[w].base.is_none() {
@@ -68,20 +68,31 @@ pub fn size_walls(
     sizes
 }
 
-/// Figures of a wall from the wall it meets along its longest foot (ties:
-/// the lower base); zero when it meets none.
+/// Figures of a wall from the wall it meets along its longest foot (ties,
+/// within the part's feature tolerance: the lower base, then the thicker,
+/// the more substantial of two it meets alike); zero when it meets none.
+/// Exact comparisons let rounding in the last digit pick between two bases
+/// the leaf meets alike.
 fn on_base(
     walls: &[Wall],
     wall: &Wall,
     w: usize,
     junctions: &[Junction],
     heights: &[f64],
-    up: Vector3,
+    a: &PartAnalysis,
 ) -> WallSize {
+    let (up, tol) = (a.up(), a.tol().feature);
+    let order = |x: f64, y: f64| {
+        if (x - y).abs() <= tol {
+            std::cmp::Ordering::Equal
+        } else {
+            x.total_cmp(&y)
+        }
+    };
     let best = junctions.iter().filter(|j| j.leaf == w).max_by(|a, b| {
-        a.length
-            .total_cmp(&b.length)
-            .then(heights[b.base].total_cmp(&heights[a.base]))
+        order(a.length, b.length)
+            .then(order(heights[b.base], heights[a.base]))
+            .then(order(walls[a.base].thickness, walls[b.base].thickness))
     });
     let mut size = WallSize {
         base: best.map(|j| j.base),
