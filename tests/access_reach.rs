@@ -517,3 +517,56 @@ fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
         close(hole.fits_mm.unwrap(), 8.0, 1e-6, "hole fits");
     }
 }
+
+/// NIST FTC 10's face `step_id` judged alone (every face still in the
+/// way) from `up`, with its largest tool.
+fn ftc_10_face(step_id: u64, up: [f64; 3]) -> FaceReach {
+    let path = common::shared_data().join("nist/nist_ftc_10_asme1_ap242-e2.stp");
+    let part = thinwall_step::read_file(&path).unwrap().0;
+    let face = part
+        .face_ids()
+        .find(|&f| part.face(f).step_id == step_id)
+        .unwrap_or_else(|| panic!("FTC 10 has face #{step_id}"));
+    let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
+    let mesh = thinwall_brep::tessellate::part_mesh(&part);
+    let opts = ReachOptions {
+        largest_tool: true,
+        ..ReachOptions::default()
+    };
+    let mut got = thinwall_access::reach::reach_of(&a, &mesh, &opts, |f| f == face).unwrap();
+    assert_eq!(got.len(), 1);
+    got.remove(0)
+}
+
+/// NIST FTC 10 lying on its side, seen from +z: floor #10176 (1110 mm²)
+/// is under the part's own material, so no tool reaches it and the
+/// largest-tool search ends at the smallest tool. Judging that floor at
+/// Ø0.5 once never returned: its obstacles' union looped in geo 0.29's
+/// i_overlay 1.9 (docs/ARCHITECTURE.md); this test would hang again.
+#[test]
+fn a_floor_under_the_part_has_no_largest_tool_and_the_search_ends() {
+    let f = ftc_10_face(10176, [0.0, 0.0, 1.0]);
+    assert_eq!(f.contact, Contact::Floor);
+    assert!(f.fraction == 0.0, "{}", f.fraction);
+    assert!((f.area_mm2 - 1110.0).abs() < 1e-6, "{}", f.area_mm2);
+    assert_eq!(f.largest_tool_mm, None);
+    assert!(f.blocked_by.iter().any(|b| b.by == ToolPart::Holder));
+}
+
+/// NIST FTC 10 seen along +y: the Ø8 floor #8785 (50.3 mm²) at the end of
+/// a bore is not reached by Ø12 but is whole by a tool just over Ø10.
+/// Its search once made i_overlay 4.5 panic on slivers folded on
+/// themselves (docs/ACCESS.md).
+#[test]
+fn a_bore_floor_seen_along_y_gets_its_largest_tool() {
+    let f = ftc_10_face(8785, [0.0, 1.0, 0.0]);
+    assert_eq!(f.contact, Contact::Floor);
+    assert!(
+        (f.area_mm2 - 16.0 * std::f64::consts::PI).abs() < 1e-3,
+        "{}",
+        f.area_mm2
+    );
+    assert!(f.fraction == 0.0, "{}", f.fraction);
+    let d = f.largest_tool_mm.expect("a largest tool");
+    assert!(d > 8.0 && d < 12.0, "Ø{d}");
+}

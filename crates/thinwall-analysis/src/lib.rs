@@ -18,8 +18,10 @@
 //! }
 //! ```
 
+pub mod boolean;
 pub mod components;
 pub mod measure;
+pub mod min_rect;
 pub mod polygon;
 pub mod setup;
 pub mod vocabulary;

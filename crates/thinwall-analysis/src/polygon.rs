@@ -203,10 +203,10 @@ pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
         .0
         .iter()
         .map(|p| {
-            p.exterior().length::<Euclidean>()
+            Euclidean.length(p.exterior())
                 + p.interiors()
                     .iter()
-                    .map(|r| r.length::<Euclidean>())
+                    .map(|r| Euclidean.length(r))
                     .sum::<f64>()
         })
         .sum();
@@ -219,17 +219,10 @@ pub fn narrow_width(region: &MultiPolygon<f64>) -> f64 {
     strip.min(rect)
 }
 
-/// Long and short side of the minimum-area rectangle around `shape`, mm.
-pub fn min_rect_sides<G>(shape: &G) -> Option<(f64, f64)>
-where
-    G: geo::MinimumRotatedRect<f64, Scalar = f64>,
-{
-    shape.minimum_rotated_rect().map(|r| {
-        let c: Vec<Coord<f64>> = r.exterior().coords().copied().collect();
-        let a = ((c[1].x - c[0].x).powi(2) + (c[1].y - c[0].y).powi(2)).sqrt();
-        let b = ((c[2].x - c[1].x).powi(2) + (c[2].y - c[1].y).powi(2)).sqrt();
-        (a.max(b), a.min(b))
-    })
+/// Long and short side of the minimum-area rectangle around `shape`, mm
+/// ([`crate::min_rect`]: ties broken by the shape, not its pose).
+pub fn min_rect_sides<G: geo::CoordsIter<Scalar = f64>>(shape: &G) -> Option<(f64, f64)> {
+    crate::min_rect::min_rect(shape).map(|r| (r.long, r.short))
 }
 
 /// Longest side of the region's minimum rotated rectangle (of its bounding
@@ -260,7 +253,7 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
         let mut d = f64::INFINITY;
         for poly in &region.0 {
             for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
-                d = d.min(Euclidean::distance(&p, ring));
+                d = d.min(Euclidean.distance(&p, ring));
                 if d <= floor {
                     return 0.0;
                 }

@@ -360,7 +360,7 @@ fn overlaps_material(
                 && profile
                     .0
                     .iter()
-                    .all(|poly| Euclidean::distance(&q, poly.exterior()) > margin)
+                    .all(|poly| Euclidean.distance(&q, poly.exterior()) > margin)
             {
                 return true;
             }

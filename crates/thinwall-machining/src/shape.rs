@@ -79,15 +79,15 @@ fn through_slot(walls: &[Vector3]) -> (MachiningKind, bool, Profile) {
 
 /// The area of the faces' convex hull over that of its minimum rectangle.
 fn fill_ratio(a: &PartAnalysis, faces: &[FaceId]) -> f64 {
-    use geo::{Area, ConvexHull, MinimumRotatedRect};
+    use geo::{Area, ConvexHull};
     let polys: geo::MultiPolygon<f64> = faces
         .iter()
         .filter_map(|&f| a.polygon(f))
         .flat_map(|p| p.0)
         .collect();
     let hull = polys.convex_hull();
-    match hull.minimum_rotated_rect() {
-        Some(r) if r.unsigned_area() > 0.0 => hull.unsigned_area() / r.unsigned_area(),
+    match thinwall_analysis::polygon::min_rect_sides(&hull) {
+        Some((long, short)) if long * short > 0.0 => hull.unsigned_area() / (long * short),
         _ => 1.0,
     }
 }

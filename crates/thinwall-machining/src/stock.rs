@@ -264,23 +264,10 @@ fn axes_about(a: &PartAnalysis, up: Vector3) -> [Vector3; 3] {
 
 /// The long side of the part's minimum rectangle seen along `d1`.
 fn across(a: &PartAnalysis, d1: &Vector3) -> Vector3 {
-    use geo::MinimumRotatedRect;
     let all: Vec<FaceId> = a.part().face_ids().collect();
     let (u, v, pts) = a.points_across(&all, d1);
-    let dir = geo::MultiPoint::from(pts)
-        .minimum_rotated_rect()
-        .and_then(|r| {
-            let c: Vec<geo::Coord<f64>> = r.exterior().coords().copied().collect();
-            let (e1, e2) = (
-                (c[1].x - c[0].x, c[1].y - c[0].y),
-                (c[2].x - c[1].x, c[2].y - c[1].y),
-            );
-            let e = if e1.0.hypot(e1.1) >= e2.0.hypot(e2.1) {
-                e1
-            } else {
-                e2
-            };
-            (u * e.0 + v * e.1).try_normalize(1e-12)
-        });
+    let dir = thinwall_analysis::min_rect::min_rect(&geo::MultiPoint::from(pts))
+        .filter(|r| r.long > 0.0)
+        .and_then(|r| (u * r.long_dir[0] + v * r.long_dir[1]).try_normalize(1e-12));
     canonical(dir.unwrap_or(u))
 }

@@ -209,7 +209,7 @@ pub(crate) fn without_slivers(p: &Polygon<f64>, tol: f64) -> Option<Polygon<f64>
     use geo::{Euclidean, Length};
     let sliver = |ring: &LineString<f64>| {
         let area = Polygon::new(ring.clone(), vec![]).unsigned_area();
-        area < tol * ring.length::<Euclidean>()
+        area < tol * Euclidean.length(ring)
     };
     if sliver(p.exterior()) {
         return None;

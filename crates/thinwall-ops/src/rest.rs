@@ -16,9 +16,10 @@
 
 use crate::layers::{CutterField, EdgeKind};
 use crate::tools::CuttingTool;
-use geo::{Area, BooleanOps, MultiPolygon};
+use geo::{Area, MultiPolygon};
 use serde::Serialize;
-use thinwall_access::reach::floor::{disk, grown, union_all};
+use thinwall_access::reach::floor::{disk, grown};
+use thinwall_analysis::boolean::{difference, intersection, union, union_all};
 
 /// One tool's share of a field, and its regions (Popma §4.3.4): the
 /// three add up to `cleared_mm2`.
@@ -196,7 +197,7 @@ fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
     };
     let mut domain = grow(&s.blank);
     domain.push(s.region.clone());
-    let free = union_all(domain).difference(&union_all(grow(&s.part)));
+    let free = difference(&union_all(domain), &union_all(grow(&s.part)));
     if free.unsigned_area() <= 0.0 {
         return MultiPolygon::new(vec![]);
     }
@@ -213,7 +214,7 @@ fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
             }
         }
     }
-    s.region.intersection(&union_all(pieces))
+    intersection(&s.region, &union_all(pieces))
 }
 
 /// The regions of tool `t`'s share (Popma §4.3.4), what its opening `c`
@@ -244,12 +245,12 @@ fn regions(
         .collect();
     let u = union_all(along);
     let wide = cleared(s, 0.5 * (t.diameter_mm + t.radial_depth_mm));
-    let v = u.union(&wide);
+    let v = union(&u, &wide);
     let within = |m: &MultiPolygon<f64>, x: &MultiPolygon<f64>| {
         if m.0.is_empty() || x.0.is_empty() {
             0.0
         } else {
-            m.intersection(x).unsigned_area()
+            intersection(m, x).unsigned_area()
         }
     };
     let boundary = within(c, &u) - within(done, &u);
@@ -279,7 +280,7 @@ pub fn select(
     let s = shape(field);
     let area = s.region.unsigned_area();
     let tiny = 1e-9 * area.max(1.0);
-    let floor = s.region.intersection(floor);
+    let floor = intersection(&s.region, floor);
     let mut shares = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
@@ -305,8 +306,8 @@ pub fn select(
                 boundary_mm2: boundary,
                 full_cut_mm2: full_cut,
                 roughing_mm2: (cleared_mm2 - boundary - full_cut).max(0.0),
-                floor_mm2: (c.intersection(&floor).unsigned_area()
-                    - done.intersection(&floor).unsigned_area())
+                floor_mm2: (intersection(&c, &floor).unsigned_area()
+                    - intersection(&done, &floor).unsigned_area())
                 .max(0.0),
                 first: shares.is_empty(),
             });
@@ -324,7 +325,7 @@ pub fn select(
     };
     // Measured on the difference itself: the layer check (cleared + rest
     // = section) then compares two booleans, not one number with itself.
-    let rest = s.region.difference(&done);
+    let rest = difference(&s.region, &done);
     let rest_mm2 = rest.unsigned_area();
     // Less than the disks' polygon error: no rest worth a word.
     let largest = shares.first().map_or(0.0, |s| s.diameter_mm);

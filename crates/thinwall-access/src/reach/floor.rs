@@ -12,9 +12,11 @@
 use super::obstacle::Obstacle;
 use super::scene::{clip_tagged, Scene};
 use super::{Ctx, Judged};
-use geo::{Area, BooleanOps, BoundingRect, ConvexHull, Coord, MultiPoint, MultiPolygon, Point};
+use geo::{Area, BoundingRect, ConvexHull, Coord, MultiPoint, MultiPolygon, Point};
 use geo::{Polygon, Rect};
 use std::collections::BTreeMap;
+pub use thinwall_analysis::boolean::union_all;
+use thinwall_analysis::boolean::{difference, intersection};
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 
@@ -115,9 +117,9 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
             y: rect.max().y + margin,
         },
     );
-    let free = MultiPolygon::new(vec![frame_box.to_polygon()]).difference(&stopped);
-    let reached = region.intersection(&opened(&free, &small_disk));
-    let lost = region.difference(&reached);
+    let free = difference(&MultiPolygon::new(vec![frame_box.to_polygon()]), &stopped);
+    let reached = intersection(&region, &opened(&free, &small_disk));
+    let lost = difference(&region, &reached);
     let mut out = Judged {
         area,
         reached: reached.unsigned_area().min(area),
@@ -165,7 +167,7 @@ fn blockers(
 ) -> BTreeMap<(u32, bool), f64> {
     groups
         .iter()
-        .map(|(key, g)| (*key, lost.intersection(g).unsigned_area()))
+        .map(|(key, g)| (*key, intersection(lost, g).unsigned_area()))
         .filter(|(_, a)| *a > 0.0)
         .collect()
 }
@@ -256,25 +258,6 @@ fn minkowski(a: &[[f64; 2]], b: &[[f64; 2]]) -> Vec<[f64; 2]> {
         }
     }
     out
-}
-
-/// The union of many polygons, pairwise up a balanced tree.
-pub fn union_all(mut parts: Vec<MultiPolygon<f64>>) -> MultiPolygon<f64> {
-    if parts.is_empty() {
-        return MultiPolygon::new(vec![]);
-    }
-    while parts.len() > 1 {
-        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
-        let mut it = parts.into_iter();
-        while let Some(a) = it.next() {
-            next.push(match it.next() {
-                Some(b) => a.union(&b),
-                None => a,
-            });
-        }
-        parts = next;
-    }
-    parts.pop().unwrap_or_else(|| MultiPolygon::new(vec![]))
 }
 
 #[cfg(test)]

@@ -110,7 +110,7 @@ fn mean_width(p: &geo::Polygon<f64>) -> f64 {
     use geo::{Euclidean, Length};
     let perimeter: f64 = std::iter::once(p.exterior())
         .chain(p.interiors())
-        .map(|r| r.length::<Euclidean>())
+        .map(|r| Euclidean.length(r))
         .sum();
     if perimeter > 0.0 {
         2.0 * flux::area(p) / perimeter

@@ -1,0 +1,186 @@
+//! Booleans of 2-D regions through i_overlay 9 directly, not geo's
+//! `BooleanOps`: geo 0.33 pins i_overlay 4.5, whose hole binding panics
+//! (an index out of bounds) on some unions the reach layer makes, e.g.
+//! slivers folded on themselves from NIST FTC 10 and STC 06
+//! (docs/ARCHITECTURE.md). The regions stay geo `MultiPolygon`s.
+//!
+//! Each operand must be a valid region (its polygons apart, holes inside
+//! their outline): the even-odd rule then fills it whatever the rings'
+//! orientation.
+
+use geo::{Coord, LineString, MultiPolygon, Polygon};
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::single::SingleFloatOverlay;
+
+/// i_overlay's shapes: per polygon its rings, outline first, each open.
+type Shapes = Vec<Vec<Vec<[f64; 2]>>>;
+
+/// `a ∪ b`.
+pub fn union(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    apply(a, b, OverlayRule::Union)
+}
+
+/// `a − b`.
+pub fn difference(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    apply(a, b, OverlayRule::Difference)
+}
+
+/// `a ∩ b`.
+pub fn intersection(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    apply(a, b, OverlayRule::Intersect)
+}
+
+/// The union of many regions, pairwise up a balanced tree (faster here
+/// than one sweep over all of them, whose overlaps run deep).
+pub fn union_all(mut parts: Vec<MultiPolygon<f64>>) -> MultiPolygon<f64> {
+    if parts.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    while parts.len() > 1 {
+        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+        let mut it = parts.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => union(&a, &b),
+                None => a,
+            });
+        }
+        parts = next;
+    }
+    parts.pop().unwrap_or_else(|| MultiPolygon::new(vec![]))
+}
+
+fn apply(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>, rule: OverlayRule) -> MultiPolygon<f64> {
+    let (sa, sb) = (shapes(a), shapes(b));
+    if sa.is_empty() && sb.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    from_shapes(sa.overlay(&sb, rule, FillRule::EvenOdd))
+}
+
+fn shapes(m: &MultiPolygon<f64>) -> Shapes {
+    m.iter()
+        .map(|p| {
+            std::iter::once(p.exterior())
+                .chain(p.interiors())
+                .map(open_ring)
+                .filter(|r| r.len() >= 3)
+                .collect::<Vec<_>>()
+        })
+        .filter(|rings| !rings.is_empty())
+        .collect()
+}
+
+/// A ring's corners without the closing repeat.
+fn open_ring(ring: &LineString<f64>) -> Vec<[f64; 2]> {
+    let mut pts: Vec<[f64; 2]> = ring.coords().map(|c| [c.x, c.y]).collect();
+    if pts.len() > 1 && pts.first() == pts.last() {
+        pts.pop();
+    }
+    pts
+}
+
+fn from_shapes(shapes: Shapes) -> MultiPolygon<f64> {
+    let ring = |r: Vec<[f64; 2]>| -> LineString<f64> {
+        r.into_iter().map(|p| Coord { x: p[0], y: p[1] }).collect()
+    };
+    MultiPolygon::new(
+        shapes
+            .into_iter()
+            .filter(|s| !s.is_empty())
+            .map(|s| {
+                let mut rings = s.into_iter();
+                let outline = rings
+                    .next()
+                    .map(ring)
+                    .unwrap_or_else(|| LineString::new(vec![]));
+                Polygon::new(outline, rings.map(ring).collect())
+            })
+            .collect(),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use geo::{Area, BooleanOps};
+
+    fn square(x: f64, y: f64, s: f64, ccw: bool) -> Polygon<f64> {
+        let mut pts = vec![(x, y), (x + s, y), (x + s, y + s), (x, y + s)];
+        if !ccw {
+            pts.reverse();
+        }
+        Polygon::new(LineString::from(pts), vec![])
+    }
+
+    /// Two overlapping squares and a frame with a hole, in either
+    /// orientation: the same areas as geo's booleans.
+    #[test]
+    fn the_same_areas_as_geo_in_either_orientation() {
+        for ccw in [true, false] {
+            let a = MultiPolygon::new(vec![square(0.0, 0.0, 4.0, ccw)]);
+            let b = MultiPolygon::new(vec![square(2.0, 1.0, 4.0, !ccw)]);
+            let hole = square(1.0, 1.0, 2.0, !ccw).exterior().clone();
+            let frame = MultiPolygon::new(vec![Polygon::new(
+                square(-1.0, -1.0, 6.0, ccw).exterior().clone(),
+                vec![hole],
+            )]);
+            assert!((union(&a, &b).unsigned_area() - 26.0).abs() < 1e-9);
+            assert!((intersection(&a, &b).unsigned_area() - 6.0).abs() < 1e-9);
+            assert!((difference(&a, &b).unsigned_area() - 10.0).abs() < 1e-9);
+            for (x, y) in [(&frame, &b), (&b, &frame), (&a, &frame)] {
+                let want = [x.union(y), x.intersection(y), x.difference(y)];
+                let got = [union(x, y), intersection(x, y), difference(x, y)];
+                for (w, g) in want.iter().zip(&got) {
+                    assert!((w.unsigned_area() - g.unsigned_area()).abs() < 1e-9);
+                }
+            }
+        }
+    }
+
+    /// Slivers folded on themselves (from joining grown triangles of NIST
+    /// FTC 10 seen along +y) on which geo 0.33's union panicked: joined,
+    /// within their bounding box (9.0 × 0.03 mm).
+    #[test]
+    fn folded_slivers_join() {
+        let poly = |pts: &[[f64; 2]]| -> Polygon<f64> {
+            Polygon::new(
+                pts.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>().into(),
+                vec![],
+            )
+        };
+        let a = MultiPolygon::new(vec![
+            poly(&[
+                [-16.01085612169119, 8.992708872091455],
+                [-16.01085612169119, 8.970941814613028],
+                [-15.510132379742586, 8.992708872091455],
+                [-8.499999999912703, 9.000000002813024],
+            ]),
+            poly(&[
+                [-15.009408637793982, 8.992708872091455],
+                [-15.009408637793982, 8.970941814613028],
+                [-14.508684895845377, 8.992708872091455],
+            ]),
+            poly(&[
+                [-8.499999999912703, 9.000000002813024],
+                [-14.508684895845377, 8.992708872091455],
+                [-14.007961153896773, 8.992708872091455],
+            ]),
+        ]);
+        let b = MultiPolygon::new(vec![poly(&[
+            [-8.500000001139918, 9.000000002813024],
+            [-17.513027341313638, 8.992708872091455],
+            [-17.012303599365033, 8.992708872091455],
+            [-17.012303599365033, 8.970941814613028],
+            [-16.51157986486701, 8.992708872091455],
+            [-16.010856122918405, 8.992708872091455],
+            [-8.500000001139918, 8.999999995362444],
+            [-17.005018712230004, 8.992715108227415],
+        ])]);
+        let u = union(&a, &b).unsigned_area();
+        let bbox =
+            (17.513027341313638 - 8.499999999912703) * (9.000000002813024 - 8.970941814613028);
+        assert!(u > 0.0 && u <= bbox, "{u} of {bbox}");
+    }
+}
