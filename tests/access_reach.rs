@@ -515,6 +515,15 @@ fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
         let hole = of(thinwall_analysis::MachiningKind::Hole);
         near(hole.largest_tool_mm, 8.0, "hole");
         close(hole.fits_mm.unwrap(), 8.0, 1e-6, "hole fits");
+        // The block's underside (the largest face, 80 × 50 less the hole)
+        // faces away from the tool: `away`, not reached, no largest tool.
+        let away: Vec<&FaceReach> = faces
+            .iter()
+            .filter(|f| f.contact == Contact::Away)
+            .collect();
+        assert_eq!(away.len(), 1, "{away:?}");
+        assert!(away[0].fraction == 0.0 && away[0].largest_tool_mm.is_none());
+        assert!(faces.iter().all(|f| f.area_mm2 <= away[0].area_mm2 + 1e-6));
     }
 }
 

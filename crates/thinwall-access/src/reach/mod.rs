@@ -164,6 +164,8 @@ pub enum Contact {
     Side,
     /// Curved: judged at its triangles.
     Curved,
+    /// Turned away from the axis (an undercut): not reached from it.
+    Away,
 }
 
 /// Which part of the tool meets the material.
@@ -452,7 +454,7 @@ pub fn judge(
                 unreachable: sampled_outline(mesh, own),
                 ..Judged::default()
             };
-            (Contact::Side, j)
+            (Contact::Away, j)
         }
         Some((Contact::Floor, Some(pf))) => {
             (Contact::Floor, floor::judge(ctx, scene, pf, own, true))
