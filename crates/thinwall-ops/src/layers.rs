@@ -186,7 +186,7 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
             feature: None,
             z_top_mm: above,
             z_bottom_mm: z,
-            floor_region: thinwall_access::reach::floor::union_all(
+            floor_region: thinwall_analysis::boolean::union_all(
                 floor_region
                     .into_iter()
                     .map(|p| MultiPolygon::new(vec![p]))

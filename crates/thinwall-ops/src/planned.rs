@@ -163,7 +163,7 @@ pub fn by_feature(
                 .iter()
                 .filter(|s| bottom && flat(&s.lower).is_some_and(|h| (h - z).abs() <= tol))
                 .collect();
-            let floor_region = thinwall_access::reach::floor::union_all(
+            let floor_region = thinwall_analysis::boolean::union_all(
                 floors.iter().map(|s| s.region.clone()).collect(),
             );
             layers.push(RoughingLayer {

@@ -15,8 +15,7 @@ use super::{Ctx, Judged};
 use geo::{Area, BoundingRect, ConvexHull, Coord, MultiPoint, MultiPolygon, Point};
 use geo::{Polygon, Rect};
 use std::collections::BTreeMap;
-pub use thinwall_analysis::boolean::union_all;
-use thinwall_analysis::boolean::{difference, intersection};
+use thinwall_analysis::boolean::{difference, intersection, union_all};
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 

@@ -19,10 +19,11 @@
 //! on those unions (over two minutes on NIST CTC 05), as it did on the
 //! joined outlines of whole faces.
 
-use super::floor::{grown, union_all};
+use super::floor::grown;
 use super::scene::Tri;
 use geo::{Coord, MultiPolygon, Polygon};
 use std::collections::{HashMap, HashSet};
+use thinwall_analysis::boolean::union_all;
 
 /// A projected corner this close to its edge's line (as a sine of the
 /// angle at the edge) leaves the side undecided: the edge is grown.
