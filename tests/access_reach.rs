@@ -465,9 +465,12 @@ fn largest_tool_fits(path: &std::path::Path, part: &Part, faces: &[FaceReach]) -
 /// values in docs/ACCESS.md): a closed 40 × 30 pocket with R5 upright
 /// corners is reached whole by Ø10 (twice the corner radius), bounded by a
 /// wall beside a corner, though Ø30 fits its floor; the Ø8 hole by Ø8.
-/// Tessellated material touches the tool within twice the tessellation's
-/// deviation (0.19 mm here), which a diameter may gain twice over, and the
-/// search's step is 0.5 %. The same as built and on turned copies.
+/// The hole and the corner blends are concave cylinders around the axis:
+/// exactly their diameters (reach::bore), and the run's Ø12 reaches none
+/// of them, with a note. Walls and the floor meet tessellated blends,
+/// which touch the tool within twice the tessellation's deviation (0.19 mm
+/// here), which a diameter may gain twice over, and the search's step is
+/// 0.5 %. The same as built and on turned copies.
 #[test]
 fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
     let path = common::root().join("fixtures/access/rounded_pocket.step");
@@ -513,8 +516,26 @@ fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
             .unwrap();
         assert_eq!(wall.contact, Contact::Side, "bounded by a wall");
         let hole = of(thinwall_analysis::MachiningKind::Hole);
-        near(hole.largest_tool_mm, 8.0, "hole");
+        close(hole.largest_tool_mm.unwrap(), 8.0, 1e-12, "hole");
         close(hole.fits_mm.unwrap(), 8.0, 1e-6, "hole fits");
+        let blends: Vec<_> = tools
+            .iter()
+            .filter(|t| t.kind == thinwall_analysis::MachiningKind::Fillet)
+            .collect();
+        assert_eq!(blends.len(), 4, "{blends:?}");
+        for b in &blends {
+            close(b.largest_tool_mm.unwrap(), 10.0, 1e-12, "corner blend");
+        }
+        let bore = faces
+            .iter()
+            .find(|f| Some(f.face) == hole.bounded_by)
+            .unwrap();
+        assert_eq!(bore.fraction, 0.0, "Ø12 in the Ø8 bore");
+        let note = bore.note.as_deref().unwrap_or_default();
+        assert!(
+            note.contains("Ø8.000") && note.contains("Ø12.000"),
+            "{note}"
+        );
         // The block's underside (the largest face, 80 × 50 less the hole)
         // faces away from the tool: `away`, not reached, no largest tool.
         let away: Vec<&FaceReach> = faces
@@ -527,15 +548,51 @@ fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
     }
 }
 
-/// NIST FTC 10's face `step_id` judged alone (every face still in the
-/// way) from `up`, with its largest tool.
-fn ftc_10_face(step_id: u64, up: [f64; 3]) -> FaceReach {
-    let path = common::shared_data().join("nist/nist_ftc_10_asme1_ap242-e2.stp");
+/// A tool as wide as a bore reaches all of it; one a hundredth of a
+/// millimetre wider reaches none (a cylinder touching a narrower arc from
+/// inside cuts it on both sides of the point): rounded_pocket.step's Ø8
+/// hole, as built and turned. Its triangles alone let a tool four
+/// tessellation deviations wider through.
+#[test]
+fn a_bore_bounds_the_tool_exactly() {
+    let path = common::root().join("fixtures/access/rounded_pocket.step");
+    let text = std::fs::read_to_string(&path).unwrap();
+    for pose in poses() {
+        let part = posed_part(&text, &pose);
+        let a = PartAnalysis::new(&part, Setup::new(pose.up(), Machine::ThreeAxis).unwrap());
+        let bore = part
+            .face_ids()
+            .find(|&f| {
+                a.concave_cylinder(f)
+                    .is_some_and(|c| (c.radius - 4.0).abs() < 1e-9)
+            })
+            .expect("the Ø8 bore");
+        let mesh = thinwall_brep::tessellate::part_mesh(&part);
+        let fraction = |d: f64| {
+            let opts = ReachOptions {
+                tool: Tool::new(d),
+                ..ReachOptions::default()
+            };
+            let got = thinwall_access::reach::reach_of(&a, &mesh, &opts, |f| f == bore).unwrap();
+            (got[0].fraction, got[0].blocked_by.clone())
+        };
+        assert!(fraction(8.0).0 >= 1.0 - 1e-4, "Ø8: {:?}", fraction(8.0));
+        let (wider, blocked_by) = fraction(8.01);
+        assert_eq!(wider, 0.0, "Ø8.01");
+        assert_eq!(blocked_by.len(), 1, "{blocked_by:?}");
+        assert_eq!(blocked_by[0].face, part.face(bore).step_id);
+    }
+}
+
+/// NIST part `file`'s face `step_id` judged alone (every face still in
+/// the way) from `up`, with its largest tool.
+fn nist_face(file: &str, step_id: u64, up: [f64; 3]) -> FaceReach {
+    let path = common::shared_data().join("nist").join(file);
     let part = thinwall_step::read_file(&path).unwrap().0;
     let face = part
         .face_ids()
         .find(|&f| part.face(f).step_id == step_id)
-        .unwrap_or_else(|| panic!("FTC 10 has face #{step_id}"));
+        .unwrap_or_else(|| panic!("{file} has face #{step_id}"));
     let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
     let mesh = thinwall_brep::tessellate::part_mesh(&part);
     let opts = ReachOptions {
@@ -545,6 +602,31 @@ fn ftc_10_face(step_id: u64, up: [f64; 3]) -> FaceReach {
     let mut got = thinwall_access::reach::reach_of(&a, &mesh, &opts, |f| f == face).unwrap();
     assert_eq!(got.len(), 1);
     got.remove(0)
+}
+
+fn ftc_10_face(step_id: u64, up: [f64; 3]) -> FaceReach {
+    nist_face("nist_ftc_10_asme1_ap242-e2.stp", step_id, up)
+}
+
+/// NIST CTC 02's Ø10.1 bolt hole #3066 (15 mm deep, through a flange):
+/// Ø12 reaches none of it, with a note, and its largest tool is its bore
+/// exactly. On a part this size a curved face's own chords touch the tool
+/// within 2.3 mm, so its triangles alone gave Ø12 99.9 % of it; and two
+/// slivers at its seam, corners on the arc at different heights, leaned
+/// down, away from every tool, so it had no largest tool at all.
+#[test]
+fn a_large_parts_bolt_hole_bounds_the_tool_at_its_bore() {
+    let f = nist_face("nist_ctc_02_asme1_ap242-e2.stp", 3066, [0.0, 0.0, 1.0]);
+    assert_eq!(f.contact, Contact::Curved);
+    assert_eq!(f.fraction, 0.0);
+    let note = f.note.as_deref().unwrap_or_default();
+    assert!(note.contains("Ø10.100"), "{note}");
+    close(
+        f.largest_tool_mm.expect("a largest tool"),
+        10.1,
+        1e-9,
+        "bore",
+    );
 }
 
 /// NIST FTC 10 lying on its side, seen from +z: floor #10176 (1110 mm²)

@@ -1,7 +1,7 @@
 //! The topology and geometry arenas of a part.
 
 use serde::{Deserialize, Serialize};
-use thinwall_geom::{BoundingBox, CurveKind, NurbsCurve, Point3, Surface, Tolerances};
+use thinwall_geom::{BoundingBox, CurveKind, NurbsCurve, Point3, Surface, Tolerances, Vector3};
 
 macro_rules! index_type {
     ($($name:ident),*) => {$(
@@ -88,6 +88,24 @@ pub struct Face {
     /// Outer loop(s) first. Each loop runs with the face on its left seen
     /// from the outward normal.
     pub loops: Vec<LoopId>,
+}
+
+impl Face {
+    /// The unit outward normal (out of the material) at a point on or near
+    /// the face; none where the surface has none (on an axis, at an apex).
+    /// A free-form face's foot point is searched from `hint` (the previous
+    /// point's parameters on this face), which is updated.
+    pub fn outward_normal(&self, p: &Point3, hint: &mut Option<(f64, f64)>) -> Option<Vector3> {
+        let n = match &self.surface {
+            Surface::Freeform { nurbs, .. } => {
+                let (u, v, _) = nurbs.invert(p, *hint);
+                *hint = Some((u, v));
+                thinwall_geom::surface::nurbs_normal(nurbs, u, v)?
+            }
+            s => s.normal_at(p)?,
+        };
+        Some(if self.same_sense { n } else { -n })
+    }
 }
 
 /// A face boundary.

@@ -591,14 +591,14 @@ fn triangulate(
     // out of the material is decided once for the face, by their 3-D
     // normals against the face's weighted by area (a sliver at a pole
     // has no reliable normal of its own).
-    let outward = face_normal(face);
     let agreement: f64 = out
         .iter()
         .map(|t| {
             let [a, b, c] = t.map(|i| points[i as usize]);
             let n = (b - a).cross(&(c - a));
             let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
-            outward(&centre).map_or(0.0, |o| n.dot(&o))
+            face.outward_normal(&centre, &mut None)
+                .map_or(0.0, |o| n.dot(&o))
         })
         .sum();
     if agreement < 0.0 {
@@ -607,20 +607,6 @@ fn triangulate(
         }
     }
     Ok(out)
-}
-
-/// The outward normal of a face at a point near it.
-fn face_normal(face: &Face) -> impl Fn(&Point3) -> Option<Vector3> + '_ {
-    move |p| {
-        let n = match &face.surface {
-            Surface::Freeform { nurbs, .. } => {
-                let (u, v, _) = nurbs.invert(p, None);
-                thinwall_geom::surface::nurbs_normal(nurbs, u, v)?
-            }
-            s => s.normal_at(p)?,
-        };
-        Some(if face.same_sense { n } else { -n })
-    }
 }
 
 /// A loop in the parameter plane, angles unrolled continuously; with the

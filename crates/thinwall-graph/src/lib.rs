@@ -13,7 +13,7 @@ use petgraph::graph::{NodeIndex, UnGraph};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 use thinwall_brep::{EdgeId, FaceId, Part};
-use thinwall_geom::{Point3, Surface, Tolerances, Vector3};
+use thinwall_geom::{Surface, Tolerances};
 
 /// How two faces meet along an edge.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
@@ -159,27 +159,6 @@ impl AdjacencyGraph {
 
 use petgraph::visit::EdgeRef;
 
-/// Outward normal of `face` at `p`. For a free-form face the foot point is
-/// searched from `hint` (the previous sample's parameters on that face),
-/// which is updated.
-fn outward_normal(
-    part: &Part,
-    face: FaceId,
-    p: &Point3,
-    hint: &mut Option<(f64, f64)>,
-) -> Option<Vector3> {
-    let f = part.face(face);
-    let n = match &f.surface {
-        Surface::Freeform { nurbs, .. } => {
-            let (u, v, _) = nurbs.invert(p, *hint);
-            *hint = Some((u, v));
-            thinwall_geom::surface::nurbs_normal(nurbs, u, v)?
-        }
-        s => s.normal_at(p)?,
-    };
-    Some(if f.same_sense { n } else { -n })
-}
-
 fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances) -> EdgeAttr {
     let e = part.edge(edge);
     let mut attr = EdgeAttr {
@@ -222,8 +201,8 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         let t = a + (b - a) * (k as f64 + 0.5) / n_samples as f64;
         let (p, d) = curve.eval(t);
         let (Some(n1), Some(n2)) = (
-            outward_normal(part, f1, &p, &mut hint1),
-            outward_normal(part, f2, &p, &mut hint2),
+            part.face(f1).outward_normal(&p, &mut hint1),
+            part.face(f2).outward_normal(&p, &mut hint2),
         ) else {
             continue;
         };

@@ -9,7 +9,7 @@
 //! judged again only at the triangles that size left.
 
 use super::scene::Scene;
-use super::{contact, floor, sampled, side, Contact, Ctx, Judged, WHOLE_SHARE};
+use super::{bore, contact, floor, sampled, side, Contact, Ctx, Judged, WHOLE_SHARE};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::tessellate::Mesh;
 
@@ -26,8 +26,10 @@ pub const TOOL_PRECISION: f64 = 0.005;
 /// twice the face's size) or halving down until the answer changes, then
 /// bisecting in proportion. Down, the smallest tool ([`SMALLEST_TOOL`]) is
 /// tried first: a face it cannot reach whole has no answer, found in one
-/// judgement rather than a halving each. The result is always a size
-/// judged whole.
+/// judgement rather than a halving each. A concave cylinder around the
+/// axis ([`bore`]) is tried at its own diameter first: no wider tool
+/// reaches it, so a bore reached whole at its size is answered exactly.
+/// The result is always a size judged whole.
 pub fn largest_tool(
     a: &PartAnalysis,
     mesh: &Mesh,
@@ -38,7 +40,16 @@ pub fn largest_tool(
 ) -> Option<f64> {
     let f = mesh.faces[own as usize].face;
     let mut judge = WholeJudge::new(a, mesh, ctx, scene, own);
-    let limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
+    let mut limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
+    if let Some(b) = judge.bound {
+        if b < SMALLEST_TOOL {
+            return None;
+        }
+        if judge.whole(b) {
+            return Some(b);
+        }
+        limit = limit.min(b);
+    }
     let size = ctx.tool.diameter.clamp(SMALLEST_TOOL, limit);
     // The run's own tool was judged already, unless clamped.
     let given_reaches = if size == ctx.tool.diameter {
@@ -108,6 +119,10 @@ struct WholeJudge<'a> {
     hints: Vec<u32>,
     /// A curved face: its triangles' area, mm².
     area: f64,
+    /// A concave cylinder around the axis: its diameter, mm.
+    bound: Option<f64>,
+    /// Sizes judged, and whether whole.
+    known: Vec<(f64, bool)>,
 }
 
 impl<'a> WholeJudge<'a> {
@@ -127,11 +142,23 @@ impl<'a> WholeJudge<'a> {
             failed: None,
             hints: Vec::new(),
             area: mesh.face_area(&mesh.faces[own as usize]),
+            bound: bore::limit(a, scene, mesh.faces[own as usize].face),
+            known: Vec::new(),
         }
     }
 
-    /// Whether the tool of diameter `d` reaches the face whole.
+    /// Whether the tool of diameter `d` reaches the face whole (each
+    /// size judged once).
     fn whole(&mut self, d: f64) -> bool {
+        if let Some(&(_, w)) = self.known.iter().find(|k| k.0 == d) {
+            return w;
+        }
+        let w = self.judge(d);
+        self.known.push((d, w));
+        w
+    }
+
+    fn judge(&mut self, d: f64) -> bool {
         let ctx = Ctx {
             tool: self.ctx.tool.scaled(d),
             touch: self.ctx.touch,
@@ -144,6 +171,7 @@ impl<'a> WholeJudge<'a> {
             Some((Contact::Side, Some(pf))) => {
                 side::judge_within(&ctx, self.scene, pf, self.own, WHOLE_SHARE)
             }
+            Some(_) if self.bound.is_some_and(|b| bore::too_wide(&ctx, b)) => return false,
             Some(_) => return self.curved_whole(&ctx, d),
         };
         !j.cut_short && j.fraction() >= 1.0 - WHOLE_SHARE
@@ -166,10 +194,12 @@ impl<'a> WholeJudge<'a> {
         // Stable: hinted first, each part in its own order.
         order.sort_by_key(|&k| !hinted[k as usize]);
         let budget = WHOLE_SHARE * self.area;
+        let face = self.a.part().face(self.mesh.faces[self.own as usize].face);
         let j = sampled::judge_some(
             ctx,
             self.scene,
             self.mesh,
+            face,
             self.own,
             order.into_iter(),
             budget,

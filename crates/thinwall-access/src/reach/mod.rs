@@ -19,6 +19,7 @@
 //! a face reports the axes that reach it whole, or the best and its
 //! fraction.
 
+pub mod bore;
 pub mod features;
 pub mod floor;
 pub mod interval;
@@ -460,12 +461,18 @@ pub fn judge(
             (Contact::Floor, floor::judge(ctx, scene, pf, own, true))
         }
         Some((Contact::Side, Some(pf))) => (Contact::Side, side::judge(ctx, scene, pf, own)),
-        Some(_) => (Contact::Curved, sampled::judge(ctx, scene, mesh, own)),
+        Some(_) => match bore::limit(a, scene, f) {
+            Some(d) if bore::too_wide(ctx, d) => (Contact::Curved, bore::none_reached(mesh, own)),
+            _ => (
+                Contact::Curved,
+                sampled::judge(ctx, scene, mesh, a.part().face(f), own),
+            ),
+        },
     }
 }
 
 /// A face's triangles as outlines.
-fn sampled_outline(mesh: &Mesh, own: u32) -> Vec<Vec<[f64; 3]>> {
+pub(crate) fn sampled_outline(mesh: &Mesh, own: u32) -> Vec<Vec<[f64; 3]>> {
     mesh.faces[own as usize]
         .triangles
         .iter()
@@ -530,9 +537,18 @@ fn face_reach(
             .then(x.face.cmp(&y.face))
             .then(x.by.cmp(&y.by))
     });
-    let note = (j.away > 0.5 * j.area && j.area > 0.0).then(|| {
-        "turned away from the tool axis (an undercut): another set-up, or a tilted axis".to_string()
-    });
+    let narrow = bore::limit(a, &scenes[best], f).filter(|&d| bore::too_wide(ctx, d));
+    let note = if let Some(d) = narrow {
+        Some(format!(
+            "a concave Ø{d:.3} around the tool axis, narrower than the Ø{:.3} tool",
+            ctx.tool.diameter
+        ))
+    } else {
+        (j.away > 0.5 * j.area && j.area > 0.0).then(|| {
+            "turned away from the tool axis (an undercut): another set-up, or a tilted axis"
+                .to_string()
+        })
+    };
     // Not for a face turned away from up: no tool reaches it.
     let facing = judged[0].1.away <= 0.5 * judged[0].1.area;
     let largest_tool_mm = (largest && facing)

@@ -3,16 +3,22 @@
 //! end where the face is square to the axis, with the corner of its end
 //! elsewhere (its axis one radius out along the level normal), and must not
 //! cut into any material, the face's own included (a flat end mill cannot
-//! touch the bottom of a bowl narrower than itself).
+//! touch the bottom of a bowl narrower than itself). The face's direction
+//! at a triangle is the surface's outward normal at its middle, where the
+//! surface has one: a sliver at a seam, its corners on the arc at
+//! different heights, leans off the true direction (NIST CTC 02's Ø10.1
+//! bores had two such triangles facing down, away from every tool).
 
 use super::scene::{point_stops, Scene};
 use super::{Ctx, Judged, FLOOR_COS, UNDERCUT_SIN};
 use thinwall_brep::tessellate::Mesh;
+use thinwall_brep::Face;
 use thinwall_geom::Point3;
 
-pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, own: u32) -> Judged {
+/// Face `own` (mesh index), whose B-rep face is `face`.
+pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, face: &Face, own: u32) -> Judged {
     let n = mesh.faces[own as usize].triangles.len() as u32;
-    judge_some(ctx, scene, mesh, own, 0..n, f64::INFINITY)
+    judge_some(ctx, scene, mesh, face, own, 0..n, f64::INFINITY)
 }
 
 /// As [`judge`], at the triangles `some` of the face only (indices into
@@ -27,6 +33,7 @@ pub fn judge_some(
     ctx: &Ctx,
     scene: &Scene,
     mesh: &Mesh,
+    face: &Face,
     own: u32,
     some: impl Iterator<Item = u32>,
     lost_mm2: f64,
@@ -36,6 +43,7 @@ pub fn judge_some(
     let tris = &mesh.faces[own as usize].triangles;
     let mut out = Judged::default();
     let mut stops: Vec<(u32, bool)> = Vec::new();
+    let mut hint = None;
     for k in some {
         if out.area - out.reached > lost_mm2 {
             out.cut_short = true;
@@ -50,7 +58,10 @@ pub fn judge_some(
         out.area += area;
         let mid = Point3::from((a.coords + b.coords + c.coords) / 3.0);
         let p = scene.local(&mid);
-        let n = scene.local_vector(&(n / (2.0 * area)));
+        let n = face
+            .outward_normal(&mid, &mut hint)
+            .unwrap_or(n / (2.0 * area));
+        let n = scene.local_vector(&n);
         if n[2] < -UNDERCUT_SIN {
             out.away += area;
             out.lost.push(k);
