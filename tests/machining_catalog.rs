@@ -164,7 +164,7 @@ fn print(s: &Score, what: &str) {
 }
 
 /// Measured on the data the rules were written against (in-sample:
-/// 98.56 % today): a floor that keeps them from getting worse. The issue's
+/// 99.03 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
 const FLOOR: f64 = 0.98;
 

@@ -105,6 +105,25 @@ pub(crate) struct Typed {
 }
 
 /// Walls of `group` adjacent to wall `w` (sharing an edge).
+/// Whether walls with these normals (into the void) can close round a
+/// floor of normal `n`: seen along it, their directions leave no half-turn
+/// free (three walls of a slot, two facing and a back, leave the open end's
+/// side).
+fn surrounds(walls: &[Vector3], n: &Vector3) -> bool {
+    let u = thinwall_geom::frame::any_perpendicular(n);
+    let v = n.cross(&u);
+    let mut angles: Vec<f64> = walls.iter().map(|w| w.dot(&v).atan2(w.dot(&u))).collect();
+    angles.sort_by(f64::total_cmp);
+    let (Some(&first), Some(&last)) = (angles.first(), angles.last()) else {
+        return false;
+    };
+    let widest = angles
+        .windows(2)
+        .map(|p| p[1] - p[0])
+        .fold(std::f64::consts::TAU - (last - first), f64::max);
+    widest < std::f64::consts::PI - NEAR_PARALLEL_EPS.sqrt()
+}
+
 fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
     a.graph()
         .neighbours(w)
@@ -445,6 +464,7 @@ impl<'g> GroupShape<'g> {
             .filter(|&f| a.props(f).normal.is_some_and(|n| !on_floor(&n)))
             .collect();
         let closed = w >= 3
+            && floor.is_none_or(|(n, _)| surrounds(&walls, &n))
             && wall_faces
                 .iter()
                 .all(|&f| wall_neighbours(a, f, &wall_faces) >= 2);
@@ -641,4 +661,44 @@ fn hole_typing(
         Profile::Circular
     };
     (MachiningKind::Hole, !bottom, profile)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f64, y: f64, z: f64) -> Vector3 {
+        Vector3::new(x, y, z).normalize()
+    }
+
+    /// A rectangle's four walls and a triangle's three close round a
+    /// floor; a blind slot's two facing walls and back leave its open end,
+    /// as do two walls of a corner. The floor's own turn does not matter.
+    #[test]
+    fn walls_surround_a_floor_only_when_no_half_turn_is_free() {
+        let s = 0.75_f64.sqrt();
+        for n in [v(0.0, 0.0, 1.0), v(0.3, -0.2, 0.9)] {
+            let u = thinwall_geom::frame::any_perpendicular(&n);
+            let (u, w) = (u, n.cross(&u));
+            let t = |ws: Vec<Vector3>| {
+                ws.into_iter()
+                    .map(|x| u * x.x + w * x.y + n * x.z)
+                    .collect::<Vec<_>>()
+            };
+            let rect = t(vec![
+                v(1.0, 0.0, 0.0),
+                v(-1.0, 0.0, 0.0),
+                v(0.0, 1.0, 0.0),
+                v(0.0, -1.0, 0.0),
+            ]);
+            let tri = t(vec![v(1.0, 0.0, 0.0), v(-0.5, s, 0.0), v(-0.5, -s, 0.0)]);
+            let slot = t(vec![v(0.0, 1.0, 0.0), v(0.0, -1.0, 0.0), v(1.0, 0.0, 0.0)]);
+            let corner = t(vec![v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0)]);
+            assert!(surrounds(&rect, &n));
+            assert!(surrounds(&tri, &n));
+            assert!(!surrounds(&slot, &n));
+            assert!(!surrounds(&corner, &n));
+            assert!(!surrounds(&[], &n));
+        }
+    }
 }
