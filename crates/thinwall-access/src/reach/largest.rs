@@ -12,6 +12,7 @@ use super::scene::Scene;
 use super::{bore, contact, floor, sampled, side, Contact, Ctx, Judged, WHOLE_SHARE};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::tessellate::Mesh;
+use thinwall_geom::Vector3;
 
 /// Smallest tool the largest-tool search tries, mm.
 pub const SMALLEST_TOOL: f64 = 0.5;
@@ -36,10 +37,11 @@ pub fn largest_tool(
     ctx: &Ctx,
     scene: &Scene,
     own: u32,
+    normals: &[Vector3],
     given: &Judged,
 ) -> Option<f64> {
     let f = mesh.faces[own as usize].face;
-    let mut judge = WholeJudge::new(a, mesh, ctx, scene, own);
+    let mut judge = WholeJudge::new(a, mesh, ctx, scene, own, normals);
     let mut limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
     if let Some(b) = judge.bound {
         if b < SMALLEST_TOOL {
@@ -112,6 +114,8 @@ struct WholeJudge<'a> {
     ctx: &'a Ctx,
     scene: &'a Scene,
     own: u32,
+    /// A curved face: its triangles' directions.
+    normals: &'a [Vector3],
     /// A curved face: the smallest size found to fail, and every triangle
     /// it left.
     failed: Option<(f64, Vec<u32>)>,
@@ -132,6 +136,7 @@ impl<'a> WholeJudge<'a> {
         ctx: &'a Ctx,
         scene: &'a Scene,
         own: u32,
+        normals: &'a [Vector3],
     ) -> Self {
         Self {
             a,
@@ -139,6 +144,7 @@ impl<'a> WholeJudge<'a> {
             ctx,
             scene,
             own,
+            normals,
             failed: None,
             hints: Vec::new(),
             area: mesh.face_area(&mesh.faces[own as usize]),
@@ -194,12 +200,11 @@ impl<'a> WholeJudge<'a> {
         // Stable: hinted first, each part in its own order.
         order.sort_by_key(|&k| !hinted[k as usize]);
         let budget = WHOLE_SHARE * self.area;
-        let face = self.a.part().face(self.mesh.faces[self.own as usize].face);
         let j = sampled::judge_some(
             ctx,
             self.scene,
             self.mesh,
-            face,
+            self.normals,
             self.own,
             order.into_iter(),
             budget,

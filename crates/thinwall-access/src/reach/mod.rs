@@ -437,13 +437,15 @@ pub fn contact<'p>(
     }
 }
 
-/// How face `own` (mesh index) is judged on one scene.
+/// How face `own` (mesh index) is judged on one scene; `normals`: its
+/// triangles' directions when curved ([`sampled::normals`]).
 pub fn judge(
     a: &PartAnalysis,
     mesh: &Mesh,
     ctx: &Ctx,
     scene: &Scene,
     own: u32,
+    normals: &[Vector3],
 ) -> (Contact, Judged) {
     let f: FaceId = mesh.faces[own as usize].face;
     match contact(a, scene, f) {
@@ -465,7 +467,7 @@ pub fn judge(
             Some(d) if bore::too_wide(ctx, d) => (Contact::Curved, bore::none_reached(mesh, own)),
             _ => (
                 Contact::Curved,
-                sampled::judge(ctx, scene, mesh, a.part().face(f), own),
+                sampled::judge(ctx, scene, mesh, normals, own),
             ),
         },
     }
@@ -491,8 +493,15 @@ fn face_reach(
     let part = a.part();
     let f = mesh.faces[own as usize].face;
     let face = part.face(f);
-    let judged: Vec<(Contact, Judged)> =
-        scenes.iter().map(|s| judge(a, mesh, ctx, s, own)).collect();
+    let normals = if a.planar(f).is_none() {
+        sampled::normals(face, mesh, own)
+    } else {
+        Vec::new()
+    };
+    let judged: Vec<(Contact, Judged)> = scenes
+        .iter()
+        .map(|s| judge(a, mesh, ctx, s, own, &normals))
+        .collect();
     let mut best = 0;
     for (k, j) in judged.iter().enumerate() {
         if j.1.fraction() > judged[best].1.fraction() + 1e-12 {
@@ -552,7 +561,7 @@ fn face_reach(
     // Not for a face turned away from up: no tool reaches it.
     let facing = judged[0].1.away <= 0.5 * judged[0].1.area;
     let largest_tool_mm = (largest && facing)
-        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, &judged[0].1))
+        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, &normals, &judged[0].1))
         .flatten();
     FaceReach {
         face: face.step_id,

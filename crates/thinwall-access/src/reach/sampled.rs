@@ -13,12 +13,34 @@ use super::scene::{point_stops, Scene};
 use super::{Ctx, Judged, FLOOR_COS, UNDERCUT_SIN};
 use thinwall_brep::tessellate::Mesh;
 use thinwall_brep::Face;
-use thinwall_geom::Point3;
+use thinwall_geom::{Point3, Vector3};
 
-/// Face `own` (mesh index), whose B-rep face is `face`.
-pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, face: &Face, own: u32) -> Judged {
+/// The outward direction (world, unit) of face `own` (mesh index, B-rep
+/// face `face`) at each of its triangles: the surface's at the triangle's
+/// middle, else the triangle's own. Found once per face: every axis and
+/// every tool size judges the same triangles.
+pub fn normals(face: &Face, mesh: &Mesh, own: u32) -> Vec<Vector3> {
+    let mut hint = None;
+    mesh.faces[own as usize]
+        .triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| mesh.points[i as usize]);
+            let mid = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+            face.outward_normal(&mid, &mut hint).unwrap_or_else(|| {
+                (b - a)
+                    .cross(&(c - a))
+                    .try_normalize(0.0)
+                    .unwrap_or_else(Vector3::zeros)
+            })
+        })
+        .collect()
+}
+
+/// Face `own` (mesh index), its triangles' [`normals`] given.
+pub fn judge(ctx: &Ctx, scene: &Scene, mesh: &Mesh, normals: &[Vector3], own: u32) -> Judged {
     let n = mesh.faces[own as usize].triangles.len() as u32;
-    judge_some(ctx, scene, mesh, face, own, 0..n, f64::INFINITY)
+    judge_some(ctx, scene, mesh, normals, own, 0..n, f64::INFINITY)
 }
 
 /// As [`judge`], at the triangles `some` of the face only (indices into
@@ -33,7 +55,7 @@ pub fn judge_some(
     ctx: &Ctx,
     scene: &Scene,
     mesh: &Mesh,
-    face: &Face,
+    normals: &[Vector3],
     own: u32,
     some: impl Iterator<Item = u32>,
     lost_mm2: f64,
@@ -43,7 +65,6 @@ pub fn judge_some(
     let tris = &mesh.faces[own as usize].triangles;
     let mut out = Judged::default();
     let mut stops: Vec<(u32, bool)> = Vec::new();
-    let mut hint = None;
     for k in some {
         if out.area - out.reached > lost_mm2 {
             out.cut_short = true;
@@ -58,10 +79,7 @@ pub fn judge_some(
         out.area += area;
         let mid = Point3::from((a.coords + b.coords + c.coords) / 3.0);
         let p = scene.local(&mid);
-        let n = face
-            .outward_normal(&mid, &mut hint)
-            .unwrap_or(n / (2.0 * area));
-        let n = scene.local_vector(&n);
+        let n = scene.local_vector(&normals[k as usize]);
         if n[2] < -UNDERCUT_SIN {
             out.away += area;
             out.lost.push(k);
