@@ -93,6 +93,26 @@ struct Score {
     wrong_files: Vec<String>,
 }
 
+/// A part's machining features, as built or turned by the rigid motion
+/// of `seed`.
+fn recognize_file(
+    f: &std::path::Path,
+    seed: Option<u64>,
+) -> (thinwall_brep::Part, Vec<MachiningFeature>) {
+    let text = std::fs::read_to_string(f).unwrap();
+    let text = match seed {
+        Some(seed) => {
+            let (r, t) = common::rigid_motion(seed);
+            common::turned_step(&text, &r, &t).0
+        }
+        None => text,
+    };
+    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step")
+        .unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+    let feats = recognize(&PartAnalysis::new(&part, Setup::default()));
+    (part, feats)
+}
+
 fn score(turn: bool) -> Score {
     let files = common::step_files(&common::shared_data().join("mfcadpp_gen"));
     assert_eq!(files.len(), 240);
@@ -105,16 +125,7 @@ fn score(turn: bool) -> Score {
     };
     for (i, f) in files.iter().enumerate() {
         let truth = labels(f);
-        let text = std::fs::read_to_string(f).unwrap();
-        let text = if turn {
-            let (r, t) = common::rigid_motion(1000 + i as u64);
-            common::turned_step(&text, &r, &t).0
-        } else {
-            text
-        };
-        let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step")
-            .unwrap_or_else(|e| panic!("{}: {e}", f.display()));
-        let feats = recognize(&PartAnalysis::new(&part, Setup::default()));
+        let (part, feats) = recognize_file(f, turn.then_some(1000 + i as u64));
         let got = predicted(&feats);
         // TW_DEBUG=<file name part> [TW_TURN=1]: print the wrong features
         // (for work on the catalogue; silent otherwise).
@@ -164,7 +175,7 @@ fn print(s: &Score, what: &str) {
 }
 
 /// Measured on the data the rules were written against (in-sample:
-/// 99.03 % today): a floor that keeps them from getting worse. The issue's
+/// 99.12 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
 const FLOOR: f64 = 0.98;
 
@@ -200,4 +211,35 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
     // More than that is a real dependence on the pose.
     println!("faces classed differently when turned: {differ:#?}");
     assert!(differ.len() <= 1, "{differ:#?}");
+}
+
+/// What other cuts left of a feature keeps its catalogue name, as built
+/// and turned: a through hole's slivers between a hexagonal passage's
+/// walls (no block face, no floor); a quarter-round corner step whose
+/// floor a V-notch cut away; a slot along an edge whose quarter-round end
+/// a chamfer trimmed below 90°.
+#[test]
+fn pieces_other_cuts_left_keep_their_catalogue_name() {
+    let cases: [(&str, &[u64], Catalog); 4] = [
+        ("s2718_0108", &[4612], Catalog::ThroughHole),
+        ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
+        ("s2718_0195", &[1908], Catalog::CircularBlindStep),
+        (
+            "s2718_0113",
+            &[902, 1459, 1612, 1639],
+            Catalog::HCircularEndBlindSlot,
+        ),
+    ];
+    let dir = common::shared_data().join("mfcadpp_gen");
+    for (stem, faces, want) in cases {
+        let f = dir.join(format!("{stem}.step"));
+        assert!(faces.iter().all(|x| labels(&f)[x] == want.id()));
+        for seed in [None, Some(7), Some(8)] {
+            let (_, feats) = recognize_file(&f, seed);
+            let got = predicted(&feats);
+            for x in faces {
+                assert_eq!(got.get(x), Some(&want.id()), "{stem} #{x} turned {seed:?}");
+            }
+        }
+    }
 }

@@ -279,6 +279,14 @@ impl<'g> GroupShape<'g> {
         other_hole || round_sweep >= CUT_HOLE_SWEEP_DEG
     }
 
+    /// Whether the group meets three block planes or more, no two of them
+    /// opposite.
+    fn corner_only(&self) -> bool {
+        self.touched.len() >= 3
+            && (0..3)
+                .all(|k| !(self.touched.contains(&(2 * k)) && self.touched.contains(&(2 * k + 1))))
+    }
+
     /// How far round, together, the concave cylinders on the first one's
     /// axis go, degrees.
     fn round_sweep(&self, a: &PartAnalysis) -> f64 {
@@ -336,9 +344,12 @@ impl<'g> GroupShape<'g> {
             })
         });
         let half = halves > 0;
-        let quarters = sweeps
-            .iter()
-            .all(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG);
+        // Quarter circles, one of which a chamfer or another cut may have
+        // trimmed.
+        let quarters = sweeps.iter().all(|&s| s < QUARTER_DEG + QUARTER_SLACK_DEG)
+            && sweeps
+                .iter()
+                .any(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG);
         let typed = |kind, through, profile, catalog| Typed {
             kind,
             through,
@@ -363,6 +374,16 @@ impl<'g> GroupShape<'g> {
             // A half circle through the part (one plane beside it: where
             // material beyond the edge closed its open side lower down).
             typed(Slot, true, Profile::Circular, Some(C::CircularThroughSlot))
+        } else if walls.is_empty() && !floor && self.touched.is_empty() {
+            // Both ends cut away by other features and no floor: what is
+            // left of a hole through the part (a slot through it opens
+            // onto the block).
+            typed(Hole, true, Profile::Circular, Some(C::ThroughHole))
+        } else if walls.is_empty() && !floor && !half && self.corner_only() {
+            // A quarter circle meeting block planes square to each other
+            // only (the top and a corner's two sides), its floor cut away
+            // by another feature: a step round a corner.
+            typed(Step, false, Profile::Circular, Some(C::CircularBlindStep))
         } else if walls.is_empty() && !floor {
             typed(Slot, true, Profile::Circular, None)
         } else if walls.is_empty() {
