@@ -175,7 +175,7 @@ fn print(s: &Score, what: &str) {
 }
 
 /// Measured on the data the rules were written against (in-sample:
-/// 99.12 % today): a floor that keeps them from getting worse. The issue's
+/// 99.17 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
 const FLOOR: f64 = 0.98;
 
@@ -217,10 +217,11 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// and turned: a through hole's slivers between a hexagonal passage's
 /// walls (no block face, no floor); a quarter-round corner step whose
 /// floor a V-notch cut away; a slot along an edge whose quarter-round end
-/// a chamfer trimmed below 90°.
+/// a chamfer trimmed below 90°; a slot's one round end that a through hole
+/// split in two (not a pocket's two ends).
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 4] = [
+    let cases: [(&str, &[u64], Catalog); 5] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -228,6 +229,11 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             "s2718_0113",
             &[902, 1459, 1612, 1639],
             Catalog::HCircularEndBlindSlot,
+        ),
+        (
+            "s2718_0167",
+            &[1765, 1837, 1909, 2220, 2248],
+            Catalog::VCircularEndBlindSlot,
         ),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");

@@ -287,6 +287,23 @@ impl<'g> GroupShape<'g> {
                 .all(|k| !(self.touched.contains(&(2 * k)) && self.touched.contains(&(2 * k + 1))))
     }
 
+    /// How far round the widest concave cylinder on each of their distinct
+    /// axes goes, degrees.
+    fn end_sweeps(&self, a: &PartAnalysis) -> Vec<f64> {
+        let tol = crate::axis_tol(a);
+        let mut ends: Vec<(Cylinder, f64)> = Vec::new();
+        for &f in self.group {
+            let (Some(c), Some(s)) = (a.concave_cylinder(f), a.cylinder_sweep_deg(f)) else {
+                continue;
+            };
+            match ends.iter_mut().find(|(e, _)| e.coaxial(&c, tol)) {
+                Some(end) => end.1 = end.1.max(s),
+                None => ends.push((c, s)),
+            }
+        }
+        ends.into_iter().map(|(_, s)| s).collect()
+    }
+
     /// How far round, together, the concave cylinders on the first one's
     /// axis go, degrees.
     fn round_sweep(&self, a: &PartAnalysis) -> f64 {
@@ -337,7 +354,10 @@ impl<'g> GroupShape<'g> {
             .filter_map(|&f| a.cylinder_sweep_deg(f))
             .collect();
         let round_sweep = self.round_sweep(a);
-        let halves = sweeps.iter().filter(|&&s| s >= HALF_SWEEP_DEG).count();
+        // A round end another cut split in pieces is one end (each piece
+        // may span the whole arc at its own height).
+        let ends = self.end_sweeps(a);
+        let halves = ends.iter().filter(|&&s| s >= HALF_SWEEP_DEG).count();
         let tangent_wall = walls.iter().any(|&w| {
             a.graph().neighbours(w).any(|(g, adj)| {
                 adj.convexity == Convexity::Smooth && a.concave_cylinder(g).is_some()
@@ -400,7 +420,7 @@ impl<'g> GroupShape<'g> {
             )
         } else if !floor {
             typed(Slot, true, Profile::CircularEnd, None)
-        } else if halves >= 1 && sweeps.len() >= 2 {
+        } else if halves >= 1 && ends.len() >= 2 {
             // Two round ends (one may be cut short by another feature).
             typed(
                 Pocket,
