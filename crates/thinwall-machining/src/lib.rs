@@ -34,6 +34,7 @@ mod chamfer;
 mod closed_slot;
 mod facing;
 mod fragments;
+mod island;
 mod options;
 mod patterns;
 mod shape;
@@ -76,6 +77,10 @@ pub struct MachiningFeature {
     pub bottom_faces: Vec<u64>,
     /// The other faces (walls).
     pub side_faces: Vec<u64>,
+    /// The walls of islands standing in it (a pocket with islands), among
+    /// its side faces; the pocket is typed and measured without them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub island_faces: Vec<u64>,
     /// Which block planes it opens to, as outward normals.
     pub open_to: Vec<[f64; 3]>,
     /// mm along the direction.
@@ -125,6 +130,7 @@ impl MachiningFeature {
             faces: a.step_ids(faces),
             bottom_faces: vec![],
             side_faces: a.step_ids(faces),
+            island_faces: vec![],
             open_to: vec![],
             depth: 0.0,
             length: 0.0,
@@ -297,6 +303,23 @@ fn cut_features(
         out.push(boss::boss_feature(a, &group));
         taken.extend(group);
     }
+    // Prismatic bosses: rings of walls standing on a floor, outside
+    // corners between them.
+    let candidates: Vec<FaceId> = candidates
+        .into_iter()
+        .filter(|f| !taken.contains(f))
+        .collect();
+    // An island in a pocket stays in its pocket's group, but the pocket
+    // is typed without it.
+    let mut pocket_islands: BTreeSet<FaceId> = BTreeSet::new();
+    for island in island::islands(a, &candidates) {
+        if island.in_pocket {
+            pocket_islands.extend(island.walls);
+        } else {
+            out.push(island::island_feature(a, &island));
+            taken.extend(island.walls);
+        }
+    }
     // Depressions: concave-connected groups (hole halves across their
     // seam), joined also through the concave blends and bevels between
     // their faces (a filleted pocket's floor and walls are one pocket).
@@ -341,7 +364,13 @@ fn cut_features(
             out.extend(lone_face(a, block, &group, &touched));
             continue;
         }
-        out.push(depression_feature(a, block, &group, &touched));
+        out.push(depression_feature(
+            a,
+            block,
+            &group,
+            &touched,
+            &pocket_islands,
+        ));
     }
     out
 }
@@ -379,7 +408,7 @@ fn lone_face(
             return Some(facing::face_feature(a, faces, &n, depth));
         }
     }
-    let feature = depression_feature(a, block, faces, touched);
+    let feature = depression_feature(a, block, faces, touched, &BTreeSet::new());
     let side = feature.kind != MachiningKind::Chamfer
         && feature.length >= PART_SIDE_SHARE * block.largest_extent();
     (!side).then_some(feature)
@@ -477,9 +506,27 @@ fn largest_tool(
 fn depression_feature(
     a: &PartAnalysis,
     stock: &Stock,
-    group: &[FaceId],
+    whole: &[FaceId],
     touched: &BTreeSet<usize>,
+    islands: &BTreeSet<FaceId>,
 ) -> MachiningFeature {
+    // Typed and measured without the islands standing in it.
+    let group: Vec<FaceId> = whole
+        .iter()
+        .copied()
+        .filter(|f| !islands.contains(f))
+        .collect();
+    let island_walls: Vec<FaceId> = whole
+        .iter()
+        .copied()
+        .filter(|f| islands.contains(f))
+        .collect();
+    let group = if group.is_empty() {
+        whole.to_vec()
+    } else {
+        group
+    };
+    let group = group.as_slice();
     let shape = shape::GroupShape::new(a, stock, group, touched);
     let shape::Typed {
         kind,
@@ -520,9 +567,10 @@ fn depression_feature(
         profile,
         catalog,
         direction: [dir.x, dir.y, dir.z],
-        faces: a.step_ids(group),
+        faces: a.step_ids(whole),
         bottom_faces: a.step_ids(&bottom),
-        side_faces: a.step_ids(&sides),
+        side_faces: a.step_ids(&[sides, island_walls.clone()].concat()),
+        island_faces: a.step_ids(&island_walls),
         open_to: touched
             .iter()
             .map(|&sp| {

@@ -323,6 +323,7 @@ mod tests {
             faces: vec![u64::from(id)],
             bottom_faces: vec![],
             side_faces: vec![u64::from(id)],
+            island_faces: vec![],
             open_to: vec![],
             depth: 5.0,
             length: 6.0,

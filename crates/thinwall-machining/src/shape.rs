@@ -35,7 +35,7 @@ const TRIANGLE_FILL: f64 = 0.6;
 /// walls at 60° or parallel to each other, or four with a parallel pair
 /// and one at 60°, a hexagon; walls square or parallel only, a
 /// rectangle; three walls with no two parallel, a triangle.
-fn ring_profile(walls: &[Vector3]) -> Profile {
+pub(crate) fn ring_profile(walls: &[Vector3]) -> Profile {
     let cos = |i: usize, j: usize| walls[i].dot(&walls[j]);
     let pairs = || (0..walls.len()).flat_map(|i| (i + 1..walls.len()).map(move |j| (i, j)));
     let square_or_parallel = pairs().all(|(i, j)| {
@@ -104,12 +104,11 @@ pub(crate) struct Typed {
     pub catalog: Option<Catalog>,
 }
 
-/// Walls of `group` adjacent to wall `w` (sharing an edge).
 /// Whether walls with these normals (into the void) can close round a
 /// floor of normal `n`: seen along it, their directions leave no half-turn
 /// free (three walls of a slot, two facing and a back, leave the open end's
 /// side).
-fn surrounds(walls: &[Vector3], n: &Vector3) -> bool {
+pub(crate) fn surrounds(walls: &[Vector3], n: &Vector3) -> bool {
     let u = thinwall_geom::frame::any_perpendicular(n);
     let v = n.cross(&u);
     let mut angles: Vec<f64> = walls.iter().map(|w| w.dot(&v).atan2(w.dot(&u))).collect();
@@ -124,6 +123,7 @@ fn surrounds(walls: &[Vector3], n: &Vector3) -> bool {
     widest < std::f64::consts::PI - NEAR_PARALLEL_EPS.sqrt()
 }
 
+/// Walls of `group` adjacent to wall `w` (sharing an edge).
 fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
     a.graph()
         .neighbours(w)

@@ -285,7 +285,7 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
     for m in features {
         let _ = writeln!(
             s,
-            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}{}{}",
+            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}{}{}{}",
             m.id,
             m.kind,
             m.profile,
@@ -294,6 +294,10 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
             m.length,
             m.width,
             m.faces.len(),
+            match m.island_faces.len() {
+                0 => String::new(),
+                n => format!(" ({n} on islands)"),
+            },
             m.largest_tool_diameter
                 .map(|d| format!("  tool <= {d:.2}"))
                 .unwrap_or_default(),
