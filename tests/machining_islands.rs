@@ -9,12 +9,7 @@ use thinwall_analysis::{Catalog, MachiningKind, PartAnalysis, Profile, Setup};
 use thinwall_machining::{recognize, MachiningFeature};
 
 fn fixture(name: &str) -> String {
-    std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("fixtures/machining")
-            .join(name),
-    )
-    .unwrap()
+    common::machining_fixture(name)
 }
 
 /// The features of a part as built (`seed` none) or turned.
@@ -61,6 +56,26 @@ fn a_rib_on_a_plate_is_a_boss_not_a_pocket() {
         let face = one(&ms, MachiningKind::Face);
         assert_eq!(face.faces.len(), 1);
         assert!(near(face.depth, 48.0));
+    }
+}
+
+/// Two ribs on one plate (one holed, one with cut-outs from its top): two
+/// bosses, 72 and 48 high; neither is the other's pocket wall.
+#[test]
+fn two_ribs_on_a_plate_are_two_bosses() {
+    let text = fixture("ribs_with_holes_and_cutouts.step");
+    for pose in POSES {
+        let ms = features(&text, pose);
+        assert!(!ms.iter().any(|m| !m.island_faces.is_empty()), "{pose:?}");
+        let mut bosses: Vec<(f64, f64, f64)> = ms
+            .iter()
+            .filter(|m| m.kind == MachiningKind::Boss)
+            .map(|m| (m.depth, m.length, m.width))
+            .collect();
+        bosses.sort_by(|x, y| x.0.total_cmp(&y.0));
+        assert_eq!(bosses.len(), 2, "{pose:?}");
+        assert!(near(bosses[0].0, 48.0) && near(bosses[1].0, 72.0));
+        assert!(bosses.iter().all(|b| near(b.1, 180.0) && near(b.2, 1.5)));
     }
 }
 

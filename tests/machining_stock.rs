@@ -11,12 +11,7 @@ use thinwall_geom::Vector3;
 use thinwall_machining::{recognize_with, MachiningError, Options, StockSpec};
 
 fn fixture(name: &str) -> String {
-    std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("fixtures/machining")
-            .join(name),
-    )
-    .unwrap()
+    common::machining_fixture(name)
 }
 
 fn read(text: &str) -> thinwall_brep::Part {

@@ -13,6 +13,11 @@ pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// The text of a machining fixture (`fixtures/machining/NAME`).
+pub fn machining_fixture(name: &str) -> String {
+    std::fs::read_to_string(root().join("fixtures/machining").join(name)).unwrap()
+}
+
 /// STEP files in a folder, sorted.
 /// The thin-walled parts the planner and the pictures are checked on:
 /// every shared thin-walled part, every recognition and machining fixture.

@@ -72,12 +72,18 @@ fn rings_on(a: &PartAnalysis, foot: &Foot) -> Vec<Island> {
             .collect();
         if closes(a, &ring, &walls, &foot.up) {
             out.push(Island {
-                in_pocket: in_a_pocket(a, &walls, foot),
+                in_pocket: false,
                 walls,
                 up: foot.up,
                 foot: foot.offset,
             });
         }
+    }
+    // Whether each stands in a pocket, by the walls of the floor that are
+    // no island's (two ribs on a plate do not make each other a pocket).
+    let on_rings: Vec<FaceId> = out.iter().flat_map(|i| i.walls.clone()).collect();
+    for island in &mut out {
+        island.in_pocket = in_a_pocket(a, &island.walls, &on_rings, foot);
     }
     out
 }
@@ -159,11 +165,11 @@ fn inside_corners(a: &PartAnalysis, w: FaceId) -> Vec<FaceId> {
     out
 }
 
-/// Whether the floor the ring stands on is a pocket's: other walls rising
-/// from it close round it (seen along up, their normals leave no
-/// half-turn free). An island in a pocket stays with its pocket (a pocket
+/// Whether the floor the ring stands on is a pocket's: walls rising from
+/// it that are no island's close round it (seen along up, their normals
+/// leave no half-turn free). An island in a pocket stays with its pocket (a pocket
 /// with an island); one on an open face is a boss.
-fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], foot: &Foot) -> bool {
+fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], islands: &[FaceId], foot: &Foot) -> bool {
     let tol = a.tol().feature;
     let on_foot = |g: FaceId| {
         a.props(g).normal.is_some_and(|m| {
@@ -179,7 +185,7 @@ fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], foot: &Foot) -> bool {
     let others: Vec<Vector3> = floors
         .iter()
         .flat_map(|&g| inside_corners(a, g))
-        .filter(|w| !ring.contains(w))
+        .filter(|w| !islands.contains(w))
         .filter_map(|w| a.props(w).normal)
         .filter(|n| n.dot(&foot.up).abs() < NEAR_PARALLEL_EPS)
         .collect();
