@@ -167,8 +167,8 @@ fn inside_corners(a: &PartAnalysis, w: FaceId) -> Vec<FaceId> {
 
 /// Whether the floor the ring stands on is a pocket's: walls rising from
 /// it that are no island's close round it (seen along up, their normals
-/// leave no half-turn free). An island in a pocket stays with its pocket (a pocket
-/// with an island); one on an open face is a boss.
+/// leave no half-turn free). An island in a pocket stays with its pocket
+/// (a pocket with an island); one on an open face is a boss.
 fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], islands: &[FaceId], foot: &Foot) -> bool {
     let tol = a.tol().feature;
     let on_foot = |g: FaceId| {
