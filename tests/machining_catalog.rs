@@ -175,7 +175,7 @@ fn print(s: &Score, what: &str) {
 }
 
 /// Measured on the data the rules were written against (in-sample:
-/// 99.17 % today): a floor that keeps them from getting worse. The issue's
+/// 99.23 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
 const FLOOR: f64 = 0.98;
 
@@ -218,10 +218,12 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// walls (no block face, no floor); a quarter-round corner step whose
 /// floor a V-notch cut away; a slot along an edge whose quarter-round end
 /// a chamfer trimmed below 90°; a slot's one round end that a through hole
-/// split in two (not a pocket's two ends).
+/// split in two (not a pocket's two ends); a triangular pocket whose inside
+/// corner a chamfer took, the bevel wider than what is left of the two
+/// faces it joins.
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 5] = [
+    let cases: [(&str, &[u64], Catalog); 7] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -235,6 +237,12 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             &[1765, 1837, 1909, 2220, 2248],
             Catalog::VCircularEndBlindSlot,
         ),
+        (
+            "s2718_0163",
+            &[17, 165, 747, 773],
+            Catalog::TriangularPocket,
+        ),
+        ("s2718_0163", &[236], Catalog::Chamfer),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");
     for (stem, faces, want) in cases {

@@ -95,11 +95,22 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
                 && ng.dot(nh) < 1.0 - NEAR_PARALLEL_EPS
                 && sum.norm() > NEAR_PARALLEL_EPS
                 && n.dot(&sum.normalize()) > cos
-                && width < NARROWER * a.props(*g).area.sqrt().max(a.props(*h).area.sqrt())
+                && (width < NARROWER * a.props(*g).area.sqrt().max(a.props(*h).area.sqrt())
+                    || inside_depression(a, f, *cg))
                 && !closes_a_floor(a, f, *g, *h)
                 && !hexagon_side(&n, ng)
         })
     })
+}
+
+/// A bevel between two faces it meets concavely that meets every other
+/// neighbour concavely too: an inside corner's bevel in a depression, which
+/// may be wider than the remnants of the faces it joins.
+fn inside_depression(a: &PartAnalysis, f: FaceId, c: Convexity) -> bool {
+    c == Convexity::Concave
+        && a.graph()
+            .neighbours(f)
+            .all(|(_, adj)| adj.convexity == Convexity::Concave)
 }
 
 /// Whether a face meeting a neighbour at 60° between normals is a side of
