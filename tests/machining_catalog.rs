@@ -175,7 +175,7 @@ fn print(s: &Score, what: &str) {
 }
 
 /// Measured on the data the rules were written against (in-sample:
-/// 99.23 % today): a floor that keeps them from getting worse. The issue's
+/// 99.27 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
 const FLOOR: f64 = 0.98;
 
@@ -220,10 +220,11 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// a chamfer trimmed below 90°; a slot's one round end that a through hole
 /// split in two (not a pocket's two ends); a triangular pocket whose inside
 /// corner a chamfer took, the bevel wider than what is left of the two
-/// faces it joins.
+/// faces it joins; two walls in a V of a triangular pocket, with a floor,
+/// opening onto no block plane (not a two-sided step).
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 7] = [
+    let cases: [(&str, &[u64], Catalog); 8] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -243,6 +244,7 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             Catalog::TriangularPocket,
         ),
         ("s2718_0163", &[236], Catalog::Chamfer),
+        ("s2718_0123", &[2147, 2196, 2222], Catalog::TriangularPocket),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");
     for (stem, faces, want) in cases {

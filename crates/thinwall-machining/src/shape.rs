@@ -531,6 +531,17 @@ impl<'g> GroupShape<'g> {
             {
                 (Step, false, P::Triangular)
             }
+            // Two walls in a V opening onto no block plane at all (a
+            // two-sided step opens onto the block's sides): what other
+            // cuts left of a pocket, a hexagon's where they meet at 120°.
+            Some(_) if w == 2 && self.touched.is_empty() => {
+                let hexagon = (walls[0].dot(&walls[1]) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt();
+                (
+                    Pocket,
+                    false,
+                    if hexagon { P::Hexagonal } else { P::Triangular },
+                )
+            }
             Some(_) if w == 2 => (Step, true, P::TwoSided),
             // Two sides and a back: a slot, unless it opens to three stock
             // planes (a notch through a corner: a step).
