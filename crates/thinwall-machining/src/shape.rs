@@ -58,6 +58,16 @@ pub(crate) fn ring_profile(walls: &[Vector3]) -> Profile {
     }
 }
 
+/// The profile two walls in a V are left of: a hexagon's where they meet
+/// at 120° (normals at 60°), else a triangle's.
+fn v_profile(walls: &[Vector3]) -> Profile {
+    if (walls[0].dot(&walls[1]) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt() {
+        Profile::Hexagonal
+    } else {
+        Profile::Triangular
+    }
+}
+
 /// Whether some pair of the unit normals has a cosine that `holds`.
 fn any_pair(normals: &[Vector3], holds: impl Fn(f64) -> bool) -> bool {
     normals
@@ -534,14 +544,7 @@ impl<'g> GroupShape<'g> {
             // Two walls in a V opening onto no block plane at all (a
             // two-sided step opens onto the block's sides): what other
             // cuts left of a pocket, a hexagon's where they meet at 120°.
-            Some(_) if w == 2 && self.touched.is_empty() => {
-                let hexagon = (walls[0].dot(&walls[1]) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt();
-                (
-                    Pocket,
-                    false,
-                    if hexagon { P::Hexagonal } else { P::Triangular },
-                )
-            }
+            Some(_) if w == 2 && self.touched.is_empty() => (Pocket, false, v_profile(&walls)),
             Some(_) if w == 2 => (Step, true, P::TwoSided),
             // Two sides and a back: a slot, unless it opens to three stock
             // planes (a notch through a corner: a step).
