@@ -218,9 +218,19 @@ fn closes(a: &PartAnalysis, ring: &[FaceId], walls: &[FaceId], up: &Vector3) -> 
 
 /// The boss feature of an island: down from its top, its height above
 /// its floor and the minimum rectangle round its walls seen from above.
+/// Its top is the highest of its walls and the faces they meet at convex
+/// edges (a cap, a bevel round it).
 pub(crate) fn island_feature(a: &PartAnalysis, island: &Island) -> MachiningFeature {
     let up = island.up;
-    let (_, hi) = a.extent(&island.walls, &up);
+    let top: Vec<FaceId> = island
+        .walls
+        .iter()
+        .flat_map(|&w| a.graph().neighbours(w))
+        .filter(|(_, adj)| adj.convexity == Convexity::Convex)
+        .map(|(g, _)| g)
+        .chain(island.walls.iter().copied())
+        .collect();
+    let (_, hi) = a.extent(&top, &up);
     let (u, v, pts) = a.points_across(&island.walls, &up);
     let hull = MultiPoint::from(pts).convex_hull();
     let (length, width) = min_rect_sides(&hull).unwrap_or((0.0, 0.0));
