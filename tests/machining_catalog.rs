@@ -177,7 +177,7 @@ fn print(s: &Score, what: &str) {
 /// Measured on the data the rules were written against (in-sample:
 /// 99.27 % today): a floor that keeps them from getting worse. The issue's
 /// target is 99.5 %.
-const FLOOR: f64 = 0.98;
+const FLOOR: f64 = 0.992;
 
 #[test]
 fn mfcadpp_catalog_face_accuracy() {

@@ -6,13 +6,13 @@
 //! island in a pocket. The feature is the wall to machine round it, from
 //! its top down to its foot; the floor stays with whatever it belongs to.
 
-use crate::shape::{ring_profile, surrounds};
-use crate::MachiningFeature;
+use crate::shape::{ring_profile, surrounds, wall_neighbours};
+use crate::{face_plane, same_direction, same_plane, MachiningFeature, Plane};
 use geo::{Centroid, ConvexHull, MultiPoint};
 use thinwall_analysis::polygon::min_rect_sides;
 use thinwall_analysis::{MachiningKind, PartAnalysis};
 use thinwall_brep::FaceId;
-use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::Vector3;
 use thinwall_graph::Convexity;
 
@@ -29,10 +29,9 @@ pub(crate) struct Island {
     pub in_pocket: bool,
 }
 
-/// A floor plane and the walls standing on it.
+/// A floor plane (its normal is up) and the walls standing on it.
 struct Foot {
-    up: Vector3,
-    offset: f64,
+    plane: Plane,
     walls: Vec<FaceId>,
 }
 
@@ -57,7 +56,7 @@ fn rings_on(a: &PartAnalysis, foot: &Foot) -> Vec<Island> {
         .iter()
         .flat_map(|&w| a.graph().neighbours(w))
         .map(|(g, _)| g)
-        .filter(|&g| round_corner(a, g, &foot.up))
+        .filter(|&g| round_corner(a, g, &foot.plane.0))
         .collect();
     let members: Vec<FaceId> = foot.walls.iter().chain(&corners).copied().collect();
     let outside = |_: FaceId, _: FaceId, adj: &thinwall_graph::Adjacency| {
@@ -70,12 +69,12 @@ fn rings_on(a: &PartAnalysis, foot: &Foot) -> Vec<Island> {
             .copied()
             .filter(|f| foot.walls.contains(f))
             .collect();
-        if closes(a, &ring, &walls, &foot.up) {
+        if closes(a, &ring, &walls, &foot.plane.0) {
             out.push(Island {
                 in_pocket: false,
                 walls,
-                up: foot.up,
-                foot: foot.offset,
+                up: foot.plane.0,
+                foot: foot.plane.1,
             });
         }
     }
@@ -114,30 +113,21 @@ fn disjoint(a: &PartAnalysis, mut found: Vec<Island>) -> Vec<Island> {
 /// The floor planes among the walls' neighbours and the walls standing on
 /// each (square to it, meeting it concavely or through a concave blend).
 fn feet(a: &PartAnalysis, walls: &[FaceId]) -> Vec<Foot> {
-    let tol = a.tol().feature;
     let mut out: Vec<Foot> = Vec::new();
     for &w in walls {
         let Some(n) = a.props(w).normal else {
             continue;
         };
         for g in inside_corners(a, w) {
-            let Some(up) = a
-                .props(g)
-                .normal
-                .filter(|m| m.dot(&n).abs() < NEAR_PARALLEL_EPS)
+            let Some(plane) = face_plane(a, g).filter(|p| p.0.dot(&n).abs() < NEAR_PARALLEL_EPS)
             else {
                 continue;
             };
-            let offset = a.props(g).centroid.coords.dot(&up);
-            let found = out.iter_mut().find(|f| {
-                f.up.dot(&up) > 1.0 - UNIT_PARALLEL_EPS && (f.offset - offset).abs() < tol
-            });
-            match found {
+            match out.iter_mut().find(|f| same_plane(a, &f.plane, &plane)) {
                 Some(f) if !f.walls.contains(&w) => f.walls.push(w),
                 Some(_) => {}
                 None => out.push(Foot {
-                    up,
-                    offset,
+                    plane,
                     walls: vec![w],
                 }),
             }
@@ -170,13 +160,8 @@ fn inside_corners(a: &PartAnalysis, w: FaceId) -> Vec<FaceId> {
 /// leave no half-turn free). An island in a pocket stays with its pocket
 /// (a pocket with an island); one on an open face is a boss.
 fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], islands: &[FaceId], foot: &Foot) -> bool {
-    let tol = a.tol().feature;
-    let on_foot = |g: FaceId| {
-        a.props(g).normal.is_some_and(|m| {
-            m.dot(&foot.up) > 1.0 - UNIT_PARALLEL_EPS
-                && (a.props(g).centroid.coords.dot(&m) - foot.offset).abs() < tol
-        })
-    };
+    let up = foot.plane.0;
+    let on_foot = |g: FaceId| face_plane(a, g).is_some_and(|p| same_plane(a, &p, &foot.plane));
     let floors: Vec<FaceId> = ring
         .iter()
         .flat_map(|&w| inside_corners(a, w))
@@ -187,9 +172,9 @@ fn in_a_pocket(a: &PartAnalysis, ring: &[FaceId], islands: &[FaceId], foot: &Foo
         .flat_map(|&g| inside_corners(a, g))
         .filter(|w| !islands.contains(w))
         .filter_map(|w| a.props(w).normal)
-        .filter(|n| n.dot(&foot.up).abs() < NEAR_PARALLEL_EPS)
+        .filter(|n| n.dot(&up).abs() < NEAR_PARALLEL_EPS)
         .collect();
-    surrounds(&others, &foot.up)
+    surrounds(&others, &up)
 }
 
 /// A convex cylinder along `up`: an island's rounded corner.
@@ -204,15 +189,7 @@ fn round_corner(a: &PartAnalysis, f: FaceId, up: &Vector3) -> bool {
 fn closes(a: &PartAnalysis, ring: &[FaceId], walls: &[FaceId], up: &Vector3) -> bool {
     let normals: Vec<Vector3> = walls.iter().filter_map(|&w| a.props(w).normal).collect();
     walls.len() >= 3
-        && ring.iter().all(|&f| {
-            a.graph()
-                .neighbours(f)
-                .filter(|(g, _)| *g != f && ring.contains(g))
-                .map(|(g, _)| g)
-                .collect::<std::collections::BTreeSet<_>>()
-                .len()
-                >= 2
-        })
+        && ring.iter().all(|&f| wall_neighbours(a, f, ring) >= 2)
         && surrounds(&normals, up)
 }
 
@@ -240,7 +217,7 @@ pub(crate) fn island_feature(a: &PartAnalysis, island: &Island) -> MachiningFeat
     });
     let mut normals: Vec<Vector3> = Vec::new();
     for n in island.walls.iter().filter_map(|&w| a.props(w).normal) {
-        if !normals.iter().any(|m| m.dot(&n) > 1.0 - UNIT_PARALLEL_EPS) {
+        if !normals.iter().any(|m| same_direction(m, &n)) {
             normals.push(n);
         }
     }

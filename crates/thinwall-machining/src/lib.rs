@@ -510,23 +510,11 @@ fn depression_feature(
     touched: &BTreeSet<usize>,
     islands: &BTreeSet<FaceId>,
 ) -> MachiningFeature {
-    // Typed and measured without the islands standing in it.
-    let group: Vec<FaceId> = whole
-        .iter()
-        .copied()
-        .filter(|f| !islands.contains(f))
-        .collect();
-    let island_walls: Vec<FaceId> = whole
-        .iter()
-        .copied()
-        .filter(|f| islands.contains(f))
-        .collect();
-    let group = if group.is_empty() {
-        whole.to_vec()
-    } else {
-        group
-    };
-    let group = group.as_slice();
+    // Typed and measured without the islands standing in it (their floor
+    // is in the group, so something is left).
+    let (island_walls, group): (Vec<FaceId>, Vec<FaceId>) =
+        whole.iter().partition(|f| islands.contains(f));
+    let group = if group.is_empty() { whole } else { &group };
     let shape = shape::GroupShape::new(a, stock, group, touched);
     let shape::Typed {
         kind,
@@ -569,7 +557,7 @@ fn depression_feature(
         direction: [dir.x, dir.y, dir.z],
         faces: a.step_ids(whole),
         bottom_faces: a.step_ids(&bottom),
-        side_faces: a.step_ids(&[sides, island_walls.clone()].concat()),
+        side_faces: a.step_ids(&[&sides[..], &island_walls].concat()),
         island_faces: a.step_ids(&island_walls),
         open_to: touched
             .iter()

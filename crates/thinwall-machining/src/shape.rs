@@ -134,7 +134,7 @@ pub(crate) fn surrounds(walls: &[Vector3], n: &Vector3) -> bool {
 }
 
 /// Walls of `group` adjacent to wall `w` (sharing an edge).
-fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
+pub(crate) fn wall_neighbours(a: &PartAnalysis, w: FaceId, walls: &[FaceId]) -> usize {
     a.graph()
         .neighbours(w)
         .filter(|(x, _)| *x != w && walls.contains(x))
@@ -163,9 +163,7 @@ impl<'g> GroupShape<'g> {
         group: &'g [FaceId],
         touched: &'g BTreeSet<usize>,
     ) -> Self {
-        let opposite: Vec<usize> = (0..3)
-            .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
-            .collect();
+        let opposite = opposite_axes(touched);
         let mut planes: Vec<Plane> = Vec::new();
         for &f in group {
             if let Some(q) = face_plane(a, f) {
@@ -292,9 +290,7 @@ impl<'g> GroupShape<'g> {
     /// Whether the group meets three block planes or more, no two of them
     /// opposite.
     fn corner_only(&self) -> bool {
-        self.touched.len() >= 3
-            && (0..3)
-                .all(|k| !(self.touched.contains(&(2 * k)) && self.touched.contains(&(2 * k + 1))))
+        self.touched.len() >= 3 && opposite_axes(self.touched).is_empty()
     }
 
     /// How far round the widest concave cylinder on each of their distinct
@@ -638,6 +634,13 @@ impl<'g> GroupShape<'g> {
                 .map_or(-self.stock.axes[2], |(n, _)| -n)
         }
     }
+}
+
+/// The block axes whose two planes the group both reaches.
+fn opposite_axes(touched: &BTreeSet<usize>) -> Vec<usize> {
+    (0..3)
+        .filter(|k| touched.contains(&(2 * k)) && touched.contains(&(2 * k + 1)))
+        .collect()
 }
 
 /// A group of convex curved faces only faces the block plane within this
