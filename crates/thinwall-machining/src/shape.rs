@@ -547,7 +547,10 @@ impl<'g> GroupShape<'g> {
             Some(_) if w == 3 && parallel && square && self.touched.len() >= 3 => {
                 (Step, false, P::Rectangular)
             }
-            Some(_) if w == 3 && parallel && square => (Slot, false, P::Rectangular),
+            Some(_) if w == 3 && parallel && square && self.opens_at_end(a, &walls) => {
+                (Slot, false, P::Rectangular)
+            }
+            Some(_) if w == 3 && parallel && square => (Pocket, false, P::Rectangular),
             Some(_) => (Pocket, false, sides),
             // A ring of walls (or what is left of one where another cut
             // split a wall): a passage, unless a slot closed lower down.
@@ -583,6 +586,26 @@ impl<'g> GroupShape<'g> {
         } else {
             None
         }
+    }
+
+    /// Whether a blind slot (two facing walls and a back) opens at its
+    /// end: some face beyond it, met at a convex edge, faces the way the
+    /// back wall does (the side of the face it was cut from).
+    fn opens_at_end(&self, a: &PartAnalysis, walls: &[Vector3]) -> bool {
+        let Some(back) = walls.iter().find(|n| {
+            walls
+                .iter()
+                .all(|m| same_direction(n, m) || n.dot(m).abs() < NEAR_PARALLEL_EPS)
+        }) else {
+            return true;
+        };
+        self.group.iter().any(|&f| {
+            a.graph().neighbours(f).any(|(g, adj)| {
+                adj.convexity == Convexity::Convex
+                    && !self.group.contains(&g)
+                    && a.props(g).normal.is_some_and(|m| same_direction(&m, back))
+            })
+        })
     }
 
     /// The floor: a plane every other plane of the group stands square on
