@@ -10,6 +10,7 @@ use petgraph::unionfind::UnionFind;
 use std::collections::{BTreeSet, HashMap};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
+use thinwall_graph::Convexity;
 
 /// A planar face of a group: its plane (normal, offset) and the other
 /// groups it meets.
@@ -53,6 +54,32 @@ fn split_by_one(
     split || (common && shared.len() >= 2)
 }
 
+/// Lone faces that are a piece of one other group's face: one plane that
+/// the model split along an edge (the edge between them is smooth). A
+/// face whose plane runs on into several groups (a floor two slots share)
+/// joins none. Pairs (lone group, group of the other pieces).
+fn split_faces(
+    a: &PartAnalysis,
+    groups: &[Vec<FaceId>],
+    of: &HashMap<FaceId, usize>,
+) -> Vec<(usize, usize)> {
+    let coplanar = |f: FaceId, g: FaceId| matches!((face_plane(a, f), face_plane(a, g)), (Some(p), Some(q)) if same_plane(a, &p, &q));
+    let mut pairs = Vec::new();
+    for (i, g) in groups.iter().enumerate().filter(|(_, g)| g.len() == 1) {
+        let f = g[0];
+        let others: BTreeSet<usize> = a
+            .graph()
+            .neighbours(f)
+            .filter(|(h, adj)| adj.convexity == Convexity::Smooth && coplanar(f, *h))
+            .filter_map(|(h, _)| of.get(&h).copied())
+            .collect();
+        if let [j] = others.into_iter().collect::<Vec<_>>()[..] {
+            pairs.push((i, j));
+        }
+    }
+    pairs
+}
+
 /// The groups with the pieces of one feature joined.
 pub(crate) fn join_pieces(a: &PartAnalysis, groups: Vec<Vec<FaceId>>) -> Vec<Vec<FaceId>> {
     let of: HashMap<FaceId, usize> = groups
@@ -93,6 +120,9 @@ pub(crate) fn join_pieces(a: &PartAnalysis, groups: Vec<Vec<FaceId>>) -> Vec<Vec
                 sets.union(i, j);
             }
         }
+    }
+    for (i, j) in split_faces(a, &groups, &of) {
+        sets.union(i, j);
     }
     let mut joined: Vec<Vec<FaceId>> = vec![Vec::new(); groups.len()];
     for (i, g) in groups.into_iter().enumerate() {
