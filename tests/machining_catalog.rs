@@ -224,7 +224,7 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// opening onto no block plane (not a two-sided step).
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 10] = [
+    let cases: [(&str, &[u64], Catalog); 11] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -251,6 +251,11 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             Catalog::RectangularPocket,
         ),
         ("s2718_0091", &[1244], Catalog::RectangularPassage),
+        (
+            "s2718_0011",
+            &[2244, 2271, 2419, 2466, 2493],
+            Catalog::TriangularThroughSlot,
+        ),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");
     for (stem, faces, want) in cases {

@@ -105,8 +105,15 @@ impl<'r> Ring<'r> {
     ) -> Option<usize> {
         let odd = *self.wall_planes.difference(met).next()?;
         let all = self.wall_planes.len();
+        let entry_normal = self.a.props(entry).normal;
+        // Every wall meets the exit, and the floor of another cut that
+        // split the ring (facing the way the entry does) too.
+        let split_floor = |g: FaceId| {
+            matches!((self.a.props(g).normal, entry_normal),
+                (Some(n), Some(m)) if crate::same_direction(&n, &m))
+        };
         let material = |g: FaceId| {
-            meets.get(&g).is_none_or(|ps| ps.len() < all)
+            (meets.get(&g).is_none_or(|ps| ps.len() < all) || split_floor(g))
                 && !crate::is_blend(self.a, g)
                 && !crate::chamfer::is_chamfer(self.a, g)
         };
