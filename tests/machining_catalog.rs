@@ -224,7 +224,7 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// opening onto no block plane (not a two-sided step).
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 11] = [
+    let cases: [(&str, &[u64], Catalog); 12] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -255,6 +255,11 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             "s2718_0011",
             &[2244, 2271, 2419, 2466, 2493],
             Catalog::TriangularThroughSlot,
+        ),
+        (
+            "s2718_0094",
+            &[1192, 1466, 1515, 2726, 2887],
+            Catalog::RectangularBlindSlot,
         ),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");

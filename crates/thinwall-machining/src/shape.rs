@@ -517,6 +517,12 @@ impl<'g> GroupShape<'g> {
                 .all(|&f| wall_neighbours(a, f, &wall_faces) >= 2);
         let sides = ring_profile(&walls);
         match floor {
+            // A blind slot whose open end material beyond closed lower
+            // down (module `closed_slot`): four walls, one of them never
+            // meeting the face it was entered from.
+            Some(_) if closed && w == 4 && self.closed_lower(a, &wall_faces) => {
+                (Slot, false, P::Rectangular)
+            }
             Some(_) if closed => (Pocket, false, sides),
             // One wall: square to the stock, a step along a whole edge;
             // else a triangle in a corner or a slanted step, by the floor.
@@ -605,6 +611,16 @@ impl<'g> GroupShape<'g> {
                     && !self.group.contains(&g)
                     && a.props(g).normal.is_some_and(|m| same_direction(&m, back))
             })
+        })
+    }
+
+    /// Whether the ring of `walls` is a slot closed lower down: its other
+    /// walls two facing ones and a back.
+    fn closed_lower(&self, a: &PartAnalysis, walls: &[FaceId]) -> bool {
+        closed_slot::slot_walls(a, self.group, &self.planes, walls).is_some_and(|rest| {
+            rest.len() == 3
+                && any_pair(&rest, |c| c < -1.0 + NEAR_PARALLEL_EPS)
+                && any_pair(&rest, |c| c.abs() < NEAR_PARALLEL_EPS)
         })
     }
 
