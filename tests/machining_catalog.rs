@@ -174,10 +174,10 @@ fn print(s: &Score, what: &str) {
     println!("wrong parts: {:?}", s.wrong_files);
 }
 
-/// Measured on the data the rules were written against (in-sample:
-/// 99.27 % today): a floor that keeps them from getting worse. The issue's
-/// target is 99.5 %.
-const FLOOR: f64 = 0.992;
+/// The target, 99.5 % of faces. Measured on the data the rules
+/// were written against (in-sample: 99.55 % today), so it says the rules
+/// cover these parts, not how they do on unseen ones.
+const FLOOR: f64 = 0.995;
 
 #[test]
 fn mfcadpp_catalog_face_accuracy() {
@@ -205,12 +205,28 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
             }
         }
     }
-    // Edges where a cylinder meets a plane almost tangentially are
-    // smooth or concave by an angle threshold, which rounding in the
-    // turned file can tip: one face in 8611 changes group that way today.
-    // More than that is a real dependence on the pose.
     println!("faces classed differently when turned: {differ:#?}");
-    assert!(differ.len() <= 1, "{differ:#?}");
+    assert!(differ.is_empty(), "{differ:#?}");
+}
+
+/// Where two faces fold back onto each other (a knife edge: s2718_0023's
+/// half cylinder and the plane it meets at 360°), the sign that tells
+/// convex from concave is rounding noise, which a rigid motion tipped (the
+/// slot's faces were grouped one way as built and another way turned).
+/// Such an edge is `mixed` in every pose.
+#[test]
+fn a_knife_edge_has_no_convexity_in_any_pose() {
+    let f = common::shared_data().join("mfcadpp_gen/s2718_0023.step");
+    for seed in [None, Some(7), Some(8)] {
+        let (part, _) = recognize_file(&f, seed);
+        let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
+        let knife = graph.edges.iter().find(|e| e.step_id == 1152).unwrap();
+        assert_eq!(
+            knife.convexity,
+            thinwall_graph::Convexity::Mixed,
+            "turned {seed:?}"
+        );
+    }
 }
 
 /// What other cuts left of a feature keeps its catalogue name, as built
@@ -224,7 +240,7 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 /// opening onto no block plane (not a two-sided step).
 #[test]
 fn pieces_other_cuts_left_keep_their_catalogue_name() {
-    let cases: [(&str, &[u64], Catalog); 12] = [
+    let cases: [(&str, &[u64], Catalog); 14] = [
         ("s2718_0108", &[4612], Catalog::ThroughHole),
         ("s2718_0151", &[6234, 6260], Catalog::ThroughHole),
         ("s2718_0195", &[1908], Catalog::CircularBlindStep),
@@ -261,6 +277,8 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
             &[1192, 1466, 1515, 2726, 2887],
             Catalog::RectangularBlindSlot,
         ),
+        ("s2718_0113", &[641], Catalog::Chamfer),
+        ("s2718_0023", &[1121], Catalog::Chamfer),
     ];
     let dir = common::shared_data().join("mfcadpp_gen");
     for (stem, faces, want) in cases {

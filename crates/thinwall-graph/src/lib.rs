@@ -194,7 +194,7 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         SAMPLES
     };
     let (a, b) = curve.domain();
-    let (mut convex, mut concave, mut smooth) = (0, 0, 0);
+    let (mut convex, mut concave, mut smooth, mut fold) = (0, 0, 0, 0);
     let (mut amin, mut amax) = (f64::INFINITY, f64::NEG_INFINITY);
     let (mut hint1, mut hint2) = (None, None);
     for k in 0..n_samples {
@@ -211,6 +211,10 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         };
         let cross = n1.cross(&n2);
         let phi = cross.norm().atan2(n1.dot(&n2));
+        // Faces folding back onto each other (a knife edge, normals
+        // opposite): which side is material cannot be told, so the edge
+        // is neither convex nor concave.
+        fold += usize::from(std::f64::consts::PI - phi < tol.tangent_angle);
         let interior = if phi < tol.tangent_angle {
             smooth += 1;
             std::f64::consts::PI
@@ -225,6 +229,7 @@ fn classify(part: &Part, edge: EdgeId, uses: &[(FaceId, bool)], tol: &Tolerances
         amax = amax.max(interior);
     }
     attr.convexity = match (convex > 0, concave > 0, smooth > 0) {
+        _ if fold > 0 => Convexity::Mixed,
         (true, true, _) => Convexity::Mixed,
         (true, false, _) => Convexity::Convex,
         (false, true, _) => Convexity::Concave,

@@ -31,13 +31,20 @@ const HEXAGON_COS_SLACK: f64 = 1e-3;
 /// A bevel is narrower than this share of the larger face it joins (the
 /// square root of its area).
 const NARROWER: f64 = 0.5;
+/// A bevel on a cylinder's straight rim meets it and the plane at
+/// dihedral angles this close, degrees.
+const CHORD_BEVEL_DEG: f64 = 5.0;
+/// A bevel strip meets four faces: its two ends and its two sides.
+const ENDS_AND_SIDES: usize = 4;
 /// A bevel is at least this many times longer than wide (a strip).
 const ELONGATED: f64 = 3.0;
 
 /// Whether face `f` is a chamfer (module docs).
 pub(crate) fn is_chamfer(a: &PartAnalysis, f: FaceId) -> bool {
     match a.part().face(f).surface {
-        Surface::Plane { .. } => is_planar_bevel(a, f) || is_bevel_piece(a, f),
+        Surface::Plane { .. } => {
+            is_planar_bevel(a, f) || is_bevel_piece(a, f) || is_curved_edge_bevel(a, f)
+        }
         Surface::Cone { .. } => is_conical_bevel(a, f) || is_bevel_corner(a, f),
         _ => false,
     }
@@ -100,6 +107,57 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
                 && !closes_a_floor(a, f, *g, *h)
                 && !hexagon_side(&n, ng)
         })
+    })
+}
+
+/// A planar strip on the straight edge between a plane and a cylinder,
+/// along the cylinder's axis (a slot's rim, an inside corner): it has two
+/// ends and two sides, both its long edges run along the axis, and it
+/// meets the cylinder and the plane with the same convexity at dihedral
+/// angles that nearly agree (a symmetric bevel of a curved face is a
+/// chord, not a bisector, so they differ by a few degrees); it is narrower
+/// than the cylinder's radius.
+fn is_curved_edge_bevel(a: &PartAnalysis, f: FaceId) -> bool {
+    let (width, length) = a.strip_width(f);
+    let Some(n) = a.props(f).normal else {
+        return false;
+    };
+    if a.part().face(f).loops.len() != 1
+        || length < ELONGATED * width
+        || a.graph().neighbours(f).count() != ENDS_AND_SIDES
+    {
+        return false;
+    }
+    // Each side: the face, its convexity and the dihedral angle, degrees.
+    let sides: Vec<(FaceId, Convexity, f64)> = a
+        .graph()
+        .neighbours(f)
+        .filter(|(_, adj)| adj.convexity != Convexity::Smooth && adj.edges.len() == 1)
+        .map(|(g, adj)| {
+            (
+                g,
+                adj.convexity,
+                a.graph().edges[adj.edges[0]].angle_min_deg,
+            )
+        })
+        .collect();
+    let along = |h: FaceId, axis: &Vector3| {
+        a.planar(h).is_some_and(|p| {
+            n.cross(&p.normal())
+                .try_normalize(NEAR_PARALLEL_EPS)
+                .is_some_and(|e| e.dot(axis).abs() > 1.0 - NEAR_PARALLEL_EPS)
+        })
+    };
+    let bevel_angle =
+        |deg: f64| (CHORD_BEVEL_DEG..90.0 - CHORD_BEVEL_DEG).contains(&(deg - 180.0).abs());
+    sides.iter().any(|&(g, cg, ag)| {
+        let Some(c) = a.cylinder(g).filter(|c| width < c.radius) else {
+            return false;
+        };
+        bevel_angle(ag)
+            && sides.iter().any(|&(h, ch, ah)| {
+                ch == cg && along(h, &c.axis) && (ag - ah).abs() < CHORD_BEVEL_DEG
+            })
     })
 }
 
