@@ -212,9 +212,9 @@ fn check_invariants(part: &thinwall_brep::Part, m: &[MachiningFeature]) -> Vec<S
             problems.push(format!("{id}: direction {d:?} is not a unit vector"));
         }
         if !(feat.depth.is_finite()
-            && feat.depth >= 0.0
+            && feat.depth > 0.0
             && feat.length >= feat.width
-            && feat.width >= 0.0)
+            && feat.width > 0.0)
         {
             problems.push(format!(
                 "{id}: sizes {} {} {}",
@@ -381,4 +381,18 @@ fn ftc_10_hole_rows_are_found_and_survive_a_rigid_motion() {
     let (turned, _) = common::turned_step(&text, &r, &t);
     let (turned, _) = thinwall_step::read_bytes(turned.as_bytes(), "turned.step").unwrap();
     assert_eq!(pattern_summary(&turned), found);
+}
+
+/// A flat bevel has no extent along its own normal: its depth is its leg
+/// along the block axis nearest that normal. CTC 01's 45° bevel, 70.71
+/// across, reaches 50 (it was reported as depth 0).
+#[test]
+fn a_chamfer_reaches_its_leg() {
+    let (_, m) = run(&common::shared_data().join("nist/nist_ctc_01_asme1_ap242-e1.stp"));
+    let bevel = m
+        .iter()
+        .find(|f| f.kind == MachiningKind::Chamfer && (f.width - 70.71).abs() < 0.01)
+        .expect("CTC 01's 70.71 wide bevel");
+    assert!((bevel.length - 100.0).abs() < 0.01, "{}", bevel.length);
+    assert!((bevel.depth - 50.0).abs() < 0.01, "{}", bevel.depth);
 }

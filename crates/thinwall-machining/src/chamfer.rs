@@ -217,6 +217,24 @@ fn is_conical_bevel(a: &PartAnalysis, f: FaceId) -> bool {
     square_plane && cylinder.is_some_and(|c| symmetric || hi - lo < c.radius)
 }
 
+/// How deep a chamfer reaches, mm: along `dir` (a chain round a curve, a
+/// cone: along its axis); one flat bevel, which has no extent along its
+/// own normal, reaches its leg along the block axis nearest that normal:
+/// its `width` across, times the sine of its angle to that axis.
+fn leg(a: &PartAnalysis, stock: &Stock, group: &[FaceId], dir: &Vector3, width: f64) -> f64 {
+    let (lo, hi) = a.extent(group, dir);
+    let along = if hi.is_finite() { hi - lo } else { 0.0 };
+    if along > a.tol().coplanar {
+        return along;
+    }
+    let nearest = stock
+        .axes
+        .iter()
+        .map(|ax| ax.dot(dir).abs())
+        .fold(0.0, f64::max);
+    width * (1.0 - nearest * nearest).max(0.0).sqrt()
+}
+
 /// A chamfer feature: a chain of bevel faces, its long and short sides.
 pub(crate) fn chamfer_feature(
     a: &PartAnalysis,
@@ -249,10 +267,9 @@ pub(crate) fn chamfer_feature(
             .fold(0.0, f64::max);
         (length, width)
     });
-    let (lo, hi) = a.extent(group, &dir);
     MachiningFeature {
         catalog: Some(Catalog::Chamfer),
-        depth: if hi.is_finite() { hi - lo } else { 0.0 },
+        depth: leg(a, stock, group, &dir, width.min(length)),
         length: length.max(width),
         width: width.min(length),
         ..MachiningFeature::on_faces(a, MachiningKind::Chamfer, Profile::Slanted, group, &dir)

@@ -206,9 +206,7 @@ pub fn recognize_with(
     // A feature has a depth and a profile, or it is not a feature (a lone
     // side face seen edge-on, a whole-part face of a casting).
     let least = a.tol().coplanar;
-    out.retain(|m| {
-        m.length > least && m.width > least && (m.depth > least || m.kind == MachiningKind::Chamfer)
-    });
+    out.retain(|m| m.length > least && m.width > least && m.depth > least);
     if let Some(up) = opts.up {
         let reach = (opts.tilt_limit_deg + FEATURE_PARALLEL_DEG)
             .to_radians()
