@@ -63,7 +63,10 @@ fn split_faces(
     groups: &[Vec<FaceId>],
     of: &HashMap<FaceId, usize>,
 ) -> Vec<(usize, usize)> {
-    let coplanar = |f: FaceId, g: FaceId| matches!((face_plane(a, f), face_plane(a, g)), (Some(p), Some(q)) if same_plane(a, &p, &q));
+    let coplanar = |f: FaceId, g: FaceId| match (face_plane(a, f), face_plane(a, g)) {
+        (Some(p), Some(q)) => same_plane(a, &p, &q),
+        _ => false,
+    };
     let mut pairs = Vec::new();
     for (i, g) in groups.iter().enumerate().filter(|(_, g)| g.len() == 1) {
         let f = g[0];
