@@ -99,18 +99,17 @@ fn recognize_file(
     f: &std::path::Path,
     seed: Option<u64>,
 ) -> (thinwall_brep::Part, Vec<MachiningFeature>) {
-    let text = std::fs::read_to_string(f).unwrap();
-    let text = match seed {
-        Some(seed) => {
-            let (r, t) = common::rigid_motion(seed);
-            common::turned_step(&text, &r, &t).0
-        }
-        None => text,
-    };
-    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step")
-        .unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+    let part = read_part(f, seed);
     let feats = recognize(&PartAnalysis::new(&part, Setup::default()));
     (part, feats)
+}
+
+/// A part as built, or turned by the rigid motion of `seed`.
+fn read_part(f: &std::path::Path, seed: Option<u64>) -> thinwall_brep::Part {
+    let text = common::posed_step(&std::fs::read_to_string(f).unwrap(), seed);
+    thinwall_step::read_bytes(text.as_bytes(), "part.step")
+        .unwrap_or_else(|e| panic!("{}: {e}", f.display()))
+        .0
 }
 
 fn score(turn: bool) -> Score {
@@ -218,7 +217,7 @@ fn mfcadpp_turned_by_rigid_motions_gets_the_same_classes() {
 fn a_knife_edge_has_no_convexity_in_any_pose() {
     let f = common::shared_data().join("mfcadpp_gen/s2718_0023.step");
     for seed in [None, Some(7), Some(8)] {
-        let (part, _) = recognize_file(&f, seed);
+        let part = read_part(&f, seed);
         let graph = thinwall_graph::AdjacencyGraph::build(&part, &part.tolerances());
         let knife = graph.edges.iter().find(|e| e.step_id == 1152).unwrap();
         assert_eq!(

@@ -14,13 +14,7 @@ fn fixture(name: &str) -> String {
 
 /// The features of a part as built (`seed` none) or turned.
 fn features(text: &str, seed: Option<u64>) -> Vec<MachiningFeature> {
-    let text = match seed {
-        Some(s) => {
-            let (r, t) = common::rigid_motion(s);
-            common::turned_step(text, &r, &t).0
-        }
-        None => text.to_string(),
-    };
+    let text = common::posed_step(text, seed);
     let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
     recognize(&PartAnalysis::new(&part, Setup::default()))
 }

@@ -116,6 +116,17 @@ pub fn turned_step(
     (out, turned)
 }
 
+/// The STEP text as built (`seed` none) or turned by `rigid_motion(seed)`.
+pub fn posed_step(text: &str, seed: Option<u64>) -> String {
+    match seed {
+        Some(seed) => {
+            let (r, t) = rigid_motion(seed);
+            turned_step(text, &r, &t).0
+        }
+        None => text.to_string(),
+    }
+}
+
 /// A deterministic rotation and translation for case `seed`.
 pub fn rigid_motion(seed: u64) -> (nalgebra::Rotation3<f64>, nalgebra::Vector3<f64>) {
     let mut s = seed

@@ -76,16 +76,17 @@ fn is_bevel_piece(a: &PartAnalysis, f: FaceId) -> bool {
     })
 }
 
+/// A face's width and length when it is one strip: one loop (holes would
+/// make a broad face look narrow by its boundary length), elongated.
+fn strip(a: &PartAnalysis, f: FaceId) -> Option<(f64, f64)> {
+    let (width, length) = a.strip_width(f);
+    (a.part().face(f).loops.len() == 1 && length >= ELONGATED * width).then_some((width, length))
+}
+
 fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
-    let Some(n) = a.props(f).normal else {
+    let (Some(n), Some((width, _))) = (a.props(f).normal, strip(a, f)) else {
         return false;
     };
-    let (width, length) = a.strip_width(f);
-    // A bevel is one strip: no holes in it (holes would make a broad face
-    // look narrow by its boundary length).
-    if a.part().face(f).loops.len() != 1 || length < ELONGATED * width {
-        return false;
-    }
     let mut planes: Vec<(FaceId, Vector3, Convexity)> = Vec::new();
     for (g, adj) in a.graph().neighbours(f) {
         if let Some(m) = a.props(g).normal {
@@ -118,14 +119,10 @@ fn is_planar_bevel(a: &PartAnalysis, f: FaceId) -> bool {
 /// chord, not a bisector, so they differ by a few degrees); it is narrower
 /// than the cylinder's radius.
 fn is_curved_edge_bevel(a: &PartAnalysis, f: FaceId) -> bool {
-    let (width, length) = a.strip_width(f);
-    let Some(n) = a.props(f).normal else {
+    let (Some(n), Some((width, _))) = (a.props(f).normal, strip(a, f)) else {
         return false;
     };
-    if a.part().face(f).loops.len() != 1
-        || length < ELONGATED * width
-        || a.graph().neighbours(f).count() != ENDS_AND_SIDES
-    {
+    if a.graph().neighbours(f).count() != ENDS_AND_SIDES {
         return false;
     }
     // Each side: the face, its convexity and the dihedral angle, degrees.

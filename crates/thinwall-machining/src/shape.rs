@@ -76,11 +76,27 @@ fn any_pair(normals: &[Vector3], holds: impl Fn(f64) -> bool) -> bool {
         .any(|(i, n)| normals[i + 1..].iter().any(|m| holds(n.dot(m))))
 }
 
+/// Whether two of the normals face each other (parallel walls).
+fn facing_pair(normals: &[Vector3]) -> bool {
+    any_pair(normals, |c| c < -1.0 + NEAR_PARALLEL_EPS)
+}
+
+/// Whether two of the normals are square to each other.
+fn square_pair(normals: &[Vector3]) -> bool {
+    any_pair(normals, |c| c.abs() < NEAR_PARALLEL_EPS)
+}
+
+/// Whether `n` stands square on every one of `others` it is not.
+fn square_to_rest(n: &Vector3, others: &[Vector3]) -> bool {
+    others
+        .iter()
+        .all(|m| same_direction(n, m) || n.dot(m).abs() < NEAR_PARALLEL_EPS)
+}
+
 /// A slot through the part typed by its walls: a parallel pair, a
 /// rectangle; two walls meeting in a V, a triangle.
 fn through_slot(walls: &[Vector3]) -> (MachiningKind, bool, Profile) {
-    let parallel = any_pair(walls, |c| c < -1.0 + NEAR_PARALLEL_EPS);
-    match (walls.len(), parallel) {
+    match (walls.len(), facing_pair(walls)) {
         (_, true) => (MachiningKind::Slot, true, Profile::Rectangular),
         (2, false) => (MachiningKind::Slot, true, Profile::Triangular),
         _ => (MachiningKind::Slot, true, Profile::Free),
@@ -502,8 +518,8 @@ impl<'g> GroupShape<'g> {
             .map(|p| p.0)
             .collect();
         let w = walls.len();
-        let parallel = any_pair(&walls, |c| c < -1.0 + NEAR_PARALLEL_EPS);
-        let square = any_pair(&walls, |c| c.abs() < NEAR_PARALLEL_EPS);
+        let parallel = facing_pair(&walls);
+        let square = square_pair(&walls);
         let wall_faces: Vec<FaceId> = self
             .group
             .iter()
@@ -585,9 +601,9 @@ impl<'g> GroupShape<'g> {
             .map(|sp| self.stock.normal(sp))
             .filter(|m| m.dot(n).abs() < NEAR_PARALLEL_EPS)
             .collect();
-        if any_pair(&sides, |c| c < -1.0 + NEAR_PARALLEL_EPS) {
+        if facing_pair(&sides) {
             Some(true)
-        } else if any_pair(&sides, |c| c.abs() < NEAR_PARALLEL_EPS) {
+        } else if square_pair(&sides) {
             Some(false)
         } else {
             None
@@ -598,11 +614,7 @@ impl<'g> GroupShape<'g> {
     /// end: some face beyond it, met at a convex edge, faces the way the
     /// back wall does (the side of the face it was cut from).
     fn opens_at_end(&self, a: &PartAnalysis, walls: &[Vector3]) -> bool {
-        let Some(back) = walls.iter().find(|n| {
-            walls
-                .iter()
-                .all(|m| same_direction(n, m) || n.dot(m).abs() < NEAR_PARALLEL_EPS)
-        }) else {
+        let Some(back) = walls.iter().find(|n| square_to_rest(n, walls)) else {
             return true;
         };
         self.group.iter().any(|&f| {
@@ -617,11 +629,8 @@ impl<'g> GroupShape<'g> {
     /// Whether the ring of `walls` is a slot closed lower down: its other
     /// walls two facing ones and a back.
     fn closed_lower(&self, a: &PartAnalysis, walls: &[FaceId]) -> bool {
-        closed_slot::slot_walls(a, self.group, &self.planes, walls).is_some_and(|rest| {
-            rest.len() == 3
-                && any_pair(&rest, |c| c < -1.0 + NEAR_PARALLEL_EPS)
-                && any_pair(&rest, |c| c.abs() < NEAR_PARALLEL_EPS)
-        })
+        closed_slot::slot_walls(a, self.group, &self.planes, walls)
+            .is_some_and(|rest| rest.len() == 3 && facing_pair(&rest) && square_pair(&rest))
     }
 
     /// The floor: a plane every other plane of the group stands square on
@@ -632,11 +641,11 @@ impl<'g> GroupShape<'g> {
         if self.planes.len() < 2 {
             return None;
         }
-        let candidates = self.planes.iter().filter(|(n, _)| {
-            self.planes
-                .iter()
-                .all(|(m, _)| same_direction(n, m) || n.dot(m).abs() < NEAR_PARALLEL_EPS)
-        });
+        let normals: Vec<Vector3> = self.planes.iter().map(|p| p.0).collect();
+        let candidates = self
+            .planes
+            .iter()
+            .filter(|(n, _)| square_to_rest(n, &normals));
         let rank = |n: &Vector3| {
             let faces_entry = self
                 .touched
