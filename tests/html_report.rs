@@ -147,13 +147,13 @@ fn plan_page_draws_every_machining_feature_in_order() {
     let path = common::root().join("fixtures/recognition/rib_grid_panel.step");
     let (part, out) = recognition(&path);
     let report = thinwall_report::recognition_report("rib_grid_panel.step", &part, &out);
+    let a = PartAnalysis::new(&part, out.setup.clone());
     let plan = thinwall_plan::plan(
         "rib_grid_panel.step",
-        &part,
+        &a,
         &out,
         &thinwall_plan::RuleSet::default_rules(),
     );
-    let a = PartAnalysis::new(&part, out.setup.clone());
     let page = html::plan_page("plan", &a, &report, &plan);
     assert_self_contained(&page);
     let data = html::data_of(&page).unwrap();
@@ -327,7 +327,8 @@ fn operations_page_holds_every_operation_and_its_fields() {
         Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
     );
     let lib = thinwall_ops::ToolLibrary::default_tools();
-    let (frame, ops) = thinwall_ops::plan_setup(&a, &lib, None).unwrap();
+    let holes = common::features_in_setup(&a);
+    let (frame, ops) = thinwall_ops::plan_setup(&a, &holes, &lib, None).unwrap();
     let count = ops.operations.len();
     let report = thinwall_report::operations::OperationsReport::new(
         "plate",

@@ -32,16 +32,17 @@ fn operations_keep_every_relation_of_the_plan() {
         let what = path.display().to_string();
         let part = thinwall_step::read_file(&path).unwrap().0;
         let request = thinwall_pipeline::Request::default();
-        let outcome = thinwall_pipeline::run(&part, None, &request).unwrap();
-        let plan = thinwall_plan::plan(&what, &part, &outcome, &rules);
-        if plan.removal.unavailable.is_some() {
-            continue;
-        }
         let a = PartAnalysis::new(
             &part,
             Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
         );
-        let (_, ops) = along_plan(&a, &plan, &lib, None).unwrap();
+        let outcome = thinwall_pipeline::run_on(&a, &request).unwrap();
+        let plan = thinwall_plan::plan(&what, &a, &outcome, &rules);
+        if plan.removal.unavailable.is_some() {
+            continue;
+        }
+        let holes = common::features_in_setup(&a);
+        let (_, ops) = along_plan(&a, &plan, &holes, &lib, None).unwrap();
         // The steps of each feature's operations.
         let steps = |id: &str| -> Vec<usize> {
             ops.operations
@@ -154,7 +155,8 @@ fn operations_along_the_plan_do_not_depend_on_pose() {
     let run = |text: &str, up: [f64; 3]| {
         let (part, plan) = common::plan_text(text, up, &rules);
         let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
-        let (_, ops) = along_plan(&a, &plan, &lib, None).unwrap();
+        let holes = common::features_in_setup(&a);
+        let (_, ops) = along_plan(&a, &plan, &holes, &lib, None).unwrap();
         ops
     };
     let base = run(&text, [0.0, 0.0, 1.0]);

@@ -8,7 +8,7 @@ mod common;
 
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_geom::Vector3;
-use thinwall_ops::drilling::{holes_of, DrillKind};
+use thinwall_ops::drilling::{hole_sites, DrillKind};
 use thinwall_ops::operations::{operations, SetupOperations, Stage};
 use thinwall_ops::ToolLibrary;
 use thinwall_plan::removal::{frame_of, Removal, StockShape};
@@ -30,7 +30,7 @@ fn plan(text: &str, up: [f64; 3]) -> SetupOperations {
     )
     .unwrap();
     let lib = ToolLibrary::default_tools();
-    let holes = holes_of(&a, &frame, &lib).unwrap();
+    let holes = hole_sites(&common::features_in_setup(&a), &frame, &lib);
     operations(&r, &lib, None, &holes)
 }
 

@@ -254,7 +254,8 @@ fn operations_keep_their_order_and_add_up() {
             &part,
             Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
         );
-        let holes = thinwall_ops::drilling::holes_of(&a, &r.frame, &lib).unwrap();
+        let holes =
+            thinwall_ops::drilling::hole_sites(&common::features_in_setup(&a), &r.frame, &lib);
         drilled_holes += holes.iter().filter(|h| h.drill.is_some()).count();
         let plan = operations(&r, &lib, None, &holes);
         let what = path.display().to_string();

@@ -3,14 +3,14 @@
 //! G-zones, issue 16), with per-face accessors and the same JSON as
 //! `thinwall access`.
 
-use crate::error::{construct, count, free, guard, json_into, null, tw_status};
+use crate::error::{construct, count, free, guard, json_into, null, study_failure, tw_status};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::c_char;
-use thinwall_access::reach::{self, ReachOptions, Tool};
-use thinwall_access::{FlankOptions, Nature};
-use thinwall_analysis::PartAnalysis;
-use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
+use thinwall_access::reach::Tool;
+use thinwall_access::Nature;
+use thinwall_report::access::AccessReport;
+use thinwall_study::AccessRequest;
 
 /// An accessibility result (opaque). Immutable; safe to share between
 /// threads.
@@ -47,59 +47,24 @@ pub unsafe extern "C" fn tw_access(
         if part.is_null() {
             return Err(null("part"));
         }
-        let mut options = FlankOptions::default();
-        if tool_diameter != 0.0 {
-            if !(tool_diameter.is_finite() && tool_diameter > 0.0) {
-                return Err((
-                    tw_status::TW_ERR_INVALID_ARGUMENT,
-                    format!("tool_diameter must be a positive length, got {tool_diameter}"),
-                ));
-            }
-            options.tool_diameter = tool_diameter;
-        }
-        if threshold != 0.0 {
-            if !(threshold > 0.0 && threshold <= 1.0) {
-                return Err((
-                    tw_status::TW_ERR_INVALID_ARGUMENT,
-                    format!("threshold must lie in (0, 1], got {threshold}"),
-                ));
-            }
-            options.threshold = threshold;
-        }
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
         let p = &*part;
-        let setup = o.request.setup.clone();
-        let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
-        let mesh = thinwall_brep::tessellate::part_mesh(&p.part);
-        let faces = thinwall_access::flank_milling(&a, &mesh, &options);
-        let tool = Tool::new(options.tool_diameter);
-        let reach_opts = ReachOptions {
-            tool: tool.clone(),
-            machine: setup.machine,
-            largest_tool: true,
-        };
-        let reached = reach::reach(&a, &mesh, &reach_opts)
-            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
-        let mut request = o.request.clone();
-        request.reach_tool = None;
-        request.allow_open = true;
-        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &request)
-            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
-        let tool_diameter = tool.diameter;
-        let settings = ReachSettings {
-            tool,
-            machine: setup.machine,
-        };
+        let mut request = AccessRequest::new(o.request.setup.clone());
+        // 0 asks for the default of either value.
+        if tool_diameter != 0.0 {
+            request.tool = Tool::new(tool_diameter);
+        }
+        if threshold != 0.0 {
+            request.threshold = threshold;
+        }
+        request.walls = o.request.clone();
+        request.walls.reach_tool = None;
+        request.walls.allow_open = true;
+        let study = p.study(o.request.parallel);
+        let accessed = thinwall_study::access(&study, &request).map_err(study_failure)?;
         Ok(tw_access_result {
-            report: AccessReport::new(
-                &p.name,
-                setup.up,
-                options,
-                faces,
-                settings,
-                ReachResult::new(&a, reached, &outcome, tool_diameter),
-            ),
+            report: accessed.report,
         })
     })
 }

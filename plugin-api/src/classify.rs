@@ -2,7 +2,7 @@
 //! volumes against a part, with a removal sequence.
 
 use crate::error::{
-    classify_failure, construct, count, cstring, free, json_into, null, string_at, tw_status,
+    construct, count, cstring, free, json_into, null, string_at, study_failure, tw_status,
 };
 use crate::options::tw_options;
 use crate::part::tw_part;
@@ -49,8 +49,8 @@ pub unsafe extern "C" fn tw_classify(
                     return Err(null(&format!("volumes[{i}]")));
                 }
                 Ok(thinwall_classify::Volume {
-                    name: (&*v).name.clone(),
-                    part: (&*v).part.clone(),
+                    name: (&*v).loaded.name.clone(),
+                    part: (&*v).loaded.part.clone(),
                     current: None,
                     up: None,
                 })
@@ -61,19 +61,16 @@ pub unsafe extern "C" fn tw_classify(
             .collect();
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
-        let setup = o.request.setup.clone();
-        let up = setup.up;
         let p = &*part;
-        let analysis = thinwall_analysis::PartAnalysis::with_graph(&p.part, &p.graph, setup);
-        let result = thinwall_classify::classify(&thinwall_classify::Request {
-            part: &analysis,
-            volumes: &vols,
-            before: &pairs,
-            together: &[],
-            priority: vec![],
-        })
-        .map_err(classify_failure)?;
-        let report = ClassificationReport::new(&p.name, up, &pairs, result);
+        let request = thinwall_study::ClassifyRequest {
+            setup: o.request.setup.clone(),
+            volumes: vols,
+            before: pairs,
+        };
+        let study = p.study(o.request.parallel);
+        let report = thinwall_study::classify(&study, request)
+            .map_err(study_failure)?
+            .report;
         let types = report
             .volumes
             .iter()

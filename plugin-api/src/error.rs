@@ -181,9 +181,9 @@ pub(crate) fn cstring(s: &str) -> CString {
 }
 
 /// The status of a read error, by its kind.
-pub(crate) fn read_failure(e: thinwall_step::StepError) -> Failure {
+fn read_status(e: &thinwall_step::StepError) -> tw_status {
     use thinwall_step::StepError as E;
-    let status = match &e {
+    match e {
         E::Io { .. } => tw_status::TW_ERR_IO,
         E::Syntax { .. } => tw_status::TW_ERR_PARSE,
         E::NoBrep { .. } => tw_status::TW_ERR_NO_BREP,
@@ -192,28 +192,27 @@ pub(crate) fn read_failure(e: thinwall_step::StepError) -> Failure {
         | E::CyclicAssembly { .. }
         | E::TooManyInstances { .. } => tw_status::TW_ERR_INVALID_PART,
         _ => tw_status::TW_ERR_INTERNAL,
-    };
-    (status, e.to_string())
+    }
 }
 
-/// The status of a pipeline error, by its kind.
-pub(crate) fn pipeline_failure(e: thinwall_pipeline::PipelineError) -> Failure {
+/// The status of a recognition error: every variant named, so a new one
+/// is a compile error here rather than a silent `TW_ERR_INTERNAL`.
+fn pipeline_status(e: &thinwall_pipeline::PipelineError) -> tw_status {
     use thinwall_pipeline::PipelineError as E;
-    let status = match &e {
-        E::Config(_) => tw_status::TW_ERR_INVALID_CONFIG,
+    match e {
+        E::Config(_) | E::Machining(_) => tw_status::TW_ERR_INVALID_CONFIG,
         E::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
+        E::Reach(_) => tw_status::TW_ERR_INVALID_ARGUMENT,
         E::OpenShell { .. } => tw_status::TW_ERR_INVALID_PART,
         E::Structure(_) => tw_status::TW_ERR_RECOGNITION,
-        E::Machining(_) => tw_status::TW_ERR_INVALID_CONFIG,
-        _ => tw_status::TW_ERR_INTERNAL,
-    };
-    (status, e.to_string())
+        E::SetupMismatch => tw_status::TW_ERR_INTERNAL,
+    }
 }
 
 /// The status of a classification error, by its kind.
-pub(crate) fn classify_failure(e: thinwall_classify::ClassifyError) -> Failure {
+fn classify_status(e: &thinwall_classify::ClassifyError) -> tw_status {
     use thinwall_classify::ClassifyError as E;
-    let status = match &e {
+    match e {
         E::Sequence { .. } | E::SelfPair { .. } | E::Cycle { .. } => {
             tw_status::TW_ERR_INVALID_SEQUENCE
         }
@@ -221,6 +220,29 @@ pub(crate) fn classify_failure(e: thinwall_classify::ClassifyError) -> Failure {
             tw_status::TW_ERR_INVALID_ARGUMENT
         }
         _ => tw_status::TW_ERR_INTERNAL,
+    }
+}
+
+/// The status and message of a use case's error (the CLI prints the same
+/// message and exits by the same error's kind).
+pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
+    use thinwall_ops::OpsError as O;
+    use thinwall_study::StudyError as S;
+    let status = match &e {
+        S::Invalid { .. } | S::Reach(_) | S::Sizing(_) => tw_status::TW_ERR_INVALID_ARGUMENT,
+        S::Io { .. } => tw_status::TW_ERR_IO,
+        S::Read(r) => read_status(r),
+        S::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
+        S::Request(p) | S::Recognition { source: p, .. } => pipeline_status(p),
+        S::Rules(_) | S::Tools(_) => tw_status::TW_ERR_INVALID_CONFIG,
+        S::Operations(O::NoEndMill { .. }) => tw_status::TW_ERR_INVALID_CONFIG,
+        S::Operations(O::Removal(_) | O::NoPlan(_)) => tw_status::TW_ERR_UNSUPPORTED,
+        S::Classify(c) => classify_status(c),
     };
     (status, e.to_string())
+}
+
+/// The status of a read error.
+pub(crate) fn read_failure(e: thinwall_step::StepError) -> Failure {
+    (read_status(&e), e.to_string())
 }

@@ -3,14 +3,16 @@
 //! drilled, in order, with per-operation accessors and the same JSON as
 //! `thinwall operations`.
 
-use crate::error::{construct, count, cstring, guard, json_into, null, string_at, tw_status};
+use crate::error::{
+    construct, count, cstring, guard, json_into, null, string_at, study_failure, tw_status,
+};
 use crate::options::tw_options;
 use crate::part::tw_part;
 use std::ffi::{c_char, CStr, CString};
-use thinwall_analysis::PartAnalysis;
 use thinwall_ops::operations::Stage;
-use thinwall_ops::{OpsError, ToolLibrary};
+use thinwall_ops::ToolLibrary;
 use thinwall_report::operations::OperationsReport;
+use thinwall_study::OperationsRequest;
 
 /// A set-up's operations (opaque). Immutable; safe to share between
 /// threads.
@@ -47,12 +49,8 @@ unsafe fn library(tools_toml: *const c_char) -> Result<ToolLibrary, (tw_status, 
             format!("tools_toml is not UTF-8: {e}"),
         )
     })?;
-    ToolLibrary::from_toml(text, "tools_toml").map_err(|e| {
-        (
-            tw_status::TW_ERR_INVALID_CONFIG,
-            format!("{}: {e}", e.code()),
-        )
-    })
+    ToolLibrary::from_toml(text, "tools_toml")
+        .map_err(|e| study_failure(thinwall_study::StudyError::from(e)))
 }
 
 /// Plan the operations of `part` in the set-up of `opt` (NULL for the
@@ -76,35 +74,24 @@ pub unsafe extern "C" fn tw_operations(
         if part.is_null() {
             return Err(null("part"));
         }
-        let depth = if axial_depth == 0.0 {
-            None
-        } else if axial_depth.is_finite() && axial_depth > 0.0 {
-            Some(axial_depth)
-        } else {
-            return Err((
-                tw_status::TW_ERR_INVALID_ARGUMENT,
-                format!("axial_depth must be a positive length, got {axial_depth}"),
-            ));
-        };
-        let lib = library(tools_toml)?;
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
         let p = &*part;
-        let setup = o.request.setup.clone();
-        let a = PartAnalysis::with_graph(&p.part, &p.graph, setup.clone());
-        let (frame, ops) = thinwall_ops::plan_setup(&a, &lib, depth).map_err(|e| {
-            let status = match e {
-                OpsError::NoEndMill { .. } => tw_status::TW_ERR_INVALID_CONFIG,
-                OpsError::Removal(_) => tw_status::TW_ERR_UNSUPPORTED,
-                _ => tw_status::TW_ERR_INTERNAL,
-            };
-            (status, format!("{}: {e}", e.code()))
-        })?;
-        let tools = ops.operations.iter().map(|o| cstring(&o.tool)).collect();
-        Ok(tw_operations_result {
-            report: OperationsReport::new(&p.name, setup.up, &frame, lib, ops),
-            tools,
-        })
+        let mut request = OperationsRequest::new(o.request.setup.clone());
+        request.tools = library(tools_toml)?;
+        // 0 asks for the largest end mill's depth.
+        request.axial_depth = (axial_depth != 0.0).then_some(axial_depth);
+        let study = p.study(o.request.parallel);
+        let report = thinwall_study::operations(&study, &request)
+            .map_err(study_failure)?
+            .report;
+        let tools = report
+            .setup
+            .operations
+            .iter()
+            .map(|o| cstring(&o.tool))
+            .collect();
+        Ok(tw_operations_result { report, tools })
     })
 }
 

@@ -45,13 +45,9 @@ unsafe fn with(
         // `f` unwinds past the copy and leaves `*o` untouched.
         let mut next = o.clone();
         f(&mut next).map_err(|m| (tw_status::TW_ERR_INVALID_ARGUMENT, m))?;
+        // The request's own rules, the same the CLI's flags meet.
         next.request
-            .config
-            .validate()
-            .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
-        next.request
-            .setup
-            .validate()
+            .check()
             .map_err(|e| (tw_status::TW_ERR_INVALID_ARGUMENT, e.to_string()))?;
         *o = next;
         Ok(())
@@ -81,9 +77,6 @@ pub unsafe extern "C" fn tw_options_set_up(
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_set_stock_offset(opt: *mut tw_options, mm: f64) -> tw_status {
     with(opt, |o| {
-        if !(mm.is_finite() && mm >= 0.0) {
-            return Err(format!("stock offset must be 0 mm or more, got {mm}"));
-        }
         o.request.machining.stock_offset = mm;
         Ok(())
     })
@@ -142,11 +135,6 @@ pub unsafe extern "C" fn tw_options_set_five_axis(
         if tilt_limit_deg < 0.0 {
             o.request.setup.machine = Machine::ThreeAxis;
             return Ok(());
-        }
-        if !(tilt_limit_deg.is_finite() && tilt_limit_deg <= 90.0) {
-            return Err(format!(
-                "tilt limit must be within 0..90 degrees, got {tilt_limit_deg}"
-            ));
         }
         o.request.setup.machine = Machine::FiveAxis { tilt_limit_deg };
         Ok(())

@@ -3,15 +3,19 @@
 use crate::error::{construct, count, free, null, read_failure, tw_status, Failure};
 use std::ffi::{c_char, CStr};
 use thinwall_brep::Part;
-use thinwall_graph::AdjacencyGraph;
 
 /// A part read from STEP (opaque). Immutable; safe to share between threads.
 pub struct tw_part {
-    pub(crate) name: String,
-    pub(crate) part: Part,
-    pub(crate) graph: AdjacencyGraph,
-    /// What the reader dropped or repaired (reported with a recognition).
-    pub(crate) read: thinwall_step::ReadReport,
+    /// The part, what the reader reported and its graph.
+    pub(crate) loaded: thinwall_study::LoadedPart,
+}
+
+impl tw_part {
+    /// A study of the part for one call (no worker threads unless
+    /// `parallel`).
+    pub(crate) fn study(&self, parallel: bool) -> thinwall_study::Study<'_> {
+        thinwall_study::Study::new(&self.loaded).with_parallelism(parallel)
+    }
 }
 
 /// A part from a read, with its adjacency graph.
@@ -20,12 +24,8 @@ fn finish(
     name: String,
 ) -> Result<tw_part, Failure> {
     let (part, read) = read.map_err(read_failure)?;
-    let graph = AdjacencyGraph::build(&part, &part.tolerances());
     Ok(tw_part {
-        name,
-        part,
-        graph,
-        read,
+        loaded: thinwall_study::LoadedPart::new(name, part, read),
     })
 }
 
@@ -73,7 +73,7 @@ pub unsafe extern "C" fn tw_part_load_memory(
 /// Number of faces of the part's solid bodies (0 for NULL).
 #[no_mangle]
 pub unsafe extern "C" fn tw_part_face_count(part: *const tw_part) -> usize {
-    count(part, |p| p.part.faces.len())
+    count(part, |p| p.loaded.part.faces.len())
 }
 
 /// Free a part. NULL is allowed.

@@ -2,7 +2,7 @@
 //! accessors for its constraints and the same JSON as `thinwall plan`.
 
 use crate::error::{
-    construct, count, cstring, free, guard, json_into, null, pipeline_failure, string_at, tw_status,
+    construct, count, cstring, free, guard, json_into, null, string_at, study_failure, tw_status,
 };
 use crate::options::tw_options;
 use crate::part::tw_part;
@@ -123,9 +123,13 @@ pub unsafe extern "C" fn tw_plan(
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
         let p = &*part;
-        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &o.request)
-            .map_err(pipeline_failure)?;
-        let plan = thinwall_plan::plan(&p.name, &p.part, &outcome, &rules);
+        let study = p.study(o.request.parallel);
+        let request = thinwall_study::PlanRequest {
+            recognize: o.request.clone(),
+            rules,
+        };
+        let planned = thinwall_study::plan(&study, &request).map_err(study_failure)?;
+        let plan = planned.plan.as_ref().clone();
         let pairs = plan
             .sequence
             .iter()

@@ -2,7 +2,7 @@
 //! same JSON as `thinwall recognize --format json`.
 
 use crate::error::{
-    construct, count, cstring, free, guard, json_into, null, pipeline_failure, string_at, tw_status,
+    construct, count, cstring, free, guard, json_into, null, string_at, study_failure, tw_status,
 };
 use crate::options::tw_options;
 use crate::part::tw_part;
@@ -46,10 +46,10 @@ pub unsafe extern "C" fn tw_recognize(
         let defaults = tw_options::default();
         let o = if opt.is_null() { &defaults } else { &*opt };
         let p = &*part;
-        let outcome = thinwall_pipeline::run(&p.part, Some(&p.graph), &o.request)
-            .map_err(pipeline_failure)?;
-        let report =
-            thinwall_report::recognition_report(&p.name, &p.part, &outcome).with_read(&p.read);
+        let study = p.study(o.request.parallel);
+        let report = thinwall_study::recognize(&study, &o.request)
+            .map_err(study_failure)?
+            .report;
         let feats = &report.stiffness_features;
         let ids = feats
             .iter()

@@ -69,9 +69,29 @@ pub fn plan_text(
         setup: thinwall_analysis::Setup::new(up, thinwall_analysis::Machine::ThreeAxis).unwrap(),
         ..Default::default()
     };
-    let out = thinwall_pipeline::run(&part, None, &req).unwrap();
-    let p = thinwall_plan::plan("part.step", &part, &out, rules);
+    let a = thinwall_analysis::PartAnalysis::new(&part, req.setup.clone());
+    let out = thinwall_pipeline::run_on(&a, &req).unwrap();
+    let p = thinwall_plan::plan("part.step", &a, &out, rules);
+    drop(a);
     (part, p)
+}
+
+/// The machining features of the analysed part found in its set-up (its
+/// up the tool axis): the holes operations drill.
+#[allow(dead_code)]
+pub fn features_in_setup(
+    a: &thinwall_analysis::PartAnalysis,
+) -> Vec<thinwall_machining::MachiningFeature> {
+    let req = thinwall_pipeline::Request {
+        setup: a.setup().clone(),
+        allow_open: true,
+        machining: thinwall_pipeline::MachiningRequest {
+            in_setup: true,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    thinwall_pipeline::run_on(a, &req).unwrap().machining
 }
 
 /// The STEP text of a part turned by a rigid motion: every 3-D

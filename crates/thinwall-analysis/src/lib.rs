@@ -36,6 +36,7 @@ use geo::MultiPolygon;
 use std::borrow::Cow;
 use std::collections::BTreeSet;
 use std::sync::OnceLock;
+use thinwall_brep::tessellate::Mesh;
 use thinwall_brep::{compute_face_props, FaceId, FaceProps, Part};
 use thinwall_geom::{BoundingBox, PartTolerances, Point3, Surface, Vector3};
 use thinwall_graph::{Adjacency, AdjacencyGraph, Convexity};
@@ -93,6 +94,7 @@ pub struct PartAnalysis<'a> {
     boundary: OnceLock<Vec<Vec<Point3>>>,
     planar: OnceLock<Vec<Option<PlanarFace>>>,
     smooth_degree: OnceLock<Vec<usize>>,
+    mesh: OnceLock<Mesh>,
     parallel: bool,
 }
 
@@ -111,6 +113,7 @@ impl<'a> PartAnalysis<'a> {
 
     fn from_parts(part: &'a Part, graph: Cow<'a, AdjacencyGraph>, setup: Setup) -> Self {
         let bbox = part.bounding_box();
+        thinwall_brep::builds::record(part, thinwall_brep::builds::Built::Analysis);
         Self {
             part,
             graph,
@@ -121,6 +124,7 @@ impl<'a> PartAnalysis<'a> {
             boundary: OnceLock::new(),
             planar: OnceLock::new(),
             smooth_degree: OnceLock::new(),
+            mesh: OnceLock::new(),
             parallel: true,
         }
     }
@@ -157,6 +161,14 @@ impl<'a> PartAnalysis<'a> {
     /// The tolerances in force for this part.
     pub fn tol(&self) -> &PartTolerances {
         &self.tol
+    }
+
+    /// The part's triangles ([`thinwall_brep::tessellate::part_mesh`]),
+    /// made on first use: the one mesh reach, access, the pictures and the
+    /// pages share.
+    pub fn mesh(&self) -> &Mesh {
+        self.mesh
+            .get_or_init(|| thinwall_brep::tessellate::part_mesh(self.part))
     }
 
     /// Every face's properties, by `face.index()` (computed on first use,

@@ -13,6 +13,7 @@
 //! assert_eq!(part.solid_face_count(), 0);
 //! ```
 
+pub mod builds;
 pub mod model;
 pub mod param_mesh;
 pub mod props;

@@ -85,6 +85,7 @@ pub const RELATIVE_DEVIATION: f64 = 1e-3;
 /// The part's triangles at `RELATIVE_DEVIATION` of its size: the one mesh
 /// the pictures, the pages and the accessibility analysis share.
 pub fn part_mesh(part: &Part) -> Mesh {
+    crate::builds::record(part, crate::builds::Built::Mesh);
     let size = part.bounding_box().diagonal().max(1e-9);
     tessellate(part, RELATIVE_DEVIATION * size)
 }

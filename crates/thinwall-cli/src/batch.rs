@@ -13,9 +13,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 use thinwall_report::expect::{compare, CheckTolerance};
 
-/// What `batch` writes per part.
-pub use crate::render::RecognitionFormat as BatchFormat;
-
 /// One line of the summary (`summary.jsonl`).
 #[derive(Debug, Serialize)]
 pub struct PartLine {
@@ -40,9 +37,9 @@ pub struct Batch {
     pub inputs: Vec<PathBuf>,
     pub out: PathBuf,
     pub jobs: usize,
-    pub format: BatchFormat,
+    pub format: thinwall_study::Format,
     pub expect: Option<PathBuf>,
-    pub request: thinwall_pipeline::Request,
+    pub request: thinwall_study::RecognizeRequest,
 }
 
 /// Run the batch; an error (exit 1) when any part failed.
@@ -162,29 +159,28 @@ struct Done {
 }
 
 fn recognize(b: &Batch, path: &Path, name: &str) -> Result<Done, Failure> {
-    let (model, read) = thinwall_step::read_file(path).map_err(Failure::from)?;
-    let outcome = thinwall_pipeline::run(&model, None, &b.request)
-        .map_err(|e| Failure::from(e).in_file(path))?;
-    let report = thinwall_report::recognition_report(&path.display().to_string(), &model, &outcome)
-        .with_read(&read);
+    let loaded = thinwall_study::LoadedPart::read_file(path)?;
+    let study = thinwall_study::Study::new(&loaded).with_parallelism(b.request.parallel);
+    let recognized = thinwall_study::recognize(&study, &b.request)?;
+    let report = &recognized.report;
     let mut features = BTreeMap::new();
     for f in &report.stiffness_features {
         *features.entry(f.feature.kind.to_string()).or_insert(0) += 1;
     }
-    let title = path.display().to_string();
-    let text = crate::render::recognition(b.format, &model, &outcome, &report, &title);
+    let (json, faces) = (report.to_json(), report.faces.len());
+    let text = thinwall_study::render(&recognized.into(), b.format)?;
     let file = b.out.join(format!("{name}.{}", b.format.extension()));
     std::fs::write(&file, &text).map_err(|e| Failure::Input(format!("{}: {e}", file.display())))?;
     let differences = match &b.expect {
         Some(dir) => Some(differences(
             &dir.join(format!("{name}.expect.json")),
-            &report.to_json(),
+            &json,
         )?),
         None => None,
     };
     Ok(Done {
         report: file.display().to_string(),
-        faces: report.faces.len(),
+        faces,
         features,
         differences,
     })

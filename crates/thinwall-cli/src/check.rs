@@ -7,16 +7,11 @@ use thinwall_report::expect::{compare, CheckTolerance};
 /// The part's recognition report as JSON text.
 pub fn recognition_json(
     part: &Path,
-    request: &thinwall_pipeline::Request,
+    request: &thinwall_study::RecognizeRequest,
 ) -> Result<String, Failure> {
-    let (model, read) = thinwall_step::read_file(part).map_err(Failure::from)?;
-    let outcome = thinwall_pipeline::run(&model, None, request)
-        .map_err(|e| Failure::from(e).in_file(part))?;
-    Ok(
-        thinwall_report::recognition_report(&part.display().to_string(), &model, &outcome)
-            .with_read(&read)
-            .to_json(),
-    )
+    let loaded = thinwall_study::LoadedPart::read_file(part)?;
+    let study = thinwall_study::Study::new(&loaded);
+    Ok(thinwall_study::recognize(&study, request)?.report.to_json())
 }
 
 /// Compare (or with `update`, store) and print the differences; an error
@@ -26,7 +21,7 @@ pub fn command(
     expect: &Path,
     update: bool,
     tol: CheckTolerance,
-    request: thinwall_pipeline::Request,
+    request: thinwall_study::RecognizeRequest,
 ) -> Result<(), Failure> {
     if !(tol.absolute_mm >= 0.0 && tol.relative >= 0.0) {
         return Err(Failure::Usage("tolerances must be 0 or more".into()));

@@ -19,16 +19,6 @@ impl Failure {
         Failure::Usage(e.to_string())
     }
 
-    /// The same failure, its message prefixed with the file it concerns.
-    pub fn in_file(self, file: &std::path::Path) -> Self {
-        let at = |m: String| format!("{}: {m}", file.display());
-        match self {
-            Failure::Usage(m) => Failure::Usage(at(m)),
-            Failure::Input(m) => Failure::Input(at(m)),
-            Failure::Internal(m) => Failure::Internal(at(m)),
-        }
-    }
-
     pub fn exit_code(&self) -> u8 {
         match self {
             Failure::Usage(_) => 2,
@@ -53,29 +43,20 @@ impl Failure {
     }
 }
 
+impl From<thinwall_study::StudyError> for Failure {
+    fn from(e: thinwall_study::StudyError) -> Self {
+        use thinwall_study::ErrorKind;
+        let m = e.to_string();
+        match e.kind() {
+            ErrorKind::Usage => Failure::Usage(m),
+            ErrorKind::Input => Failure::Input(m),
+            ErrorKind::Internal => Failure::Internal(m),
+        }
+    }
+}
+
 impl From<thinwall_step::StepError> for Failure {
     fn from(e: thinwall_step::StepError) -> Self {
-        if e.code() == "internal" {
-            Failure::Internal(e.to_string())
-        } else {
-            Failure::Input(e.to_string())
-        }
-    }
-}
-
-impl From<thinwall_pipeline::PipelineError> for Failure {
-    fn from(e: thinwall_pipeline::PipelineError) -> Self {
-        use thinwall_pipeline::PipelineError as E;
-        match e {
-            E::Config(_) | E::Setup(_) | E::Reach(_) => Failure::Usage(e.to_string()),
-            E::OpenShell { .. } | E::Machining(_) => Failure::Input(e.to_string()),
-            _ => Failure::Internal(e.to_string()),
-        }
-    }
-}
-
-impl From<thinwall_classify::ClassifyError> for Failure {
-    fn from(e: thinwall_classify::ClassifyError) -> Self {
-        Failure::Usage(e.to_string())
+        thinwall_study::StudyError::from(e).into()
     }
 }

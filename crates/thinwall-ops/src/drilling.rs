@@ -157,20 +157,3 @@ pub fn drilling_time_min(t: &CuttingTool, kind: DrillKind, depth_mm: f64) -> f64
     };
     path / t.feed_mm_min()
 }
-
-/// The holes of the analysed part along its set-up's axis (`frame.z`),
-/// found by the machining recognizer with that axis.
-pub fn holes_of(
-    a: &thinwall_analysis::PartAnalysis,
-    frame: &Frame,
-    lib: &ToolLibrary,
-) -> Result<Vec<HoleSite>, thinwall_machining::MachiningError> {
-    let features = thinwall_machining::recognize_with(
-        a,
-        &thinwall_machining::Options {
-            up: Some(frame.z),
-            ..Default::default()
-        },
-    )?;
-    Ok(hole_sites(&features, frame, lib))
-}

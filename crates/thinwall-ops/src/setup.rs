@@ -2,17 +2,17 @@
 //! C ABI run them: the removal (stock = the part's oriented box, minus the
 //! part), the holes along the tool axis, then [`operations`].
 
-use crate::drilling::holes_of;
+use crate::drilling::hole_sites;
 use crate::operations::{operations, SetupOperations};
 use crate::ToolLibrary;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Frame, Vector3};
+use thinwall_machining::MachiningFeature;
 use thinwall_plan::removal::{frame_of, Removal, RemovalError, StockShape};
 use thiserror::Error;
 
 /// Why a set-up's operations could not be planned.
 #[derive(Debug, Error)]
-#[non_exhaustive]
 pub enum OpsError {
     #[error("{library}: the library has no end mill to rough with")]
     NoEndMill { library: String },
@@ -20,11 +20,6 @@ pub enum OpsError {
     /// the set-up plane).
     #[error("{0}")]
     Removal(#[from] RemovalError),
-    #[error("{0}")]
-    Machining(#[from] thinwall_machining::MachiningError),
-    /// Recognition failed, so there is no plan to follow.
-    #[error("{0}")]
-    Pipeline(#[from] thinwall_pipeline::PipelineError),
     /// The plan has no machining features (its removal could not be
     /// decomposed), with why.
     #[error("the plan has no machining features: {0}")]
@@ -38,8 +33,6 @@ impl OpsError {
         match self {
             OpsError::NoEndMill { .. } => "tools.no_end_mill".to_string(),
             OpsError::Removal(e) => format!("removal.{}", e.code()),
-            OpsError::Machining(e) => format!("machining.{}", e.code()),
-            OpsError::Pipeline(e) => format!("recognition.{}", e.code()),
             OpsError::NoPlan(_) => "plan.no_features".to_string(),
         }
     }
@@ -57,36 +50,20 @@ fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f
 }
 
 /// The operations of `a`'s set-up with `lib` (the stock is the part's
-/// oriented box), and the removal frame their contours are in.
+/// oriented box), and the removal frame their contours are in. `features`
+/// are the part's machining features found in this set-up (its up the
+/// tool axis): the holes among them are drilled.
 pub fn plan_setup(
     a: &PartAnalysis,
+    features: &[MachiningFeature],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
     let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
-    let holes = holes_of(a, &frame, lib)?;
+    let holes = hole_sites(features, &frame, lib);
     Ok((frame, operations(&removal, lib, axial_depth_mm, &holes)))
-}
-
-/// The operations of `a`'s set-up along the plan ([`crate::planned`]):
-/// recognition, the plan with the shipped rules, then [`along_plan`].
-/// `file` names the part in the plan.
-pub fn plan_setup_by_feature(
-    a: &PartAnalysis,
-    file: &str,
-    lib: &ToolLibrary,
-    axial_depth_mm: Option<f64>,
-) -> Result<(Frame, SetupOperations), OpsError> {
-    let request = thinwall_pipeline::Request {
-        setup: a.setup().clone(),
-        ..Default::default()
-    };
-    let outcome = thinwall_pipeline::run(a.part(), None, &request)?;
-    let rules = thinwall_plan::RuleSet::default_rules();
-    let plan = thinwall_plan::plan(file, a.part(), &outcome, &rules);
-    along_plan(a, &plan, lib, axial_depth_mm)
 }
 
 /// The operations of `a`'s set-up along its `plan`: each machining feature
@@ -95,6 +72,7 @@ pub fn plan_setup_by_feature(
 pub fn along_plan(
     a: &PartAnalysis,
     plan: &thinwall_plan::Plan,
+    features: &[MachiningFeature],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
 ) -> Result<(Frame, SetupOperations), OpsError> {
@@ -107,7 +85,7 @@ pub fn along_plan(
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
-    let holes = holes_of(a, &frame, lib)?;
+    let holes = hole_sites(features, &frame, lib);
     let ops = crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size);
     Ok((frame, ops))
 }

@@ -65,6 +65,24 @@ pub struct MachiningRequest {
     pub stock_file: Option<String>,
 }
 
+impl Request {
+    /// Every rule about the request's values: usable recognition settings,
+    /// a usable set-up, a reach tool that is a tool, a stock allowance of
+    /// 0 mm or more.
+    pub fn check(&self) -> Result<(), PipelineError> {
+        self.config.validate()?;
+        self.setup.validate()?;
+        if let Some(tool) = &self.reach_tool {
+            tool.check()?;
+        }
+        let offset = self.machining.stock_offset;
+        if !(offset.is_finite() && offset >= 0.0) {
+            return Err(thinwall_machining::MachiningError::BadOffset(offset).into());
+        }
+        Ok(())
+    }
+}
+
 impl Default for Request {
     fn default() -> Self {
         Self {
@@ -108,7 +126,6 @@ pub struct Outcome {
 
 /// Why the pipeline could not run, or failed.
 #[derive(Debug, Error)]
-#[non_exhaustive]
 pub enum PipelineError {
     #[error(transparent)]
     Config(#[from] ConfigError),
@@ -130,6 +147,10 @@ pub enum PipelineError {
     /// than the cutter).
     #[error(transparent)]
     Reach(#[from] thinwall_access::reach::ReachError),
+    /// The analysis handed in is of another set-up than the request's: a
+    /// defect of the caller.
+    #[error("internal error: the analysis is of another set-up than the request")]
+    SetupMismatch,
 }
 
 impl PipelineError {
@@ -142,29 +163,40 @@ impl PipelineError {
             PipelineError::Structure(e) => format!("structure.{}", e.code()),
             PipelineError::Machining(e) => format!("machining.{}", e.code()),
             PipelineError::Reach(e) => format!("reach.{}", e.code()),
+            PipelineError::SetupMismatch => "setup.mismatch".to_string(),
         }
     }
 }
 
 /// Run analysis → recognizers → connections → machining on `part`, with
-/// its adjacency graph when the caller already has one.
+/// its adjacency graph when the caller already has one. Builds the
+/// analysis; a caller that keeps one (the study) calls [`run_on`].
 pub fn run(
     part: &Part,
     graph: Option<&AdjacencyGraph>,
     req: &Request,
 ) -> Result<Outcome, PipelineError> {
-    req.config.validate()?;
-    req.setup.validate()?;
-    if let Some(tool) = &req.reach_tool {
-        tool.check()?;
-    }
-    let mut clock = Clock::start();
+    req.check()?;
+    let t0 = Instant::now();
     let a = match graph {
         Some(g) => PartAnalysis::with_graph(part, g, req.setup.clone()),
         None => PartAnalysis::new(part, req.setup.clone()),
     }
     .with_parallelism(req.parallel);
-    clock.lap("adjacency graph");
+    let built = t0.elapsed().as_secs_f64();
+    let mut out = run_on(&a, req)?;
+    out.timings.insert(0, ("adjacency graph", built));
+    Ok(out)
+}
+
+/// Recognizers → connections → machining on an analysis of the part in
+/// the request's set-up (`a.setup()` must be `req.setup`).
+pub fn run_on(a: &PartAnalysis, req: &Request) -> Result<Outcome, PipelineError> {
+    req.check()?;
+    if a.setup() != &req.setup {
+        return Err(PipelineError::SetupMismatch);
+    }
+    let mut clock = Clock::start();
     let free = a.free_edges();
     if !free.is_empty() && !req.allow_open {
         return Err(PipelineError::OpenShell {
@@ -175,9 +207,9 @@ pub fn run(
     a.face_props();
     clock.lap("face properties");
     // The two recognizers only read the analysis: run them side by side.
-    let stiffness = || timed(|| thinwall_recognize::recognize(&a, &req.config));
+    let stiffness = || timed(|| thinwall_recognize::recognize(a, &req.config));
     let m_opts = machining_options(req);
-    let conventional = || timed(|| thinwall_machining::recognize_with(&a, &m_opts));
+    let conventional = || timed(|| thinwall_machining::recognize_with(a, &m_opts));
     let ((recognition, t_stiff), (machining, t_mach)) = if req.parallel {
         rayon::join(stiffness, conventional)
     } else {
@@ -193,12 +225,12 @@ pub fn run(
     relate(&mut machining, &mut recognition);
     clock.lap("connections and links");
     if let Some(tool) = &req.reach_tool {
-        wall_reach(part, &a, &recognition, &mut structure, tool)?;
+        wall_reach(a, &recognition, &mut structure, tool)?;
         clock.lap("reach of wall sides");
     }
     let warnings = a.warnings();
     let view_notes = disagreements(&machining, &recognition);
-    let hole_patterns = thinwall_machining::hole_patterns(&a, &machining);
+    let hole_patterns = thinwall_machining::hole_patterns(a, &machining);
     Ok(Outcome {
         request: req.clone(),
         setup: req.setup.clone(),
@@ -206,7 +238,7 @@ pub fn run(
         structure,
         machining,
         hole_patterns,
-        face_props: a.into_face_props(),
+        face_props: a.face_props().to_vec(),
         warnings,
         view_notes,
         timings: clock.laps,
@@ -215,7 +247,6 @@ pub fn run(
 
 /// Each wall side's reach with material in the way, added to its verdict.
 fn wall_reach(
-    part: &Part,
     a: &PartAnalysis,
     recognition: &Recognition,
     structure: &mut Structure,
@@ -225,7 +256,7 @@ fn wall_reach(
     if !recognition.features.iter().any(|f| f.sides.is_some()) {
         return Ok(());
     }
-    let mesh = thinwall_brep::tessellate::part_mesh(part);
+    let mesh = a.mesh();
     let opts = reach::ReachOptions {
         tool: tool.clone(),
         machine: a.setup().machine,
@@ -238,7 +269,7 @@ fn wall_reach(
         .filter_map(|f| f.sides.as_ref().map(|s| (f.body, s)))
         .flat_map(|(b, s)| s.iter().flatten().map(move |&id| (b, id)))
         .collect();
-    let faces = reach::reach_of(a, &mesh, &opts, |f| {
+    let faces = reach::reach_of(a, mesh, &opts, |f| {
         let face = part.face(f);
         sides.contains(&(face.body.0, face.step_id))
     })?;

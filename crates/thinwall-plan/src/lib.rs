@@ -26,8 +26,8 @@ pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
 pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
 
 use serde::Serialize;
-use thinwall_analysis::{FeatureId, StiffnessKind};
-use thinwall_brep::Part;
+use thinwall_analysis::{FeatureId, PartAnalysis, StiffnessKind};
+
 use thinwall_connect::Connection;
 use thinwall_pipeline::Outcome;
 
@@ -227,8 +227,10 @@ fn wall_plans(out: &Outcome) -> Vec<WallPlan> {
         .collect()
 }
 
-/// Plan the pipeline's outcome on `part` with `rules`.
-pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
+/// Plan the pipeline's outcome on the analysed part with `rules` (`out`
+/// is the recognition of `analysis`'s part in its set-up).
+pub fn plan(file: &str, analysis: &PartAnalysis, out: &Outcome, rules: &RuleSet) -> Plan {
+    let part = analysis.part();
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
     let mut walls = wall_plans(out);
@@ -237,10 +239,9 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
     let limits = limits(out, &walls);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
-    let analysis = thinwall_analysis::PartAnalysis::new(part, out.setup.clone());
     let splits = adapt::hole_splits(&faces, out, &walls, &shapes);
     let (removal, mut machining_features, frame) =
-        whole::removal_plan(&analysis, out, &layers, &splits);
+        whole::removal_plan(analysis, out, &layers, &splits);
     let adapted = adapt::relations(
         &faces,
         out,
@@ -252,12 +253,7 @@ pub fn plan(file: &str, part: &Part, out: &Outcome, rules: &RuleSet) -> Plan {
     );
     let relations: Vec<LayerConstraint> = layer_sequence.iter().cloned().chain(adapted).collect();
     let feature_sequence = feature_order::order(&machining_features, &relations);
-    classified::classify_features(
-        &analysis,
-        &frame,
-        &mut machining_features,
-        &feature_sequence,
-    );
+    classified::classify_features(analysis, &frame, &mut machining_features, &feature_sequence);
     Plan {
         schema: PLAN_SCHEMA.to_string(),
         thinwall_version: env!("CARGO_PKG_VERSION").to_string(),

@@ -245,7 +245,7 @@ fn page(
         across: [e1.into(), e2.into()],
         size: part.bounding_box().diagonal(),
         palette: crate::palette::table(),
-        part: geometry(part, &part_mesh(part)),
+        part: geometry(part, a.mesh()),
         face_kinds: recognition
             .map(|r| crate::svg::face_kinds(part, &r.stiffness_features))
             .unwrap_or_default(),

@@ -3,10 +3,9 @@
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use thinwall_analysis::{PartAnalysis, Setup};
-use thinwall_brep::{BodyKind, Part, Units};
+use thinwall_analysis::PartAnalysis;
+use thinwall_brep::{BodyKind, Units};
 use thinwall_geom::{BoundingBox, Point3, Vector3};
-use thinwall_graph::AdjacencyGraph;
 use thinwall_step::{ReadIssue, ReadReport};
 
 /// Version tag of the JSON layout below.
@@ -104,17 +103,14 @@ pub struct InspectReport {
     pub warnings: Vec<thinwall_analysis::Warning>,
 }
 
-/// Build the report of a part read from `file`.
-pub fn inspect(
-    file: &str,
-    part: &Part,
-    read: &ReadReport,
-    graph: &AdjacencyGraph,
-) -> InspectReport {
+/// Build the report of a part read from `file`, from its analysis (any
+/// set-up: nothing here depends on it).
+pub fn inspect(file: &str, analysis: &PartAnalysis, read: &ReadReport) -> InspectReport {
+    let part = analysis.part();
+    let graph = analysis.graph();
     let mut face_counts = BTreeMap::new();
     let mut geometry_warnings = Vec::new();
     let mut faces = Vec::with_capacity(part.faces.len());
-    let analysis = PartAnalysis::with_graph(part, graph, Setup::default());
     for id in part.face_ids() {
         let f = part.face(id);
         let props = analysis.props(id);

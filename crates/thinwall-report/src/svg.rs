@@ -64,11 +64,11 @@ pub struct Key {
 /// the kind of stiffness feature of each face.
 pub fn picture(
     a: &PartAnalysis,
-    mesh: &Mesh,
     features: &[crate::FeatureEntry],
     title: &str,
     width: f64,
 ) -> String {
+    let mesh = a.mesh();
     let (colours, legend) = part_colours(a, mesh, features);
     let layer = Layer {
         mesh,
@@ -114,12 +114,12 @@ fn part_colours(
 /// (when there are few enough to read: `MAX_NUMBERS`).
 pub fn plan_picture(
     a: &PartAnalysis,
-    part_mesh: &Mesh,
     features: &[crate::FeatureEntry],
     plan: &thinwall_plan::Plan,
     title: &str,
     width: f64,
 ) -> String {
+    let part_mesh = a.mesh();
     let (colours, mut legend) = part_colours(a, part_mesh, features);
     let mut layers = vec![Layer {
         mesh: part_mesh,
@@ -186,10 +186,10 @@ pub fn classification_picture(
     title: &str,
     width: f64,
 ) -> String {
-    let part_mesh = thinwall_brep::tessellate::part_mesh(a.part());
+    let part_mesh = a.mesh();
     let mut layers = vec![Layer {
         colours: vec![crate::palette::OTHER; part_mesh.faces.len()],
-        mesh: &part_mesh,
+        mesh: part_mesh,
         opacity: 0.3,
     }];
     let meshes: Vec<Mesh> = volumes

@@ -1,0 +1,159 @@
+//! What each use case is asked, with every rule about its values in its
+//! `check()`: a front end fills a request and never checks a value itself.
+
+use crate::StudyError;
+use thinwall_access::reach::Tool;
+use thinwall_access::FlankOptions;
+use thinwall_analysis::{Machine, Setup};
+use thinwall_ops::ToolLibrary;
+use thinwall_plan::sizing::{SizingParameters, WallDimensions};
+use thinwall_plan::RuleSet;
+
+/// `recognize`: the pipeline's request (set-up, settings, connections,
+/// machining, reach of wall sides); its `check()` holds its rules.
+pub type RecognizeRequest = thinwall_pipeline::Request;
+
+/// The set-up of a command: `up` (+Z when not given) on `machine`. The one
+/// place an `--up` becomes a set-up.
+pub fn setup_of(up: Option<[f64; 3]>, machine: Machine) -> Result<Setup, StudyError> {
+    Ok(Setup::new(up.unwrap_or([0.0, 0.0, 1.0]), machine)?)
+}
+
+/// `plan`: a recognition and the sequence rules.
+#[derive(Clone, Debug)]
+pub struct PlanRequest {
+    pub recognize: RecognizeRequest,
+    pub rules: RuleSet,
+}
+
+impl PlanRequest {
+    pub fn check(&self) -> Result<(), StudyError> {
+        self.recognize.check().map_err(StudyError::Request)
+    }
+}
+
+/// `access`: flank milling and reach of every face with a tool and its
+/// holder, in a set-up; the walls whose sides are judged come from
+/// `walls` (a recognition without reach of its own).
+#[derive(Clone, Debug)]
+pub struct AccessRequest {
+    pub setup: Setup,
+    pub tool: Tool,
+    /// Widen the unreachable zones by the tool's radius.
+    pub tool_radius: bool,
+    /// Share of a face that must be reached for it to be advisable, 0..=1.
+    pub threshold: f64,
+    /// The recognition the walls come from (its set-up is `setup`).
+    pub walls: RecognizeRequest,
+}
+
+impl AccessRequest {
+    /// The defaults (Ø12 tool, threshold 0.95) in `setup`.
+    pub fn new(setup: Setup) -> Self {
+        let flank = FlankOptions::default();
+        Self {
+            walls: RecognizeRequest {
+                setup: setup.clone(),
+                allow_open: true,
+                ..Default::default()
+            },
+            setup,
+            tool: Tool::new(flank.tool_diameter),
+            tool_radius: flank.tool_radius,
+            threshold: flank.threshold,
+        }
+    }
+
+    pub fn check(&self) -> Result<(), StudyError> {
+        self.setup.validate()?;
+        self.tool.check()?;
+        if !(0.0..=1.0).contains(&self.threshold) {
+            return Err(StudyError::invalid(
+                "threshold",
+                format!("must lie between 0 and 1, got {}", self.threshold),
+            ));
+        }
+        if self.walls.setup != self.setup {
+            return Err(StudyError::invalid(
+                "walls",
+                "must be recognized in the access set-up",
+            ));
+        }
+        self.walls.check().map_err(StudyError::Request)
+    }
+
+    /// The flank-milling options.
+    pub fn flank(&self) -> FlankOptions {
+        FlankOptions {
+            tool_diameter: self.tool.diameter,
+            tool_radius: self.tool_radius,
+            threshold: self.threshold,
+        }
+    }
+}
+
+/// `operations`: a set-up's operations with a tool library.
+#[derive(Clone, Debug)]
+pub struct OperationsRequest {
+    pub setup: Setup,
+    pub tools: ToolLibrary,
+    /// Depth of cut between levels, mm (none: the largest end mill's).
+    pub axial_depth: Option<f64>,
+    /// Follow the plan (each machining feature on its own) instead of
+    /// layering the whole removal at once.
+    pub by_feature: bool,
+}
+
+impl OperationsRequest {
+    /// The shipped tool library in `setup`, the whole removal at once.
+    pub fn new(setup: Setup) -> Self {
+        Self {
+            setup,
+            tools: ToolLibrary::default_tools(),
+            axial_depth: None,
+            by_feature: false,
+        }
+    }
+
+    pub fn check(&self) -> Result<(), StudyError> {
+        self.setup.validate()?;
+        if let Some(d) = self.axial_depth {
+            if !(d.is_finite() && d > 0.0) {
+                return Err(StudyError::invalid(
+                    "axial_depth",
+                    format!("must be a positive length, got {d}"),
+                ));
+            }
+        }
+        if self.tools.end_mills().next().is_none() {
+            return Err(thinwall_ops::OpsError::NoEndMill {
+                library: self.tools.source.clone(),
+            }
+            .into());
+        }
+        Ok(())
+    }
+}
+
+/// `classify`: volumes against the part, in a set-up, with the order in
+/// which some are removed (`(a, b)`: volume a before volume b).
+pub struct ClassifyRequest {
+    pub setup: Setup,
+    pub volumes: Vec<thinwall_classify::Volume>,
+    pub before: Vec<(usize, usize)>,
+}
+
+impl ClassifyRequest {
+    pub fn check(&self) -> Result<(), StudyError> {
+        self.setup.validate()?;
+        Ok(())
+    }
+}
+
+/// `size-wall`: a wall and the step-approach model's parameters (their
+/// rules are the sizing model's own and are checked by it).
+#[derive(Clone, Debug)]
+pub struct SizeWallRequest {
+    pub wall: WallDimensions,
+    pub parameters: SizingParameters,
+}

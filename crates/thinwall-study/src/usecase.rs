@@ -1,0 +1,224 @@
+//! One function per command: a checked request in, a typed result out.
+//! Each runs on the study's analysis of its set-up and on results the
+//! study already holds; none builds an analysis or a mesh of its own.
+
+use crate::request::{
+    AccessRequest, ClassifyRequest, OperationsRequest, PlanRequest, RecognizeRequest,
+    SizeWallRequest,
+};
+use crate::{AtSetup, Study, StudyError};
+use std::path::Path;
+use std::sync::Arc;
+use thinwall_access::reach::{self, ReachOptions};
+use thinwall_analysis::Setup;
+use thinwall_pipeline::{MachiningRequest, Outcome, PipelineError};
+use thinwall_plan::{Plan, RuleSet};
+use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
+use thinwall_report::operations::OperationsReport;
+use thinwall_report::{ClassificationReport, InspectReport, RecognitionReport};
+
+/// `inspect`: the part's bodies, faces, edges and convexity.
+pub struct Inspected<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub report: InspectReport,
+}
+
+/// `recognize`: the outcome and its report.
+pub struct Recognized<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub outcome: Arc<Outcome>,
+    pub report: RecognitionReport,
+    /// Seconds per stage: the analysis, then the pipeline's.
+    pub timings: Vec<(&'static str, f64)>,
+}
+
+/// `plan`: the recognition it planned and the plan.
+pub struct Planned<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub outcome: Arc<Outcome>,
+    pub plan: Arc<Plan>,
+}
+
+/// `access`: flank milling and reach of every face.
+pub struct Accessed<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub report: AccessReport,
+}
+
+/// `operations`: a set-up's operations.
+pub struct Operated<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub report: OperationsReport,
+}
+
+/// `classify`: each volume's type and the faces it touches, with the
+/// volumes (for pictures).
+pub struct Classified<'p> {
+    pub at: Arc<AtSetup<'p>>,
+    pub report: ClassificationReport,
+    pub volumes: Vec<thinwall_classify::Volume>,
+}
+
+/// A recognition failure of this study's part.
+fn recognition(study: &Study, source: PipelineError) -> StudyError {
+    StudyError::Recognition {
+        file: study.name().to_string(),
+        source,
+    }
+}
+
+pub fn inspect<'p>(study: &Study<'p>) -> Result<Inspected<'p>, StudyError> {
+    let at = study.at(&Setup::default())?;
+    let loaded = study.loaded();
+    let report = thinwall_report::inspect(&loaded.name, &at.analysis, &loaded.read);
+    Ok(Inspected { at, report })
+}
+
+pub fn recognize<'p>(
+    study: &Study<'p>,
+    req: &RecognizeRequest,
+) -> Result<Recognized<'p>, StudyError> {
+    req.check().map_err(StudyError::Request)?;
+    let at = study.at(&req.setup)?;
+    let outcome = at.outcome(req).map_err(|e| recognition(study, e))?;
+    let loaded = study.loaded();
+    let report = thinwall_report::recognition_report(&loaded.name, &loaded.part, &outcome)
+        .with_read(&loaded.read);
+    let mut timings = vec![("analysis", at.built_seconds)];
+    timings.extend(outcome.timings.iter().copied());
+    Ok(Recognized {
+        at,
+        outcome,
+        report,
+        timings,
+    })
+}
+
+pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
+    req.check()?;
+    let at = study.at(&req.recognize.setup)?;
+    let outcome = at
+        .outcome(&req.recognize)
+        .map_err(|e| recognition(study, e))?;
+    let plan = at
+        .plan(study.name(), &req.recognize, &req.rules)
+        .map_err(|e| recognition(study, e))?;
+    Ok(Planned { at, outcome, plan })
+}
+
+/// Write each machining feature of `plan` as a STEP solid (`V1.step`, …)
+/// into `dir`; the number of solids not written (bounded by a cylinder or
+/// a cone: their volumes are in the plan).
+pub fn write_volumes(plan: &Plan, dir: &Path) -> Result<usize, StudyError> {
+    let io = |p: &Path, e: std::io::Error| StudyError::Io {
+        path: p.display().to_string(),
+        message: e.to_string(),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
+    let mut skipped = 0;
+    for f in &plan.machining_features {
+        let (text, missing) = thinwall_plan::volumes::feature_step(plan, f);
+        skipped += missing;
+        if missing == f.solids.len() {
+            continue;
+        }
+        let path = dir.join(format!("{}.step", f.id));
+        std::fs::write(&path, text).map_err(|e| io(&path, e))?;
+    }
+    Ok(skipped)
+}
+
+pub fn access<'p>(study: &Study<'p>, req: &AccessRequest) -> Result<Accessed<'p>, StudyError> {
+    access_observed(study, req, |_, _| {})
+}
+
+/// [`access`], calling `done(faces done, faces)` as the reach of each face
+/// is judged (it takes minutes on large parts: a host shows progress).
+pub fn access_observed<'p>(
+    study: &Study<'p>,
+    req: &AccessRequest,
+    done: impl Fn(usize, usize) + Sync,
+) -> Result<Accessed<'p>, StudyError> {
+    req.check()?;
+    let at = study.at(&req.setup)?;
+    let a = &at.analysis;
+    let faces = thinwall_access::flank_milling(a, a.mesh(), &req.flank());
+    let opts = ReachOptions {
+        tool: req.tool.clone(),
+        machine: req.setup.machine,
+        largest_tool: true,
+    };
+    let reached = reach::reach_observed(a, a.mesh(), &opts, |_| true, done)?;
+    let outcome = at.outcome(&req.walls).map_err(|e| recognition(study, e))?;
+    let reach = ReachResult::new(a, reached, &outcome, req.tool.diameter);
+    let settings = ReachSettings {
+        tool: req.tool.clone(),
+        machine: req.setup.machine,
+    };
+    let report = AccessReport::new(
+        study.name(),
+        req.setup.up,
+        req.flank(),
+        faces,
+        settings,
+        reach,
+    );
+    Ok(Accessed { at, report })
+}
+
+pub fn operations<'p>(
+    study: &Study<'p>,
+    req: &OperationsRequest,
+) -> Result<Operated<'p>, StudyError> {
+    req.check()?;
+    let at = study.at(&req.setup)?;
+    let a = &at.analysis;
+    // The holes are the machining features found in this set-up.
+    let in_setup = RecognizeRequest {
+        setup: req.setup.clone(),
+        allow_open: true,
+        machining: MachiningRequest {
+            in_setup: true,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let holes = at.outcome(&in_setup).map_err(|e| recognition(study, e))?;
+    let (frame, ops) = if req.by_feature {
+        let recognize = RecognizeRequest {
+            setup: req.setup.clone(),
+            ..Default::default()
+        };
+        let plan = at
+            .plan(study.name(), &recognize, &RuleSet::default_rules())
+            .map_err(|e| recognition(study, e))?;
+        thinwall_ops::setup::along_plan(a, &plan, &holes.machining, &req.tools, req.axial_depth)?
+    } else {
+        thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
+    };
+    let report = OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
+    Ok(Operated { at, report })
+}
+
+pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classified<'p>, StudyError> {
+    req.check()?;
+    let at = study.at(&req.setup)?;
+    let result = thinwall_classify::classify(&thinwall_classify::Request {
+        part: &at.analysis,
+        volumes: &req.volumes,
+        before: &req.before,
+        together: &[],
+        priority: vec![],
+    })?;
+    let report = ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
+    Ok(Classified {
+        at,
+        report,
+        volumes: req.volumes,
+    })
+}
+
+/// `size-wall`: B_RF, h_RF and H_RF of a thin wall (no part needed).
+pub fn size_wall(req: &SizeWallRequest) -> Result<thinwall_plan::Sizes, StudyError> {
+    Ok(thinwall_plan::size_wall(&req.wall, &req.parameters)?)
+}
