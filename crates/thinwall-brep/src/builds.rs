@@ -1,11 +1,13 @@
 //! How many times costly derived things (an analysis, a mesh) were built
-//! for each part in this process, keyed by the part's address: a test asks
+//! for each part on this thread, keyed by the part's address: a test asks
 //! that every command builds its part's analysis and mesh once, whatever
-//! it builds for other solids (a plan's volumes).
+//! it builds for other solids (a plan's volumes). Counted per thread (no
+//! lock shared by a host's threads); the study builds both on the thread
+//! that calls it.
 
 use crate::Part;
+use std::cell::RefCell;
 use std::collections::HashMap;
-use std::sync::{Mutex, OnceLock};
 
 /// What was built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -14,23 +16,18 @@ pub enum Built {
     Mesh,
 }
 
-type Counts = Mutex<HashMap<(usize, Built), usize>>;
-
-fn counts() -> &'static Counts {
-    static COUNTS: OnceLock<Counts> = OnceLock::new();
-    COUNTS.get_or_init(Counts::default)
+thread_local! {
+    static COUNTS: RefCell<HashMap<(usize, Built), usize>> = RefCell::new(HashMap::new());
 }
 
 /// Count one `what` built for `part`.
 pub fn record(part: &Part, what: Built) {
     let key = (part as *const Part as usize, what);
-    let mut counts = counts().lock().unwrap_or_else(|p| p.into_inner());
-    *counts.entry(key).or_insert(0) += 1;
+    COUNTS.with(|c| *c.borrow_mut().entry(key).or_insert(0) += 1);
 }
 
-/// How many `what` were built for `part` (at its address) so far.
+/// How many `what` were built for `part` (at its address) on this thread.
 pub fn count(part: &Part, what: Built) -> usize {
     let key = (part as *const Part as usize, what);
-    let counts = counts().lock().unwrap_or_else(|p| p.into_inner());
-    counts.get(&key).copied().unwrap_or(0)
+    COUNTS.with(|c| c.borrow().get(&key).copied().unwrap_or(0))
 }
