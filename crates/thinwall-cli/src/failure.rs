@@ -46,7 +46,11 @@ impl Failure {
 impl From<thinwall_study::StudyError> for Failure {
     fn from(e: thinwall_study::StudyError) -> Self {
         use thinwall_study::ErrorKind;
-        let m = e.to_string();
+        // Name the flag a bad value came from.
+        let m = match e.field() {
+            Some(field) => format!("--{}: {e}", field.replace('_', "-")),
+            None => e.to_string(),
+        };
         match e.kind() {
             ErrorKind::Usage => Failure::Usage(m),
             ErrorKind::Input => Failure::Input(m),

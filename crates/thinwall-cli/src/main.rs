@@ -195,12 +195,15 @@ fn recognize(
     output: Option<&Path>,
 ) -> Result<(), Failure> {
     let t0 = std::time::Instant::now();
-    let loaded = LoadedPart::read_file(part)?;
+    let (model, read) = thinwall_step::read_file(part)?;
     let read_seconds = t0.elapsed().as_secs_f64();
+    let loaded = LoadedPart::new(part.display().to_string(), model, read);
+    let graph_seconds = t0.elapsed().as_secs_f64() - read_seconds;
     let s = Study::new(&loaded);
     let recognized = study::recognize(&s, request)?;
     if verbose {
-        eprintln!("{read_seconds:>9.4} s  read and adjacency graph");
+        eprintln!("{read_seconds:>9.4} s  read");
+        eprintln!("{graph_seconds:>9.4} s  adjacency graph");
         for (stage, seconds) in &recognized.timings {
             eprintln!("{seconds:>9.4} s  {stage}");
         }

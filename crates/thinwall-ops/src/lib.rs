@@ -12,6 +12,7 @@ mod order;
 pub mod planned;
 pub mod rest;
 pub mod setup;
+mod stage;
 pub mod tools;
 
 pub use setup::{plan_setup, OpsError};

@@ -16,6 +16,9 @@
 //! The passes are ordered (`order.rs`) and consecutive passes of one
 //! tool, stage and feature, going deeper, are joined into one operation.
 
+pub(crate) use crate::stage::Draft;
+pub use crate::stage::{Regions, Stage};
+
 use crate::drilling::{drilling_time_min, DrillKind, HoleSite};
 use crate::layers::{roughing_layers, CutterField, LayerOptions, RoughingLayer};
 use crate::order::{group_edges, nested, precedence, tool_order};
@@ -25,21 +28,6 @@ use petgraph::graph::NodeIndex;
 use rayon::prelude::*;
 use serde::Serialize;
 use thinwall_plan::removal::Removal;
-
-/// What an operation does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Stage {
-    Rough,
-    SemiFinish,
-    /// Along the part's walls: a tool's boundary region (Popma's, within
-    /// the finishing stepover of a part contour), down milling at the
-    /// finishing conditions, after that tool's roughing of the layer.
-    FinishWalls,
-    /// A floor's finishing layer.
-    Finish,
-    Drill,
-}
 
 impl Stage {
     pub fn name(self) -> &'static str {
@@ -57,15 +45,6 @@ impl Stage {
     pub fn clears(self) -> bool {
         matches!(self, Stage::Rough | Stage::SemiFinish | Stage::FinishWalls)
     }
-}
-
-/// An operation's share of Popma's regions, mm² (they add up to its
-/// area; a floor's finish has none).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
-pub struct Regions {
-    pub boundary_mm2: f64,
-    pub full_cut_mm2: f64,
-    pub roughing_mm2: f64,
 }
 
 /// One layer of an operation: what its tool does there.
@@ -439,26 +418,6 @@ fn rests(field_tools: &[Vec<FieldTools>]) -> Vec<Rest> {
                 })
         })
         .collect()
-}
-
-/// An operation before it has a place.
-pub(crate) struct Draft<'a> {
-    pub(crate) tool: &'a CuttingTool,
-    pub(crate) layer: usize,
-    pub(crate) stage: Stage,
-    pub(crate) fields: Vec<usize>,
-    adjacency: Adjacency,
-    area: f64,
-    regions: Option<Regions>,
-    /// Of the area, what lies over a floor (rough and semi-finish: left
-    /// to the floor's finish), mm².
-    floor: f64,
-    /// Drilling: how, its holes (indices into the sites), their volume
-    /// in the layers (mm³) and the highest entry (mm).
-    drill: Option<DrillKind>,
-    holes: Vec<usize>,
-    drilled_mm3: f64,
-    pub(crate) entry_mm: f64,
 }
 
 /// The hole whose drill takes field `f` of layer `l` whole: the layer

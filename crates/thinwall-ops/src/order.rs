@@ -15,7 +15,7 @@
 //! it has work, the nearest ready pass first.
 
 use crate::layers::RoughingLayer;
-use crate::operations::{Draft, Stage};
+use crate::stage::{Draft, Stage};
 use geo::{Area, BooleanOps, MultiPolygon};
 use petgraph::graph::{DiGraph, NodeIndex};
 

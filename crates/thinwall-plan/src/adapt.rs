@@ -26,12 +26,13 @@
 //! and a capped width is applied to the whole side rather than only where
 //! the web's layers are (fig. 4.6a's ellipse).
 
-use crate::features::RemovalFeature;
+pub use crate::types::{AdaptRule, Adaptation, Axis, HoleSplit, WallShape};
+
 use crate::scene::Scene;
 use crate::sizing::{size_wall, WallDimensions};
-use crate::steps::Layer;
-use crate::{LayerConstraint, WallPlan};
-use serde::Serialize;
+use crate::types::Layer;
+use crate::types::RemovalFeature;
+use crate::types::{LayerConstraint, WallPlan};
 use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::measure::boundary_points;
 use thinwall_analysis::{FeatureId, StiffnessKind};
@@ -39,51 +40,6 @@ use thinwall_brep::{FaceId, Part};
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
 use thinwall_recognize::{StiffnessFeature, WallGeometry};
-
-/// Which rule of §4.1.3 changed the plan.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum AdaptRule {
-    ConnectedWall,
-    LargeCutouts,
-    CutoutInSequence,
-    LargeHoles,
-    HoleInSequence,
-    Chamfer,
-}
-
-/// One change to a wall's step approach, and why.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Adaptation {
-    pub wall: FeatureId,
-    /// The connected feature that asked for it.
-    pub by: FeatureId,
-    pub rule: AdaptRule,
-    pub change: String,
-}
-
-/// How a wall's layers are laid out after the adaptations.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WallShape {
-    /// Layer width on side 0 and side 1, mm.
-    pub width: [f64; 2],
-    /// A height above the foot where a large layer must end (the step
-    /// separation line), mm.
-    pub align_at: Option<f64>,
-}
-
-/// A wall's height axis: where its foot is and how tall it is.
-#[derive(Clone, Copy, Debug)]
-pub struct Axis {
-    pub origin: Point3,
-    pub height_dir: Vector3,
-    pub length_dir: Vector3,
-    /// `(p − origin)·height_dir` at the foot, mm.
-    pub foot: f64,
-    pub height: f64,
-    /// The wall's extent along its length, mm.
-    pub length: (f64, f64),
-}
 
 impl Axis {
     pub fn of(g: &WallGeometry, height: f64) -> Self {
@@ -346,17 +302,6 @@ fn connected_walls(
             }
         }
     }
-}
-
-/// A large hole cut at its wall's step separation line: the material
-/// inside it above the line and below it are two features (fig. 4.8).
-#[derive(Clone, Debug, PartialEq)]
-pub struct HoleSplit {
-    pub hole: FeatureId,
-    /// Its faces' step ids.
-    pub faces: Vec<u64>,
-    /// The line's height along up (the removal frame's z), mm.
-    pub z: f64,
 }
 
 /// The large holes their wall's step separation line crosses.

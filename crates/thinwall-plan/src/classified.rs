@@ -6,30 +6,17 @@
 //! differ. A feature none of whose solids could be classified is
 //! `unknown`, with the reason.
 
-use crate::feature_order::FeatureSequence;
-use crate::features::RemovalFeature;
-use serde::Serialize;
+pub use crate::types::FeatureType;
+
+use crate::types::FeatureSequence;
+use crate::types::RemovalFeature;
 use std::collections::HashMap;
 use thinwall_analysis::{PartAnalysis, VolumeType};
 use thinwall_classify::{classify, ProductAdjacency, Request, Volume};
 
-/// A feature's classification.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct FeatureType {
-    #[serde(rename = "type")]
-    pub kind: VolumeType,
-    pub product_adjacency: ProductAdjacency,
-    /// The types of its other solids, where they differ.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub types: Vec<VolumeType>,
-    /// Why it is `unknown`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub reason: Option<String>,
-}
-
 /// A solid's 3-D box in the removal frame: x, y, z lows and highs (a half
 /// cylinder's crest counted, not only the corners).
-fn solid_box(s: &crate::features::FeatureSolid) -> [f64; 6] {
+fn solid_box(s: &crate::types::FeatureSolid) -> [f64; 6] {
     let ring = |r: &Vec<[f64; 2]>| {
         geo::LineString::from(r.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>())
     };

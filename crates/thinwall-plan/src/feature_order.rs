@@ -13,30 +13,15 @@
 //! go, the one of this set-up before another set-up's, then the highest,
 //! then the first designed.
 
-use crate::features::RemovalFeature;
+pub use crate::types::{FeatureRelation, FeatureSequence};
+
 use crate::removal::BoundId;
-use crate::LayerConstraint;
+use crate::types::LayerConstraint;
+use crate::types::RemovalFeature;
 use petgraph::algo::has_path_connecting;
 use petgraph::graph::{DiGraph, NodeIndex};
-use serde::Serialize;
 use std::cmp::Reverse;
 use std::collections::{BTreeSet, BinaryHeap, HashMap};
-
-/// `before` comes out before `after`, and why.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct FeatureRelation {
-    pub before: String,
-    pub after: String,
-    pub why: String,
-}
-
-/// The relations in force, those dropped, and the order.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct FeatureSequence {
-    pub relations: Vec<FeatureRelation>,
-    pub dropped: Vec<FeatureRelation>,
-    pub order: Vec<String>,
-}
 
 /// Relations and order of `features` (vanished layers already removed),
 /// given the layer relations of the step approach and the wall order.

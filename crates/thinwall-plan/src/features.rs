@@ -12,33 +12,15 @@
 //! moves to that bound's end, so a curved piece stays whole (in the layer
 //! below).
 
-use crate::removal::pieces::Height;
+pub use crate::types::{FeatureClass, FeatureSolid, Piece, RemovalFeature};
+
 use crate::removal::{Bound, Removal};
-use crate::steps::{Layer, SizeClass};
-use serde::Serialize;
+use crate::types::{Layer, SizeClass};
 use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::FeatureId;
 use thinwall_pipeline::Outcome;
 
 pub use crate::tol::{MERGE, SLIVER};
-
-/// What a machining feature is in the plan.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum FeatureClass {
-    /// A step-approach layer, `H_RF` tall.
-    Large,
-    /// A step-approach layer, `h_RF` tall.
-    Small,
-    /// The rest reachable from up (pocket cores, above the walls, around
-    /// the part).
-    Bulk,
-    /// Nothing of it is open to up: another set-up or 5 axes.
-    OtherSetup,
-    /// A detail's own feature: the material over a chamfer, up to its top
-    /// (§4.1.3).
-    Detail,
-}
 
 impl FeatureClass {
     pub fn name(self) -> &'static str {
@@ -52,77 +34,6 @@ impl FeatureClass {
     }
 }
 
-/// One piece of a feature: part of a cell of the decomposition between two
-/// bounds.
-#[derive(Clone, Debug)]
-pub struct Piece {
-    pub cell: usize,
-    pub region: geo::MultiPolygon<f64>,
-    pub lower: Bound,
-    pub upper: Bound,
-    /// Nominal heights of the two ends, mm.
-    pub z: [f64; 2],
-    pub volume: f64,
-    /// The block it was cut from: its bounds say what it lies on and under.
-    pub block: [Bound; 2],
-}
-
-/// A machining feature of the plan.
-#[derive(Clone, Debug, Serialize)]
-pub struct RemovalFeature {
-    /// `V…` for layers (their step-approach id), `B…` bulk, `X…` other
-    /// set-up.
-    pub id: String,
-    /// The stiffness feature it belongs to (none: around the part).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub owner: Option<FeatureId>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub side: Option<u8>,
-    /// Layers: its place in its wall's step approach (fig. 4.1).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub step: Option<usize>,
-    pub size_class: FeatureClass,
-    /// Lowest and highest point along the set-up's up, mm.
-    pub z_range: [f64; 2],
-    /// mm³.
-    pub volume_mm3: f64,
-    /// Layers: the volume of the designed box, before the part and earlier
-    /// features took their share, mm³.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub box_volume_mm3: Option<f64>,
-    /// `step_id`s of the part faces it touches.
-    pub faces: Vec<u64>,
-    /// Whether the set-up's tool reaches it from up.
-    pub reachable: bool,
-    /// Other set-up: the direction to reach it from (unit), where known.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub access: Option<[f64; 3]>,
-    /// What interference did to it, and why.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub changes: Vec<String>,
-    /// Its pieces (in memory, while the decomposition is alive).
-    #[serde(skip)]
-    pub pieces: Vec<Piece>,
-    /// Its solids: each a region of the set-up plane between two heights.
-    pub solids: Vec<FeatureSolid>,
-    /// Its type and product adjacency (`classified`).
-    #[serde(flatten)]
-    pub classification: Option<crate::classified::FeatureType>,
-}
-
-/// A solid of a feature: a polygon of the set-up plane (in the plan's
-/// `frame`) between a lower and an upper height (planes or half
-/// cylinders).
-#[derive(Clone, Debug, Serialize)]
-pub struct FeatureSolid {
-    /// The outer ring (counter-clockwise seen from up), then the holes; in
-    /// the frame's x, y, mm.
-    pub rings: Vec<Vec<[f64; 2]>>,
-    pub lower: Height,
-    pub upper: Height,
-    pub volume_mm3: f64,
-}
-
 /// Assign every removal block to a feature. `layers` in plan order and
 /// `layer_band[i]`, the index of layer i's band in the decomposition (none
 /// for a layer that is not a prism along up).
@@ -133,7 +44,7 @@ pub fn assign(
     layers: &[Layer],
     layer_band: &[Option<usize>],
     band_area: &[f64],
-    splits: &[crate::adapt::HoleSplit],
+    splits: &[crate::types::HoleSplit],
     tol: f64,
 ) -> (Vec<RemovalFeature>, f64) {
     let details = detail_faces(out, r);

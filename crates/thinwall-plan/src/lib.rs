@@ -17,6 +17,7 @@ pub mod sizing;
 pub mod steps;
 pub mod tol;
 mod touch;
+mod types;
 pub mod volumes;
 mod whole;
 
@@ -24,74 +25,14 @@ pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
 pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
 pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
+pub use types::{LayerConstraint, Plan, PlannedFeature, RemovalSummary, WallPlan};
 
-use serde::Serialize;
-use thinwall_analysis::{FeatureId, PartAnalysis, StiffnessKind};
+use thinwall_analysis::{PartAnalysis, StiffnessKind};
 
-use thinwall_connect::Connection;
 use thinwall_pipeline::Outcome;
 
 /// The plan's JSON contract name and version.
 pub const PLAN_SCHEMA: &str = "thinwall/plan/1";
-
-/// A feature as the plan lists it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PlannedFeature {
-    pub id: FeatureId,
-    pub kind: StiffnessKind,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub thin: Option<bool>,
-    /// Highest point along the set-up's up, mm.
-    pub top: f64,
-}
-
-/// A plan: the features, their connections and their sequence.
-#[derive(Clone, Debug, Serialize)]
-pub struct Plan {
-    pub schema: String,
-    pub thinwall_version: String,
-    pub file: String,
-    pub up: [f64; 3],
-    /// Where the rules came from (`default` or a file).
-    pub rules: String,
-    pub stiffness_features: Vec<PlannedFeature>,
-    pub connections: Vec<Connection>,
-    /// The constraints in force.
-    pub sequence: Vec<Constraint>,
-    /// Candidates not enforced, with why.
-    pub rejected: Vec<Rejected>,
-    /// A valid order, level by level.
-    pub order: Vec<Vec<FeatureId>>,
-    /// Every thin wall's machining-feature sizes (webs face milled, the
-    /// others peripheral), with the recognition's force, material and
-    /// tool.
-    pub walls: Vec<WallPlan>,
-    /// What §4.1.3 changed in the walls' step approach, and why.
-    pub adaptations: Vec<adapt::Adaptation>,
-    /// The step approach's layers beside every peripherally milled thin
-    /// wall as designed (boxes), in plan order.
-    pub layers: Vec<steps::Layer>,
-    /// Between layers: each wall's steps in order, and a wall's last step
-    /// before the next wall's first where the stiffness sequence says so.
-    pub layer_sequence: Vec<LayerConstraint>,
-    /// The whole removal: stock − part, exactly, and how it was cut.
-    pub removal: RemovalSummary,
-    /// The removal frame: origin, x, y and z (= up); feature solids are
-    /// given in it.
-    pub frame: [[f64; 3]; 4],
-    /// Every bit of stock − part in one feature: the layers as they remain
-    /// after interference, bulk, and what another set-up must reach.
-    pub machining_features: Vec<features::RemovalFeature>,
-    /// Relations between machining features and one order respecting them.
-    pub feature_sequence: feature_order::FeatureSequence,
-    /// Where a planner layer did not apply, one line each (curved walls:
-    /// sequenced and sized, but their step approach is not designed yet).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub limits: Vec<String>,
-    /// The in-memory sequence, for queries.
-    #[serde(skip)]
-    pub queries: Sequence,
-}
 
 /// What the planner layers leave out, per feature: curved walls get their
 /// place in the sequence and their sizes, not step-approach layers (those
@@ -115,37 +56,6 @@ fn limits(out: &Outcome, walls: &[WallPlan]) -> Vec<String> {
             ))
         })
         .collect()
-}
-
-/// The removal's figures, or why there is none.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct RemovalSummary {
-    /// `block` (the set-up's bounding block), `block + offset`, or `solid`.
-    pub stock: String,
-    pub stock_volume_mm3: f64,
-    pub part_volume_mm3: f64,
-    /// Σ of the machining features' volumes, mm³.
-    pub removed_volume_mm3: f64,
-    /// Cells of the decomposition.
-    pub cells: usize,
-    /// Total of the boolean slivers left out (each under 1e-12 of the
-    /// stock), mm³.
-    pub slivers_mm3: f64,
-    /// Why the removal could not be decomposed (no machining features
-    /// then).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub unavailable: Option<String>,
-    /// Layers left out of the removal (not prisms along up), with why.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub notes: Vec<String>,
-}
-
-/// A `before` relation between two layers and why.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct LayerConstraint {
-    pub before: String,
-    pub after: String,
-    pub why: String,
 }
 
 /// Layer constraints: consecutive steps of one wall, and for every
@@ -174,15 +84,6 @@ fn layer_constraints(layers: &[steps::Layer], seq: &[Constraint]) -> Vec<LayerCo
         }
     }
     out
-}
-
-/// A thin wall's sizes.
-#[derive(Clone, Debug, Serialize)]
-pub struct WallPlan {
-    pub id: FeatureId,
-    pub kind: StiffnessKind,
-    #[serde(flatten)]
-    pub sizes: Sizes,
 }
 
 /// The sizing parameters of a wall milled `milling` under the

@@ -16,53 +16,18 @@
 //! classification are still to come. Webs (face milling) get no layers
 //! yet.
 
-use crate::adapt::{Axis, WallShape};
+pub use crate::types::{Layer, SizeClass};
+
 use crate::scene::Scene;
 use crate::sequence::Sequence;
 use crate::tol::SAME_LENGTH_MM;
-use crate::WallPlan;
-use serde::Serialize;
+use crate::types::WallPlan;
+use crate::types::{Axis, WallShape};
 use std::collections::BTreeMap;
 use thinwall_analysis::FeatureId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
-
-/// Large or small layer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SizeClass {
-    Large,
-    Small,
-}
-
-/// One layer of a wall's step approach.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Layer {
-    /// `V1`, `V2`, … in plan order.
-    pub id: String,
-    /// The wall it helps create.
-    pub owner: FeatureId,
-    /// Which side of the owner (0 or 1, as the recognition's `sides`).
-    pub side: u8,
-    pub size_class: SizeClass,
-    /// Its place in its wall's sequence (1 = first), as fig. 4.1 numbers it.
-    pub step: usize,
-    /// Heights above the wall's foot along its height direction, mm.
-    pub from_foot: [f64; 2],
-    /// Lowest and highest point along the set-up's up, mm.
-    pub z_range: [f64; 2],
-    /// Its bottom and top along up on the wall's height axis (where the
-    /// removal plan cuts; a layer beside a drafted wall is a sheared box
-    /// whose corners lie a little above and below these), mm.
-    pub cut_heights: [f64; 2],
-    /// Width beside the wall, height, length, mm.
-    pub width: f64,
-    pub height: f64,
-    pub length: f64,
-    /// Its eight corners, mm.
-    pub corners: Vec<[f64; 3]>,
-}
 
 /// Layers of every sized thin wall, in an order that respects each wall's
 /// step sequence and the stiffness-feature sequence (a wall that comes

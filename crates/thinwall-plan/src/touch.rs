@@ -2,8 +2,8 @@
 //! pieces from below and above, and the vertical faces its cells run along
 //! over a height they share.
 
-use crate::features::Piece;
 use crate::removal::{Bound, Removal};
+use crate::types::Piece;
 use std::collections::BTreeSet;
 
 /// `step_id`s of the part faces touching `pieces`, sorted.

@@ -3,7 +3,7 @@
 //! written as STEP by `truck-stepio`. truck uses cgmath: points cross the
 //! boundary here and nowhere else.
 
-use crate::steps::Layer;
+use crate::types::Layer;
 use truck_modeling::{builder, Point3, Solid};
 
 /// The layer's box as a truck solid, outward oriented.
@@ -44,7 +44,7 @@ pub fn layer_step(layer: &Layer) -> String {
 /// [`planar_solid`]; bounded by a half cylinder over a rectangle along its
 /// axis by [`swept_solid`]. `None` for the rest (a cone, a cylinder over
 /// another shape: not written yet).
-pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
     use crate::removal::pieces::Height;
     match (&s.lower, &s.upper) {
         (Height::Plane { .. }, Height::Plane { .. }) => planar_solid(frame, s),
@@ -64,7 +64,7 @@ fn to_world(frame: &[[f64; 3]; 4], x: f64, y: f64, z: f64) -> Point3 {
 /// (arcs where a bound is the cylinder, lines where it is a plane level
 /// along the axis) swept along it. `None` where the region is not such a
 /// rectangle.
-pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
     use crate::removal::pieces::Height;
     use truck_modeling::Wire;
     let (o, a) = match (&s.lower, &s.upper) {
@@ -189,7 +189,7 @@ fn frame_vector(frame: &[[f64; 3]; 4], x: f64, y: f64) -> truck_modeling::Vector
 /// height, joined by vertical quads (faces attached to shared edges, so
 /// the shell is closed). `None` where its two ends meet or a bound is not
 /// a plane.
-pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) -> Option<Solid> {
+pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
     use crate::removal::pieces::Height;
     use truck_modeling::{Edge, Face, Shell, Vertex, Wire};
     if !matches!(s.lower, Height::Plane { .. }) || !matches!(s.upper, Height::Plane { .. }) {
@@ -278,7 +278,7 @@ pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::features::FeatureSolid) ->
 /// How close a solid's bounds may come at a corner and still meet there:
 /// a millionth of its extent (a steep drafted face turns the rounding of
 /// where the bounds cross into a height).
-fn knife_edge(s: &crate::features::FeatureSolid) -> f64 {
+fn knife_edge(s: &crate::types::FeatureSolid) -> f64 {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in s.rings.iter().flatten() {
         for k in 0..2 {
@@ -290,7 +290,10 @@ fn knife_edge(s: &crate::features::FeatureSolid) -> f64 {
 }
 
 /// A feature's solids as one STEP text, and how many could not be written.
-pub fn feature_step(plan: &crate::Plan, f: &crate::features::RemovalFeature) -> (String, usize) {
+pub fn feature_step(
+    plan: &crate::types::Plan,
+    f: &crate::types::RemovalFeature,
+) -> (String, usize) {
     let solids: Vec<Solid> = f
         .solids
         .iter()
@@ -319,8 +322,8 @@ pub fn solids_step(solids: &[Solid], name: &str) -> String {
 /// A feature's solids read back as a part of their own (one body per
 /// solid; what cannot be written is left out), for viewers.
 pub fn feature_part(
-    plan: &crate::Plan,
-    f: &crate::features::RemovalFeature,
+    plan: &crate::types::Plan,
+    f: &crate::types::RemovalFeature,
 ) -> Option<thinwall_brep::Part> {
     let (text, skipped) = feature_step(plan, f);
     if skipped == f.solids.len() {

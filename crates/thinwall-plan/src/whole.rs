@@ -1,10 +1,11 @@
 //! The whole removal plan: the stock of the set-up, the decomposition of
 //! stock − part with the layers' bands, and the features over it.
 
-use crate::features::{assign, RemovalFeature};
+use crate::features::assign;
 use crate::removal::{frame_of, Removal, StockShape};
-use crate::steps::Layer;
-use crate::RemovalSummary;
+use crate::types::Layer;
+use crate::types::RemovalFeature;
+use crate::types::RemovalSummary;
 use geo::{Coord, LineString, MultiPolygon, Orient, Polygon};
 use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, PartAnalysis};
@@ -17,7 +18,7 @@ pub fn removal_plan(
     a: &PartAnalysis,
     out: &Outcome,
     layers: &[Layer],
-    splits: &[crate::adapt::HoleSplit],
+    splits: &[crate::types::HoleSplit],
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
     let up = Vector3::from(out.setup.up).normalize();

@@ -18,6 +18,8 @@
 //! frame of side 0 there (x along the arc, y along the generator, z the
 //! outward normal), so a figure taken in that frame is the developed one.
 
+pub use crate::wall::{CurvedWall, Development, Revolution, RevolutionDevelopment};
+
 use crate::config::Config;
 use geo::{Area, BooleanOps, BoundingRect, Centroid, Coord, LineString, MapCoords, MultiPolygon};
 use serde::{Deserialize, Serialize};
@@ -37,19 +39,6 @@ const RANGE_SAMPLES: usize = 32;
 
 /// Longest step along an arc when an outline is drawn in 3D, radians.
 const OUTLINE_STEP: f64 = PI / 180.0;
-
-/// A surface of revolution's coordinates: angle θ about `axis` from `u`,
-/// distance `s` along the generator and offset across it (positive away
-/// from the axis), for half-angle α (0 for a cylinder).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Revolution {
-    pub origin: Point3,
-    pub axis: Vector3,
-    pub u: Vector3,
-    pub v: Vector3,
-    /// Half-angle, radians (the radius grows along `axis`).
-    pub half_angle: f64,
-}
 
 impl Revolution {
     fn new(origin: Point3, axis: Vector3, half_angle: f64) -> Self {
@@ -146,30 +135,6 @@ pub struct MidSurface {
     pub thickness_range: Option<[f64; 2]>,
 }
 
-/// How a curved wall's region is laid flat: developed (x, y) and the
-/// offset across the sides (towards side 0's outward normal) of a point,
-/// and back.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Development {
-    Revolution(RevolutionDevelopment),
-    /// Along side 0's free-form surface (`crate::offset`): x and y arc
-    /// lengths on the mid-surface along the iso-curves through the centre;
-    /// offsets from side 0 along its normal.
-    Offset(Box<crate::offset::OffsetDevelopment>),
-}
-
-/// About an axis: x the arc at `r_mid` from the centre angle, y along the
-/// generator from the centre; offsets are the family's.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RevolutionDevelopment {
-    pub rev: Revolution,
-    /// The region's centre: angle (radians) and generator coordinate.
-    pub theta_c: f64,
-    pub s_c: f64,
-    /// The mid-surface's radius at the centre.
-    pub r_mid: f64,
-}
-
 impl RevolutionDevelopment {
     /// The angle at developed x.
     fn theta(&self, x: f64) -> f64 {
@@ -231,19 +196,6 @@ impl Development {
             Development::Offset(o) => o.outline_step(),
         }
     }
-}
-
-/// A curved wall's surfaces and development.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CurvedWall {
-    pub dev: Development,
-    /// Offsets of side 0 and side 1 (side 0's is the larger).
-    pub off: [f64; 2],
-    /// Each side's faces as developed polygons.
-    pub side_polygons: [Vec<(FaceId, MultiPolygon<f64>)>; 2],
-    /// Free-form walls: the thinnest and thickest distance measured
-    /// between the sides, mm.
-    pub measured: Option<(f64, f64)>,
 }
 
 impl CurvedWall {
@@ -440,7 +392,7 @@ fn surface_axis(surface: &Surface) -> Option<(Point3, Vector3, f64)> {
 }
 
 /// Find the curved walls of a part.
-pub fn find_curved_walls(a: &PartAnalysis, config: &Config) -> Vec<crate::walls::Wall> {
+pub fn find_curved_walls(a: &PartAnalysis, config: &Config) -> Vec<crate::wall::Wall> {
     let lin = a.tol().coplanar;
     let cos_tol = config.thresholds.parallel_angle_deg.to_radians().cos();
     let angle_tol = config.thresholds.parallel_angle_deg.to_radians();
@@ -624,7 +576,7 @@ fn pair_family(
     members: &[&RevFace],
     lin: f64,
     config: &Config,
-) -> Vec<crate::walls::Wall> {
+) -> Vec<crate::wall::Wall> {
     let mut surfaces: Vec<SideSurface> = Vec::new();
     for (i, f) in members.iter().enumerate() {
         match surfaces
@@ -744,7 +696,7 @@ fn build_wall(
     off: [f64; 2],
     parts: Vec<geo::Polygon<f64>>,
     config: &Config,
-) -> Option<crate::walls::Wall> {
+) -> Option<crate::wall::Wall> {
     let region_ts = MultiPolygon::new(parts);
     let thickness = off[0] - off[1];
     let c = region_ts.centroid()?;
@@ -798,7 +750,7 @@ impl CurvedWall {
         self,
         sides: [Vec<FaceId>; 2],
         region: MultiPolygon<f64>,
-    ) -> crate::walls::Wall {
+    ) -> crate::wall::Wall {
         let (cx, cy) = centre(&region);
         let n = self.dev.normal(cx, cy);
         let (x, y) = self.dev.axes(cx, cy);
@@ -808,7 +760,7 @@ impl CurvedWall {
             y,
             z: n,
         };
-        crate::walls::Wall {
+        crate::wall::Wall {
             sides,
             normals: [n, -n],
             frame,

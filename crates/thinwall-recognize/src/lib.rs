@@ -29,6 +29,7 @@ pub mod feature;
 pub mod junctions;
 pub mod offset;
 pub mod sizing;
+pub mod wall;
 pub mod walls;
 
 pub use config::{Config, ConfigError};

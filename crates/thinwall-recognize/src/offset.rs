@@ -17,8 +17,10 @@
 //! curves). Both sides' outlines are carried onto side 0 along its normal,
 //! and where they overlap is the region.
 
+pub use crate::wall::OffsetDevelopment;
+
 use crate::config::Config;
-use crate::curved::{CurvedWall, Development};
+use crate::wall::{CurvedWall, Development};
 use geo::{Area, BooleanOps, Contains, Coord, LineString, MultiPolygon};
 use thinwall_analysis::polygon::{face_loops, intersect, narrow_width};
 use thinwall_analysis::PartAnalysis;
@@ -180,7 +182,7 @@ fn constant(ds: &[f64]) -> Option<(f64, f64, f64)> {
 }
 
 /// Find the walls between free-form faces that are offsets of each other.
-pub fn find_offset_walls(a: &PartAnalysis, config: &Config) -> Vec<crate::walls::Wall> {
+pub fn find_offset_walls(a: &PartAnalysis, config: &Config) -> Vec<crate::wall::Wall> {
     let faces: Vec<FreeFace> = a
         .part()
         .face_ids()
@@ -237,7 +239,7 @@ fn build(
     t: f64,
     measured: (f64, f64),
     config: &Config,
-) -> Option<crate::walls::Wall> {
+) -> Option<crate::wall::Wall> {
     let dev = OffsetDevelopment::new(f.surface.clone(), f.sign, &f.uv, -0.5 * t)?;
     let develop_face = |face: FaceId| -> MultiPolygon<f64> {
         let loops = face_loops(a.part(), face);
@@ -273,19 +275,6 @@ fn build(
         measured: Some(measured),
     };
     Some(curved.into_wall([vec![f.face], vec![g.face]], region))
-}
-
-/// Development along a free-form side (module docs): arc-length tables of
-/// the mid-surface along the iso-curves through the centre of the face's
-/// parameter box.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OffsetDevelopment {
-    surface: NurbsSurface,
-    sign: f64,
-    /// (parameter, arc length from the centre) along u and along v.
-    u_table: Vec<(f64, f64)>,
-    v_table: Vec<(f64, f64)>,
-    length: f64,
 }
 
 impl OffsetDevelopment {

@@ -14,38 +14,15 @@
 //! wall's thickness varies across its region, from `thickness_range.1`
 //! (thickest) to `.0` (thinnest).
 
+pub use crate::wall::Wall;
+
 use crate::config::Config;
-use crate::curved::CurvedWall;
 use geo::{Area, BooleanOps, BoundingRect, MultiPolygon};
 use std::collections::HashMap;
 use thinwall_analysis::polygon::{intersect, narrow_width};
 use thinwall_analysis::{PartAnalysis, PlanarFace};
 use thinwall_brep::FaceId;
 use thinwall_geom::{Frame, Point3, Vector3};
-
-/// A wall before it is classified.
-#[derive(Clone, Debug)]
-pub struct Wall {
-    /// Faces of side 0 (in plane `frame`, outward normal `frame.z`).
-    pub sides: [Vec<FaceId>; 2],
-    /// Outward normals of the two sides (tool access directions).
-    pub normals: [Vector3; 2],
-    /// Frame of side 0's plane: z is side 0's outward normal.
-    pub frame: Frame,
-    /// Distance between the side planes, mm (their mean distance over the
-    /// region for a drafted wall).
-    pub thickness: f64,
-    /// Thinnest and thickest distance between the sides over the region,
-    /// mm (equal unless drafted).
-    pub thickness_range: (f64, f64),
-    /// Side 1's plane: a point on it (side 0's is `frame.origin`).
-    pub side1_point: Point3,
-    /// Where the two sides bound the slab, in `frame`'s xy coordinates
-    /// (developed, for a curved wall).
-    pub region: MultiPolygon<f64>,
-    /// A curved wall's surfaces and development (`None` for a flat wall).
-    pub curved: Option<Box<CurvedWall>>,
-}
 
 /// The outer outline of a region drawn in `frame`'s xy plane, at height
 /// `z` along `frame.z`, in model coordinates.

@@ -81,6 +81,34 @@ impl StudyError {
         }
     }
 
+    /// The request field a bad value was given for (`threshold`,
+    /// `tool_diameter`, `up`, `stock_offset`), when the error is about one:
+    /// a front end names it as its user knows it (`--tool-diameter`).
+    pub fn field(&self) -> Option<&'static str> {
+        use thinwall_access::reach::ReachError as R;
+        use thinwall_analysis::SetupError as SE;
+        let reach = |e: &R| match e {
+            R::Diameter(_) => Some("tool_diameter"),
+            R::CuttingLength(_) => Some("cutting_length"),
+            R::Holder { .. } => Some("holder_diameter"),
+            R::TiltLimit(_) => Some("tilt_limit"),
+        };
+        let setup = |e: &SE| match e {
+            SE::ZeroUp(_) => Some("up"),
+            SE::TiltLimit(_) => Some("tilt_limit"),
+            _ => None,
+        };
+        match self {
+            StudyError::Invalid { field, .. } => Some(field),
+            StudyError::Reach(e) | StudyError::Request(PipelineError::Reach(e)) => reach(e),
+            StudyError::Setup(e) | StudyError::Request(PipelineError::Setup(e)) => setup(e),
+            StudyError::Request(PipelineError::Machining(
+                thinwall_machining::MachiningError::BadOffset(_),
+            )) => Some("stock_offset"),
+            _ => None,
+        }
+    }
+
     pub fn kind(&self) -> ErrorKind {
         use thinwall_ops::OpsError as O;
         match self {

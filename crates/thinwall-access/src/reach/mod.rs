@@ -20,6 +20,7 @@
 //! fraction.
 
 pub mod bore;
+pub mod disk;
 pub mod features;
 pub mod floor;
 pub mod interval;

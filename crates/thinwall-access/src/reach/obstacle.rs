@@ -19,7 +19,7 @@
 //! on those unions (over two minutes on NIST CTC 05), as it did on the
 //! joined outlines of whole faces.
 
-use super::floor::grown;
+use super::disk::grown;
 use super::scene::Tri;
 use geo::{Coord, MultiPolygon, Polygon};
 use std::collections::{HashMap, HashSet};
@@ -177,7 +177,7 @@ fn ccw_polygon(ring: &[[f64; 2]]) -> Polygon<f64> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::floor::disk;
+    use super::super::disk::disk;
     use super::super::scene::clip_tagged;
     use super::*;
     use geo::{Area, BooleanOps};
