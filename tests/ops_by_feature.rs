@@ -9,7 +9,7 @@ use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_ops::operations::Stage;
 use thinwall_ops::setup::along_plan;
 use thinwall_ops::ToolLibrary;
-use thinwall_plan::removal::pieces::Height;
+use thinwall_removal::pieces::Height;
 
 /// On every thin-walled part and recognition fixture whose plan has
 /// machining features:

@@ -11,7 +11,7 @@ use thinwall_geom::Vector3;
 use thinwall_ops::drilling::{hole_sites, DrillKind};
 use thinwall_ops::operations::{operations, SetupOperations, Stage};
 use thinwall_ops::ToolLibrary;
-use thinwall_plan::removal::{frame_of, Removal, StockShape};
+use thinwall_removal::{frame_of, Removal, StockShape};
 
 /// The operations of the part in `text` set up with `up`, as
 /// `thinwall operations` plans them.

@@ -10,8 +10,8 @@ use thinwall_geom::Vector3;
 use thinwall_ops::layers::{
     levels, roughing_layers, section_area_by_blocks, EdgeKind, LayerOptions,
 };
-use thinwall_plan::removal::pieces::{Facing, Height};
-use thinwall_plan::removal::{frame_of, Removal, RemovalError, StockShape};
+use thinwall_removal::pieces::{Facing, Height};
+use thinwall_removal::{frame_of, Removal, RemovalError, StockShape};
 
 fn removal(part: &thinwall_brep::Part) -> Result<Removal, RemovalError> {
     let a = PartAnalysis::new(

@@ -13,9 +13,9 @@ use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::Part;
 use thinwall_geom::{Frame, Point3, Surface, Vector3};
 use thinwall_plan::features::{FeatureClass, FeatureSolid, SLIVER};
-use thinwall_plan::removal::pieces::{pieces, Facing};
-use thinwall_plan::removal::{frame_of, Removal, StockShape};
 use thinwall_plan::{Plan, RuleSet};
+use thinwall_removal::pieces::{pieces, Facing};
+use thinwall_removal::{frame_of, Removal, StockShape};
 
 fn plan_text(text: &str, up: [f64; 3]) -> (Part, Plan) {
     common::plan_text(text, up, &RuleSet::default_rules())
@@ -164,10 +164,7 @@ fn poly(s: &FeatureSolid) -> MultiPolygon<f64> {
 
 /// Material intervals of the part over a point, from its faces (not from
 /// the plan's cells).
-fn material_at(
-    pcs: &[thinwall_plan::removal::pieces::Piece],
-    pt: geo::Point<f64>,
-) -> Vec<[f64; 2]> {
+fn material_at(pcs: &[thinwall_removal::pieces::Piece], pt: geo::Point<f64>) -> Vec<[f64; 2]> {
     let mut cross: Vec<(f64, Facing)> = pcs
         .iter()
         .filter(|p| p.region.contains(&pt))

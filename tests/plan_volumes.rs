@@ -21,7 +21,7 @@ fn volume(part: &thinwall_brep::Part) -> f64 {
 
 /// A solid's volume by the removal decomposition along `up`.
 fn volume_along(part: &thinwall_brep::Part, up: [f64; 3]) -> f64 {
-    use thinwall_plan::removal::{frame_of, Removal, StockShape};
+    use thinwall_removal::{frame_of, Removal, StockShape};
     let a = PartAnalysis::new(part, Setup::default());
     let (f, lo, hi) = frame_of(&a, nalgebra::Vector3::new(up[0], up[1], up[2]));
     let size = a.bounding_box().diagonal();

@@ -2,15 +2,15 @@
 //! the stock's top down at the axial depth of cut, plus a level exactly at
 //! the height of every flat face of the part facing up (so floors are not
 //! left with steps) or down (an undercut's ceiling); per layer the cross-section of the removal region
-//! (stock − part, [`thinwall_plan::removal`]) at the layer's bottom, as
+//! (stock − part, [`thinwall_removal`]) at the layer's bottom, as
 //! closed contours split into cutter fields: one outer contour each, its
 //! inner contours islands, every contour edge marked as blank (the stock's
 //! boundary) or part contour.
 
 use geo::{Area, BoundingRect, Contains, Coord, LineString, MultiPolygon, Point, Polygon, Rect};
 use serde::Serialize;
-use thinwall_plan::removal::pieces::{Facing, Height};
-use thinwall_plan::removal::{outline, slab, Removal};
+use thinwall_removal::pieces::{Facing, Height};
+use thinwall_removal::{outline, slab, Removal};
 
 /// A plane whose height changes less than this per mm across is flat.
 pub const FLAT_SLOPE: f64 = 1e-9;

@@ -27,7 +27,7 @@ use crate::tools::{CuttingTool, ToolLibrary};
 use petgraph::graph::NodeIndex;
 use rayon::prelude::*;
 use serde::Serialize;
-use thinwall_plan::removal::Removal;
+use thinwall_removal::Removal;
 
 impl Stage {
     pub fn name(self) -> &'static str {

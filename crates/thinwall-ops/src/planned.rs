@@ -22,9 +22,9 @@ use geo::{BoundingRect, Contains, Coord, MultiPolygon, Point, Polygon, Rect};
 use std::collections::HashMap;
 use thinwall_classify::ProductAdjacency;
 use thinwall_plan::features::RemovalFeature;
-use thinwall_plan::removal::pieces::Height;
-use thinwall_plan::removal::{outline, slab};
 use thinwall_plan::Plan;
+use thinwall_removal::pieces::Height;
+use thinwall_removal::{outline, slab};
 
 /// A feature's solid as regions and heights.
 struct Solid {

@@ -8,7 +8,7 @@ use crate::ToolLibrary;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Frame, Vector3};
 use thinwall_machining::MachiningFeature;
-use thinwall_plan::removal::{frame_of, Removal, RemovalError, StockShape};
+use thinwall_removal::{frame_of, Removal, RemovalError, StockShape};
 use thiserror::Error;
 
 /// Why a set-up's operations could not be planned.

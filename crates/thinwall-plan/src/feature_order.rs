@@ -15,13 +15,13 @@
 
 pub use crate::types::{FeatureRelation, FeatureSequence};
 
-use crate::removal::BoundId;
 use crate::types::LayerConstraint;
 use crate::types::RemovalFeature;
 use petgraph::algo::has_path_connecting;
 use petgraph::graph::{DiGraph, NodeIndex};
 use std::cmp::Reverse;
 use std::collections::{BTreeSet, BinaryHeap, HashMap};
+use thinwall_removal::BoundId;
 
 /// Relations and order of `features` (vanished layers already removed),
 /// given the layer relations of the step approach and the wall order.

@@ -14,11 +14,11 @@
 
 pub use crate::types::{FeatureClass, FeatureSolid, Piece, RemovalFeature};
 
-use crate::removal::{Bound, Removal};
 use crate::types::{Layer, SizeClass};
 use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::FeatureId;
 use thinwall_pipeline::Outcome;
+use thinwall_removal::{Bound, Removal};
 
 pub use crate::tol::{MERGE, SLIVER};
 
@@ -360,14 +360,14 @@ fn face_owners(out: &Outcome) -> HashMap<u64, FeatureId> {
 /// their lowest and highest points.
 fn split(
     r: &Removal,
-    b: &crate::removal::Block,
+    b: &thinwall_removal::Block,
     ranges: impl Iterator<Item = [f64; 2]>,
     tol: f64,
 ) -> Vec<Piece> {
     let mut cuts: Vec<f64> = ranges.flat_map(|z| z.into_iter()).collect();
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|a, b| (*a - *b).abs() <= tol);
-    crate::removal::slab::cut(r, b, &cuts, tol)
+    thinwall_removal::slab::cut(r, b, &cuts, tol)
         .into_iter()
         .map(|s| {
             let z = [
@@ -428,25 +428,25 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
             .iter()
             .flat_map(|&i| pieces[i].region.0.iter().cloned())
             .collect();
-        let region = crate::removal::outline::union(&cells, crate::tol::SLIVER_WIDTH * r.size);
+        let region = thinwall_removal::outline::union(&cells, crate::tol::SLIVER_WIDTH * r.size);
         let (lower, upper) = (r.height_of(&lo), r.height_of(&hi));
         let sliver = SLIVER * r.stock_volume.cbrt().powi(2);
         for poly in region {
             // Unions of cells cut by separate booleans leave slivers and
             // hairline holes where shared edges differ by rounding.
-            if crate::removal::flux::area(&poly) <= sliver {
+            if thinwall_removal::flux::area(&poly) <= sliver {
                 continue;
             }
             let (ext, holes) = poly.into_inner();
             let holes = holes
                 .into_iter()
                 .filter(|h| {
-                    crate::removal::flux::area(&geo::Polygon::new(h.clone(), vec![])) > sliver
+                    thinwall_removal::flux::area(&geo::Polygon::new(h.clone(), vec![])) > sliver
                 })
                 .collect();
             let poly = geo::Polygon::new(ext, holes).orient(geo::orient::Direction::Default);
-            let volume_mm3 = crate::removal::flux::flux(&upper, &poly)
-                - crate::removal::flux::flux(&lower, &poly);
+            let volume_mm3 = thinwall_removal::flux::flux(&upper, &poly)
+                - thinwall_removal::flux::flux(&lower, &poly);
             let ring = |ls: &geo::LineString<f64>| {
                 let mut v: Vec<[f64; 2]> = ls.0.iter().map(|c| [c.x, c.y]).collect();
                 v.pop();
@@ -471,7 +471,7 @@ fn absorb_crumbs(feats: &mut [RemovalFeature], limit: f64) {
     use std::collections::HashMap;
     let key = |cell: usize, b: &Bound| (cell, b.id());
     // Where the pieces of the features large enough to host end and begin.
-    let mut ends: HashMap<(usize, crate::removal::BoundId), usize> = HashMap::new();
+    let mut ends: HashMap<(usize, thinwall_removal::BoundId), usize> = HashMap::new();
     for (j, f) in feats.iter().enumerate() {
         if f.volume_mm3 < limit && f.step.is_none() {
             continue;

@@ -9,7 +9,6 @@ pub mod adapt;
 pub mod classified;
 pub mod feature_order;
 pub mod features;
-pub mod removal;
 pub mod rules;
 pub mod scene;
 pub mod sequence;
@@ -25,6 +24,8 @@ pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
 pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
 pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
+/// The removal engine the plan is built over (its own crate).
+pub use thinwall_removal as removal;
 pub use types::{LayerConstraint, Plan, PlannedFeature, RemovalSummary, WallPlan};
 
 use thinwall_analysis::{PartAnalysis, StiffnessKind};

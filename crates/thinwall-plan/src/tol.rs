@@ -15,12 +15,8 @@ pub const SLIVER: f64 = 1e-9;
 /// top) joins the feature above or below it in its column.
 pub const MERGE: f64 = 1e-6;
 
-/// A cell whose mean width (2·area / perimeter) is under this fraction of
-/// the part's size is a sliver of the 2-D booleans: the booleans round to
-/// a grid of about 1e-9 of their inputs' extent, so their decisions there
-/// are noise. Cell vertices closer than it are one vertex when a feature's
-/// cells are joined into solids.
-pub const SLIVER_WIDTH: f64 = 1e-6;
+/// The removal's sliver width (`thinwall_removal`, its home).
+pub use thinwall_removal::SLIVER_WIDTH;
 
 /// Solids whose volumes differ by less than this fraction are equal (up to
 /// the sampling of curved edges) when a feature's main solid is chosen.

@@ -2,9 +2,9 @@
 //! pieces from below and above, and the vertical faces its cells run along
 //! over a height they share.
 
-use crate::removal::{Bound, Removal};
 use crate::types::Piece;
 use std::collections::BTreeSet;
+use thinwall_removal::{Bound, Removal};
 
 /// `step_id`s of the part faces touching `pieces`, sorted.
 pub fn faces_touched(r: &Removal, pieces: &[Piece], tol: f64) -> Vec<u64> {

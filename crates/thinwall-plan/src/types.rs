@@ -3,8 +3,6 @@
 //! module of the crate imports them from here, and this module imports
 //! none of them back.
 
-use crate::removal::pieces::Height;
-use crate::removal::Bound;
 use crate::sequence::{Constraint, Rejected, Sequence};
 use crate::sizing::Sizes;
 use serde::Serialize;
@@ -12,6 +10,8 @@ use thinwall_analysis::{FeatureId, StiffnessKind, VolumeType};
 use thinwall_classify::ProductAdjacency;
 use thinwall_connect::Connection;
 use thinwall_geom::{Point3, Vector3};
+use thinwall_removal::pieces::Height;
+use thinwall_removal::Bound;
 
 /// Which rule of §4.1.3 changed the plan.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

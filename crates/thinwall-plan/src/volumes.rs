@@ -45,7 +45,7 @@ pub fn layer_step(layer: &Layer) -> String {
 /// axis by [`swept_solid`]. `None` for the rest (a cone, a cylinder over
 /// another shape: not written yet).
 pub fn feature_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
-    use crate::removal::pieces::Height;
+    use thinwall_removal::pieces::Height;
     match (&s.lower, &s.upper) {
         (Height::Plane { .. }, Height::Plane { .. }) => planar_solid(frame, s),
         (Height::Cylinder { .. }, _) | (_, Height::Cylinder { .. }) => swept_solid(frame, s),
@@ -65,7 +65,7 @@ fn to_world(frame: &[[f64; 3]; 4], x: f64, y: f64, z: f64) -> Point3 {
 /// along the axis) swept along it. `None` where the region is not such a
 /// rectangle.
 pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
-    use crate::removal::pieces::Height;
+    use thinwall_removal::pieces::Height;
     use truck_modeling::Wire;
     let (o, a) = match (&s.lower, &s.upper) {
         (Height::Cylinder { o, a, .. }, _) | (_, Height::Cylinder { o, a, .. }) => (*o, *a),
@@ -190,7 +190,7 @@ fn frame_vector(frame: &[[f64; 3]; 4], x: f64, y: f64) -> truck_modeling::Vector
 /// the shell is closed). `None` where its two ends meet or a bound is not
 /// a plane.
 pub fn planar_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
-    use crate::removal::pieces::Height;
+    use thinwall_removal::pieces::Height;
     use truck_modeling::{Edge, Face, Shell, Vertex, Wire};
     if !matches!(s.lower, Height::Plane { .. }) || !matches!(s.upper, Height::Plane { .. }) {
         return None;

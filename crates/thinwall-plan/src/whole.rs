@@ -2,7 +2,6 @@
 //! stock − part with the layers' bands, and the features over it.
 
 use crate::features::assign;
-use crate::removal::{frame_of, Removal, StockShape};
 use crate::types::Layer;
 use crate::types::RemovalFeature;
 use crate::types::RemovalSummary;
@@ -11,6 +10,7 @@ use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, PartAnalysis};
 use thinwall_geom::{Frame, Point3, Vector3};
 use thinwall_pipeline::Outcome;
+use thinwall_removal::{frame_of, Removal, StockShape};
 
 /// The removal plan of `part` with its designed `layers` (plan order).
 /// Heights closer than the part's feature tolerance are the same.
@@ -64,7 +64,7 @@ pub fn removal_plan(
         .iter()
         .map(|b| {
             b.map_or(0.0, |k| {
-                bands[k].0.iter().map(crate::removal::flux::area).sum()
+                bands[k].0.iter().map(thinwall_removal::flux::area).sum()
             })
         })
         .collect();

@@ -290,7 +290,7 @@ mod tests {
     use geo::polygon;
 
     fn area(ps: &[Polygon<f64>]) -> f64 {
-        ps.iter().map(crate::removal::flux::area).sum()
+        ps.iter().map(crate::flux::area).sum()
     }
 
     #[test]
