@@ -275,7 +275,7 @@ fn the_plan_says_where_curved_walls_are_not_planned_yet() {
             plan.limits
         );
     }
-    assert!(plan.to_text().contains("not planned yet"));
+    assert!(thinwall_report::plan::to_text(&plan).contains("not planned yet"));
 }
 
 #[test]

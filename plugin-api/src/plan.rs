@@ -169,7 +169,7 @@ pub unsafe extern "C" fn tw_plan_to_json(
     plan: *const tw_plan_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(plan, out_json, |p| p.plan.to_json())
+    json_into(plan, out_json, |p| thinwall_report::plan::to_json(&p.plan))
 }
 
 /// Number of sequence constraints in force (0 for NULL).

@@ -9,6 +9,7 @@ pub mod html;
 pub mod inspect;
 pub mod operations;
 pub mod palette;
+pub mod plan;
 pub mod recognize;
 pub mod svg;
 

@@ -152,8 +152,8 @@ fn recognition(r: &Recognized, format: Format) -> String {
 fn plan(r: &Planned, format: Format) -> String {
     let a = &r.at.analysis;
     match format {
-        Format::Text => r.plan.to_text(),
-        Format::Json => r.plan.to_json(),
+        Format::Text => thinwall_report::plan::to_text(&r.plan),
+        Format::Json => thinwall_report::plan::to_json(&r.plan),
         Format::Svg | Format::Html => {
             let report = thinwall_report::recognition_report(&r.plan.file, a.part(), &r.outcome);
             let title = format!("Plan: {}", r.plan.file);

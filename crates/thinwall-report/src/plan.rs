@@ -1,0 +1,173 @@
+//! A plan (`thinwall/plan/1`) as JSON and as text: the planner computes
+//! it, this module only writes it.
+
+use thinwall_plan::{features, sequence, Plan};
+
+/// The removal and its features, in order, then per wall.
+fn removal_text(plan: &Plan, s: &mut String) {
+    use std::fmt::Write;
+    let r = &plan.removal;
+    if let Some(why) = &r.unavailable {
+        let _ = writeln!(s, "removal plan: not available ({why})");
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "removal: stock ({}) {:.1} mm³ − part {:.1} mm³ = {:.1} mm³ in {} machining features ({} cells)",
+        r.stock,
+        r.stock_volume_mm3,
+        r.part_volume_mm3,
+        r.removed_volume_mm3,
+        plan.machining_features.len(),
+        r.cells
+    );
+    for n in &r.notes {
+        let _ = writeln!(s, "  note: {n}");
+    }
+    let by_id: std::collections::HashMap<&str, &features::RemovalFeature> = plan
+        .machining_features
+        .iter()
+        .map(|f| (f.id.as_str(), f))
+        .collect();
+    let _ = writeln!(s, "machining features in order:");
+    for (k, id) in plan.feature_sequence.order.iter().enumerate() {
+        let Some(f) = by_id.get(id.as_str()) else {
+            continue;
+        };
+        let owner = f.owner.map(|o| o.to_string()).unwrap_or_else(|| "-".into());
+        let place = match (f.side, f.step) {
+            (Some(side), Some(step)) => format!("side {side} step {step}"),
+            _ => String::new(),
+        };
+        let reach = match (f.reachable, f.access) {
+            (true, _) => String::new(),
+            (false, Some(d)) => format!(
+                "  another set-up, from ({:.3}, {:.3}, {:.3})",
+                d[0], d[1], d[2]
+            ),
+            (false, None) => "  another set-up".to_string(),
+        };
+        let _ = writeln!(
+            s,
+            "  {:>3}. {:<5}{:<12}{:<5} {:<16}{:>8.2} .. {:>8.2}  {:>12.1} mm³  {} faces{}",
+            k + 1,
+            f.id,
+            f.size_class.name(),
+            owner,
+            place,
+            f.z_range[0],
+            f.z_range[1],
+            f.volume_mm3,
+            f.faces.len(),
+            reach
+        );
+        for c in &f.changes {
+            let _ = writeln!(s, "         {c}");
+        }
+    }
+    let _ = writeln!(s, "per wall, in order:");
+    for w in &plan.walls {
+        let ids: Vec<&str> = plan
+            .feature_sequence
+            .order
+            .iter()
+            .filter(|id| {
+                by_id
+                    .get(id.as_str())
+                    .is_some_and(|f| f.owner == Some(w.id))
+            })
+            .map(String::as_str)
+            .collect();
+        if !ids.is_empty() {
+            let _ = writeln!(s, "  {:<5}{}", w.id, ids.join(" "));
+        }
+    }
+    if !plan.feature_sequence.dropped.is_empty() {
+        let _ = writeln!(
+            s,
+            "relations dropped (they would contradict height or a step approach):"
+        );
+        for d in &plan.feature_sequence.dropped {
+            let _ = writeln!(s, "  {} before {}: {}", d.before, d.after, d.why);
+        }
+    }
+}
+
+/// Pretty JSON.
+pub fn to_json(plan: &Plan) -> String {
+    serde_json::to_string_pretty(plan).expect("a plan serialises")
+}
+
+/// A table a planner can read: the order, the constraints, the
+/// rejected candidates.
+pub fn to_text(plan: &Plan) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{}: {} stiffness features, rules: {}",
+        plan.file,
+        plan.stiffness_features.len(),
+        plan.rules
+    );
+    let _ = writeln!(s, "order ({} levels):", plan.order.len());
+    for (i, level) in plan.order.iter().enumerate() {
+        let names: Vec<String> = level.iter().map(|f| f.to_string()).collect();
+        let _ = writeln!(s, "  {:>3}  {}", i + 1, names.join(" "));
+    }
+    let _ = writeln!(s, "sequence constraints: {}", plan.sequence.len());
+    for c in &plan.sequence {
+        let _ = writeln!(s, "  {}", sequence::describe(c));
+    }
+    let _ = writeln!(s, "thin walls: {}", plan.walls.len());
+    for w in &plan.walls {
+        let _ = writeln!(
+            s,
+            "  {:<5}{:<8}{:<11} B_RF {:>6.2}  h_RF {:>6.2}  H_RF {:>6.2}  deflection {:.4}  {}",
+            w.id,
+            w.kind,
+            format!("{:?}", w.sizes.milling).to_lowercase(),
+            w.sizes.b,
+            w.sizes.h,
+            w.sizes.big_h,
+            w.sizes.deflection_mm,
+            w.sizes.note
+        );
+    }
+    if !plan.adaptations.is_empty() {
+        let _ = writeln!(s, "adaptations (§4.1.3): {}", plan.adaptations.len());
+        for a in &plan.adaptations {
+            let _ = writeln!(
+                s,
+                "  {:<4} by {:<4} {:?}: {}",
+                a.wall, a.by, a.rule, a.change
+            );
+        }
+    }
+    let _ = writeln!(s, "step-approach layers as designed: {}", plan.layers.len());
+    for l in &plan.layers {
+        let _ = writeln!(
+            s,
+            "  {:<5}{:<5} step {:>2}  side {}  {:<5}  {:>7.2} .. {:>7.2} above the foot  ({:.2} x {:.2} x {:.2})",
+            l.id,
+            l.owner,
+            l.step,
+            l.side,
+            format!("{:?}", l.size_class).to_lowercase(),
+            l.from_foot[0],
+            l.from_foot[1],
+            l.length,
+            l.width,
+            l.height
+        );
+    }
+    removal_text(plan, &mut s);
+    for l in &plan.limits {
+        let _ = writeln!(s, "not planned yet: {l}");
+    }
+    let _ = writeln!(s, "rejected candidates: {}", plan.rejected.len());
+    for r in &plan.rejected {
+        let _ = writeln!(s, "  [{:?}] {}", r.reason, r.explanation);
+    }
+    s
+}
