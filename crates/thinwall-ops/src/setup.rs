@@ -6,7 +6,7 @@ use crate::drilling::hole_sites;
 use crate::operations::{operations, SetupOperations};
 use crate::ToolLibrary;
 use thinwall_analysis::PartAnalysis;
-use thinwall_geom::{Frame, Vector3};
+use thinwall_geom::Frame;
 use thinwall_machining::MachiningFeature;
 use thinwall_removal::{frame_of, Removal, RemovalError, StockShape};
 use thiserror::Error;
@@ -46,7 +46,7 @@ fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f
             library: lib.source.clone(),
         });
     }
-    Ok(frame_of(a, Vector3::from(a.setup().up).normalize()))
+    Ok(frame_of(a, a.up()))
 }
 
 /// The operations of `a`'s set-up with `lib` (the stock is the part's

@@ -292,16 +292,12 @@ fn wall_reach(
 
 /// The machining layer's options from the request.
 fn machining_options(req: &Request) -> thinwall_machining::Options<'_> {
-    let up = req.setup.up;
     let tilt = match req.setup.machine {
         thinwall_analysis::Machine::ThreeAxis => 0.0,
         thinwall_analysis::Machine::FiveAxis { tilt_limit_deg } => tilt_limit_deg,
     };
     thinwall_machining::Options {
-        up: req
-            .machining
-            .in_setup
-            .then(|| thinwall_geom::Vector3::new(up[0], up[1], up[2]).normalize()),
+        up: req.machining.in_setup.then(|| req.setup.up_in_part()),
         tilt_limit_deg: tilt,
         stock: match &req.machining.stock {
             Some(solid) => thinwall_machining::StockSpec::Solid(solid),

@@ -164,7 +164,7 @@ fn resize_for_cutouts(
         .iter()
         .filter(|c| {
             c.height
-                .is_some_and(|d| d > w.sizes.h + crate::tol::SAME_LENGTH_MM)
+                .is_some_and(|d| d > w.sizes.h + thinwall_geom::tolerance::SAME_LENGTH_MM)
         })
         .collect();
     let Some(first) = large.first() else {
@@ -220,7 +220,9 @@ fn step_separation_line(
         .filter_map(|h| Some((faces.heights(h, axis)?.1, h.id)))
         .max_by(|a, b| a.0.total_cmp(&b.0))?;
     let line = top - 2.0 * tool;
-    if line <= crate::tol::SAME_LENGTH_MM || line >= axis.height - crate::tol::SAME_LENGTH_MM {
+    if line <= thinwall_geom::tolerance::SAME_LENGTH_MM
+        || line >= axis.height - thinwall_geom::tolerance::SAME_LENGTH_MM
+    {
         return None;
     }
     log.push(Adaptation {
@@ -243,7 +245,7 @@ fn connected_walls(
     shapes: &mut BTreeMap<FeatureId, WallShape>,
     log: &mut Vec<Adaptation>,
 ) {
-    let up = Vector3::from(out.setup.up).normalize();
+    let up = out.setup.up_in_part();
 
     for leaf in walls.iter().filter(|w| w.kind != StiffnessKind::Web) {
         let Some(&web_id) = scene.base.get(&leaf.id) else {
@@ -277,7 +279,7 @@ fn connected_walls(
             web.sizes.h
         };
         // The leaf's sides the web reaches out from.
-        let tol = crate::tol::SAME_LENGTH_MM.max(1e-6 * gl.thickness);
+        let tol = thinwall_geom::tolerance::SAME_LENGTH_MM.max(1e-6 * gl.thickness);
         let d: Vec<f64> = gw
             .outline()
             .iter()
@@ -288,7 +290,7 @@ fn connected_walls(
             d.iter().any(|&x| x < -gl.thickness - tol),
         ];
         for (k, &reaches) in over.iter().enumerate() {
-            if reaches && cap < shape.width[k] - crate::tol::SAME_LENGTH_MM {
+            if reaches && cap < shape.width[k] - thinwall_geom::tolerance::SAME_LENGTH_MM {
                 log.push(Adaptation {
                     wall: leaf.id,
                     by: web_id,
@@ -311,8 +313,8 @@ pub fn hole_splits(
     walls: &[WallPlan],
     shapes: &BTreeMap<FeatureId, WallShape>,
 ) -> Vec<HoleSplit> {
-    let up = Vector3::from(out.setup.up).normalize();
-    let tol = crate::tol::SAME_LENGTH_MM;
+    let up = out.setup.up_in_part();
+    let tol = thinwall_geom::tolerance::SAME_LENGTH_MM;
     let mut splits = Vec::new();
     for w in walls {
         let (Some(line), Some(g)) = (
@@ -356,7 +358,7 @@ pub fn relations(
     features: &[RemovalFeature],
     log: &mut Vec<Adaptation>,
 ) -> Vec<LayerConstraint> {
-    let up = Vector3::from(out.setup.up).normalize();
+    let up = out.setup.up_in_part();
     let mut rel = Vec::new();
     for w in walls {
         let Some(g) = geometry(out, w.id) else {
@@ -387,7 +389,7 @@ pub fn relations(
             // remains) reaching down to its bottom.
             let Some(after) = mine
                 .iter()
-                .find(|l| l.from_foot[0] <= bottom + crate::tol::SAME_LENGTH_MM)
+                .find(|l| l.from_foot[0] <= bottom + thinwall_geom::tolerance::SAME_LENGTH_MM)
             else {
                 continue;
             };
@@ -415,7 +417,7 @@ pub fn relations(
             let Some((bottom, _)) = faces.heights(h, &axis) else {
                 continue;
             };
-            let tol = crate::tol::SAME_LENGTH_MM;
+            let tol = thinwall_geom::tolerance::SAME_LENGTH_MM;
             // The line's height along up, where it crosses the hole.
             let line_z = line.map(|a| {
                 (axis.origin + axis.height_dir * (axis.foot + a))
@@ -537,7 +539,7 @@ pub fn shortest_piece(wall: (f64, f64), cutouts: &[(f64, f64)]) -> f64 {
     let mut from = wall.0;
     for (a, b) in spans.into_iter().chain([(wall.1, wall.1)]) {
         let piece = a.min(wall.1) - from;
-        if piece > crate::tol::SAME_LENGTH_MM {
+        if piece > thinwall_geom::tolerance::SAME_LENGTH_MM {
             shortest = shortest.min(piece);
         }
         from = from.max(b);

@@ -153,7 +153,7 @@ pub fn classify_features(
         // agrees.
         let Some(&(largest, c)) = mine.iter().max_by(|x, y| {
             let (vx, vy) = (f.solids[x.0].volume_mm3, f.solids[y.0].volume_mm3);
-            if (vx - vy).abs() <= crate::tol::EQUAL_VOLUME * vx.abs().max(vy.abs()) {
+            if (vx - vy).abs() <= thinwall_geom::tolerance::EQUAL_VOLUME * vx.abs().max(vy.abs()) {
                 y.1.kind.name().cmp(x.1.kind.name())
             } else {
                 vx.total_cmp(&vy)

@@ -20,7 +20,7 @@ use thinwall_analysis::FeatureId;
 use thinwall_pipeline::Outcome;
 use thinwall_removal::{Bound, Removal};
 
-pub use crate::tol::{MERGE, SLIVER};
+use thinwall_geom::tolerance::{MERGE, SLIVER};
 
 impl FeatureClass {
     pub fn name(self) -> &'static str {
@@ -428,7 +428,10 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
             .iter()
             .flat_map(|&i| pieces[i].region.0.iter().cloned())
             .collect();
-        let region = thinwall_removal::outline::union(&cells, crate::tol::SLIVER_WIDTH * r.size);
+        let region = thinwall_removal::outline::union(
+            &cells,
+            thinwall_geom::tolerance::SLIVER_WIDTH * r.size,
+        );
         let (lower, upper) = (r.height_of(&lo), r.height_of(&hi));
         let sliver = SLIVER * r.stock_volume.cbrt().powi(2);
         for poly in region {

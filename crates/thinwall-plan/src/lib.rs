@@ -14,7 +14,6 @@ pub mod scene;
 pub mod sequence;
 pub mod sizing;
 pub mod steps;
-pub mod tol;
 mod touch;
 mod types;
 pub mod volumes;

@@ -37,7 +37,7 @@ pub struct Scene {
 impl Scene {
     /// The scene of a pipeline run on `part`.
     pub fn of(part: &Part, out: &Outcome) -> Self {
-        let up = Vector3::new(out.setup.up[0], out.setup.up[1], out.setup.up[2]).normalize();
+        let up = out.setup.up_in_part();
         let by_step: BTreeMap<u64, thinwall_brep::FaceId> =
             part.face_ids().map(|f| (part.face(f).step_id, f)).collect();
         let facts = out

@@ -247,7 +247,7 @@ impl SizingError {
 /// A support width that stands for "rigid", mm.
 const UNBOUNDED_SUPPORT_MM: f64 = 1e6;
 
-use crate::tol::SAME_LENGTH_MM;
+use thinwall_geom::tolerance::SAME_LENGTH_MM;
 /// The most steps the width may grow before the model gives up.
 const MAX_WIDTH_STEPS: u32 = 50;
 

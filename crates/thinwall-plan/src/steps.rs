@@ -20,12 +20,12 @@ pub use crate::types::{Layer, SizeClass};
 
 use crate::scene::Scene;
 use crate::sequence::Sequence;
-use crate::tol::SAME_LENGTH_MM;
 use crate::types::WallPlan;
 use crate::types::{Axis, WallShape};
 use std::collections::BTreeMap;
 use thinwall_analysis::FeatureId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
+use thinwall_geom::tolerance::SAME_LENGTH_MM;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
 
@@ -39,7 +39,7 @@ pub fn layers(
     walls: &[WallPlan],
     shapes: &BTreeMap<FeatureId, WallShape>,
 ) -> Vec<Layer> {
-    let up = Vector3::new(out.setup.up[0], out.setup.up[1], out.setup.up[2]).normalize();
+    let up = out.setup.up_in_part();
     let mut per_wall: BTreeMap<FeatureId, Vec<Layer>> = BTreeMap::new();
     for w in walls.iter().filter(|w| w.sizes.thin) {
         let Some(f) = out.recognition.feature(w.id) else {

@@ -127,7 +127,9 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Opt
             _ => None,
         })
         .fold(0.0, f64::max);
-    let snap = |u: f64| match (u.abs() - radius).abs() <= crate::tol::SLIVER_WIDTH * size.max(1.0) {
+    let snap = |u: f64| match (u.abs() - radius).abs()
+        <= thinwall_geom::tolerance::SLIVER_WIDTH * size.max(1.0)
+    {
         true => radius.copysign(u),
         false => u,
     };
@@ -286,7 +288,7 @@ fn knife_edge(s: &crate::types::FeatureSolid) -> f64 {
             hi[k] = hi[k].max(p[k]);
         }
     }
-    crate::tol::SLIVER_WIDTH * (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+    thinwall_geom::tolerance::SLIVER_WIDTH * (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 
 /// A feature's solids as one STEP text, and how many could not be written.

@@ -21,7 +21,7 @@ pub fn removal_plan(
     splits: &[crate::types::HoleSplit],
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
-    let up = Vector3::from(out.setup.up).normalize();
+    let up = out.setup.up_in_part();
     let (frame, mut lo, mut hi) = frame_of(a, up);
     let size = a.bounding_box().diagonal();
     let tol = a.tol().feature;

@@ -104,12 +104,7 @@ pub struct Removal {
     pub size: f64,
 }
 
-/// A cell whose mean width (2·area / perimeter) is under this fraction of
-/// the part's size is a sliver of the 2-D booleans: the booleans round to
-/// a grid of about 1e-9 of their inputs' extent, so their decisions there
-/// are noise. Cell vertices closer than it are one vertex when a feature's
-/// cells are joined into solids.
-pub const SLIVER_WIDTH: f64 = 1e-6;
+pub use thinwall_geom::tolerance::SLIVER_WIDTH;
 
 fn mean_width(p: &geo::Polygon<f64>) -> f64 {
     use geo::{Euclidean, Length};
