@@ -22,8 +22,8 @@ pub enum OpsError {
     Removal(#[from] RemovalError),
     /// The plan has no machining features (its removal could not be
     /// decomposed), with why.
-    #[error("the plan has no machining features: {0}")]
-    NoPlan(String),
+    #[error("the plan has no machining features: removal.{code}: {0}", code = .0.code())]
+    NoPlan(RemovalError),
 }
 
 impl OpsError {

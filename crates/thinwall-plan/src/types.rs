@@ -12,6 +12,7 @@ use thinwall_connect::Connection;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_removal::pieces::Height;
 use thinwall_removal::Bound;
+use thinwall_removal::RemovalError;
 
 /// Which rule of §4.1.3 changed the plan.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -299,8 +300,11 @@ pub struct RemovalSummary {
     pub slivers_mm3: f64,
     /// Why the removal could not be decomposed (no machining features
     /// then).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub unavailable: Option<String>,
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "unavailable_text"
+    )]
+    pub unavailable: Option<RemovalError>,
     /// Layers left out of the removal (not prisms along up), with why.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
@@ -321,4 +325,16 @@ pub struct WallPlan {
     pub kind: StiffnessKind,
     #[serde(flatten)]
     pub sizes: Sizes,
+}
+
+/// Why the removal is unavailable, as the plan's JSON gives it:
+/// `removal.<code>: <message>`.
+fn unavailable_text<S: serde::Serializer>(
+    e: &Option<RemovalError>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    match e {
+        Some(e) => s.serialize_str(&format!("removal.{}: {e}", e.code())),
+        None => s.serialize_none(),
+    }
 }

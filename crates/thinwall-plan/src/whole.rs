@@ -56,7 +56,7 @@ pub fn removal_plan(
     let r = match Removal::new(part, frame, &stock, &bands, size) {
         Ok(r) => r,
         Err(e) => {
-            summary.unavailable = Some(format!("removal.{}: {e}", e.code()));
+            summary.unavailable = Some(e);
             return (summary, Vec::new(), frame_out);
         }
     };

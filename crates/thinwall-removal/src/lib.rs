@@ -32,7 +32,6 @@ use thiserror::Error;
 
 /// Why the removal cannot be decomposed.
 #[derive(Clone, Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum RemovalError {
     #[error("face #{step_id} is {reason}")]
     UnsupportedFace { step_id: u64, reason: String },

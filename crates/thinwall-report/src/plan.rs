@@ -8,7 +8,11 @@ fn removal_text(plan: &Plan, s: &mut String) {
     use std::fmt::Write;
     let r = &plan.removal;
     if let Some(why) = &r.unavailable {
-        let _ = writeln!(s, "removal plan: not available ({why})");
+        let _ = writeln!(
+            s,
+            "removal plan: not available (removal.{}: {why})",
+            why.code()
+        );
         return;
     }
     let _ = writeln!(
