@@ -37,177 +37,35 @@ pub enum Command {
     },
     /// Recognize stiffness features: walls (web, rib, flange), thinness,
     /// holes, cut-outs, notches, fillets, chamfers.
-    Recognize {
-        /// The STEP file.
-        part: PathBuf,
-        #[command(flatten)]
-        flags: RecognizeFlags,
-        /// Print the time of every stage and every warning to stderr.
-        #[arg(long)]
-        verbose: bool,
-        /// Output format.
-        #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
-        format: Format,
-        /// Write to this file instead of stdout.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-    },
+    Recognize(RecognizeArgs),
     /// Plan the machining order of the stiffness features: sequence
     /// constraints from rules (docs/PLANNING.md), each decision explained.
-    Plan {
-        /// The STEP file.
-        part: PathBuf,
-        #[command(flatten)]
-        flags: RecognizeFlags,
-        /// A TOML file of sequence rules (default: the shipped five).
-        #[arg(long)]
-        rules: Option<PathBuf>,
-        /// Write each step-approach layer as a STEP solid (`V1.step`, …) here.
-        #[arg(long)]
-        volumes_dir: Option<PathBuf>,
-        /// Output format.
-        #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
-        format: Format,
-        /// Write to this file instead of stdout.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-    },
+    Plan(PlanArgs),
     /// Recognize many parts in parallel: one report per part in OUT, a
     /// summary (summary.jsonl and a table), progress on stderr. A bad file
     /// is reported, not fatal; exit 1 when any part failed.
-    Batch {
-        /// STEP files.
-        #[arg(required = true)]
-        inputs: Vec<PathBuf>,
-        /// Directory for the reports and the summary.
-        #[arg(long)]
-        out: PathBuf,
-        /// Parts recognized at once (default: the machine's cores).
-        #[arg(long)]
-        jobs: Option<usize>,
-        /// Report format per part.
-        #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
-        format: Format,
-        /// Compare each part with DIR/<name>.expect.json (as `check`).
-        #[arg(long)]
-        expect: Option<PathBuf>,
-        #[command(flatten)]
-        flags: RecognizeFlags,
-    },
+    Batch(BatchArgs),
     /// Compare a part's recognition with a stored one (a regression check
     /// of your own parts): features added, lost, changed kind or size,
     /// thinness, connections. Exit 1 on any difference.
-    Check {
-        /// The STEP file.
-        part: PathBuf,
-        /// The stored recognition (`thinwall recognize --format json`).
-        #[arg(long)]
-        expect: PathBuf,
-        /// Write the part's recognition to the expectation instead.
-        #[arg(long)]
-        update: bool,
-        /// Sizes within this many mm (plus the relative part) are the same.
-        #[arg(long, default_value_t = 0.01)]
-        tolerance_mm: f64,
-        /// Sizes within this fraction (plus the absolute part) are the same.
-        #[arg(long, default_value_t = 1e-3)]
-        tolerance_rel: f64,
-        #[command(flatten)]
-        flags: RecognizeFlags,
-    },
+    Check(CheckArgs),
     /// Accessibility of the part's faces: how much of each face and wall
     /// side a tool and its holder reach with material in the way, and
     /// whether each planar face can be flank milled (its G-zone, Harik &
     /// Ris; docs/ACCESS.md).
-    Access {
-        /// The STEP file.
-        part: PathBuf,
-        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
-        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-        up: Option<[f64; 3]>,
-        /// Machine class: 3-axis (tool axis = up) or 5-axis.
-        #[arg(long, value_enum, default_value = "3-axis")]
-        machine: MachineArg,
-        /// 5-axis: largest tilt of the tool axis from up, degrees.
-        #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
-        tilt_limit: f64,
-        /// Tool diameter, mm: obstacles count this far above a face.
-        #[arg(long, default_value_t = 12.0, allow_hyphen_values = true)]
-        tool_diameter: f64,
-        /// The tool's cutting length, mm (default three diameters).
-        #[arg(long, allow_hyphen_values = true)]
-        cutting_length: Option<f64>,
-        /// The holder's diameter, mm (default two tool diameters).
-        #[arg(long, allow_hyphen_values = true)]
-        holder_diameter: Option<f64>,
-        /// Widen the unreachable zones by the tool's radius.
-        #[arg(long)]
-        tool_radius: bool,
-        /// Visibility ratio a face needs to be advisable.
-        #[arg(long, default_value_t = 0.95, allow_hyphen_values = true)]
-        threshold: f64,
-        /// Output format.
-        #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "json")]
-        format: Format,
-        /// Write to this file instead of stdout.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-    },
+    Access(AccessArgs),
     /// Operations of a set-up: layers from the stock's top (and at every
     /// flat face), cutter fields, the largest tools that fit with their
     /// rest areas and regions (boundary, full cut, roughing), floors'
     /// finishing, holes drilled by subtype, in an order that cuts tool
     /// changes (docs/OPERATIONS.md).
-    Operations {
-        /// The STEP file.
-        part: PathBuf,
-        /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
-        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-        up: Option<[f64; 3]>,
-        /// A tool library (TOML; default: the shipped one, docs/OPERATIONS.md).
-        #[arg(long)]
-        tools: Option<PathBuf>,
-        /// Depth of cut between levels, mm (default: the largest end mill's).
-        #[arg(long, allow_hyphen_values = true)]
-        axial_depth: Option<f64>,
-        /// Follow the plan: each machining feature of `thinwall plan`
-        /// (step-approach layers, bulk) layered and tooled on its own, in
-        /// an order that keeps every relation of the plan. Default: the
-        /// whole removal layered at once.
-        #[arg(long)]
-        by_feature: bool,
-        /// Output format.
-        #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "text")]
-        format: Format,
-        /// Write to this file instead of stdout.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-    },
+    Operations(OperationsArgs),
     /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
     /// step-approach bending model (docs/PLANNING.md).
     SizeWall(SizeWallArgs),
     /// Classify machining-feature volumes (pocket, slot, step, …) by shape
     /// and by which faces touch the part or volumes not removed before them.
-    Classify {
-        /// The part (STEP).
-        #[arg(long)]
-        part: PathBuf,
-        /// A volume (STEP solid); repeat for several, indexed 0, 1, … in order.
-        #[arg(long, required = true)]
-        volume: Vec<PathBuf>,
-        /// `A:B`: volume A is removed before volume B (repeatable).
-        #[arg(long, value_parser = parse_before)]
-        before: Vec<(usize, usize)>,
-        /// Up direction of the set-up (the tool comes from above), e.g. `0,0,1`.
-        #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-        up: Option<[f64; 3]>,
-        /// Output format.
-        #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
-        format: Format,
-        /// Write to this file instead of stdout.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-    },
+    Classify(ClassifyArgs),
 }
 
 fn parse_before(s: &str) -> Result<(usize, usize), String> {
@@ -223,6 +81,176 @@ fn parse_before(s: &str) -> Result<(usize, usize), String> {
         .parse()
         .map_err(|_| format!("'{b}' is not a volume index"))?;
     Ok((a, b))
+}
+
+/// The flags of `recognize`.
+#[derive(clap::Args)]
+pub struct RecognizeArgs {
+    /// The STEP file.
+    pub part: PathBuf,
+    #[command(flatten)]
+    pub flags: RecognizeFlags,
+    /// Print the time of every stage and every warning to stderr.
+    #[arg(long)]
+    pub verbose: bool,
+    /// Output format.
+    #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The flags of `plan`.
+#[derive(clap::Args)]
+pub struct PlanArgs {
+    /// The STEP file.
+    pub part: PathBuf,
+    #[command(flatten)]
+    pub flags: RecognizeFlags,
+    /// A TOML file of sequence rules (default: the shipped five).
+    #[arg(long)]
+    pub rules: Option<PathBuf>,
+    /// Write each step-approach layer as a STEP solid (`V1.step`, …) here.
+    #[arg(long)]
+    pub volumes_dir: Option<PathBuf>,
+    /// Output format.
+    #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The flags of `batch`.
+#[derive(clap::Args)]
+pub struct BatchArgs {
+    /// STEP files.
+    #[arg(required = true)]
+    pub inputs: Vec<PathBuf>,
+    /// Directory for the reports and the summary.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Parts recognized at once (default: the machine's cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Report format per part.
+    #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
+    pub format: Format,
+    /// Compare each part with DIR/<name>.expect.json (as `check`).
+    #[arg(long)]
+    pub expect: Option<PathBuf>,
+    #[command(flatten)]
+    pub flags: RecognizeFlags,
+}
+
+/// The flags of `check`.
+#[derive(clap::Args)]
+pub struct CheckArgs {
+    /// The STEP file.
+    pub part: PathBuf,
+    /// The stored recognition (`thinwall recognize --format json`).
+    #[arg(long)]
+    pub expect: PathBuf,
+    /// Write the part's recognition to the expectation instead.
+    #[arg(long)]
+    pub update: bool,
+    /// Sizes within this many mm (plus the relative part) are the same.
+    #[arg(long, default_value_t = 0.01)]
+    pub tolerance_mm: f64,
+    /// Sizes within this fraction (plus the absolute part) are the same.
+    #[arg(long, default_value_t = 1e-3)]
+    pub tolerance_rel: f64,
+    #[command(flatten)]
+    pub flags: RecognizeFlags,
+}
+
+/// The flags of `access`.
+#[derive(clap::Args)]
+pub struct AccessArgs {
+    /// The STEP file.
+    pub part: PathBuf,
+    /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+    #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+    pub up: Option<[f64; 3]>,
+    /// Machine class: 3-axis (tool axis = up) or 5-axis.
+    #[arg(long, value_enum, default_value = "3-axis")]
+    pub machine: MachineArg,
+    /// 5-axis: largest tilt of the tool axis from up, degrees.
+    #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
+    pub tilt_limit: f64,
+    /// Tool diameter, mm: obstacles count this far above a face.
+    #[arg(long, default_value_t = 12.0, allow_hyphen_values = true)]
+    pub tool_diameter: f64,
+    /// The tool's cutting length, mm (default three diameters).
+    #[arg(long, allow_hyphen_values = true)]
+    pub cutting_length: Option<f64>,
+    /// The holder's diameter, mm (default two tool diameters).
+    #[arg(long, allow_hyphen_values = true)]
+    pub holder_diameter: Option<f64>,
+    /// Widen the unreachable zones by the tool's radius.
+    #[arg(long)]
+    pub tool_radius: bool,
+    /// Visibility ratio a face needs to be advisable.
+    #[arg(long, default_value_t = 0.95, allow_hyphen_values = true)]
+    pub threshold: f64,
+    /// Output format.
+    #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "json")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The flags of `operations`.
+#[derive(clap::Args)]
+pub struct OperationsArgs {
+    /// The STEP file.
+    pub part: PathBuf,
+    /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+    #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+    pub up: Option<[f64; 3]>,
+    /// A tool library (TOML; default: the shipped one, docs/OPERATIONS.md).
+    #[arg(long)]
+    pub tools: Option<PathBuf>,
+    /// Depth of cut between levels, mm (default: the largest end mill's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub axial_depth: Option<f64>,
+    /// Follow the plan: each machining feature of `thinwall plan`
+    /// (step-approach layers, bulk) layered and tooled on its own, in
+    /// an order that keeps every relation of the plan. Default: the
+    /// whole removal layered at once.
+    #[arg(long)]
+    pub by_feature: bool,
+    /// Output format.
+    #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "text")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The flags of `classify`.
+#[derive(clap::Args)]
+pub struct ClassifyArgs {
+    /// The part (STEP).
+    #[arg(long)]
+    pub part: PathBuf,
+    /// A volume (STEP solid); repeat for several, indexed 0, 1, … in order.
+    #[arg(long, required = true)]
+    pub volume: Vec<PathBuf>,
+    /// `A:B`: volume A is removed before volume B (repeatable).
+    #[arg(long, value_parser = parse_before)]
+    pub before: Vec<(usize, usize)>,
+    /// Up direction of the set-up (the tool comes from above), e.g. `0,0,1`.
+    #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
+    pub up: Option<[f64; 3]>,
+    /// Output format.
+    #[arg(long, value_parser = formats(&["text", "json", "svg", "html"]), default_value = "json")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, ValueEnum)]

@@ -29,160 +29,104 @@ fn run(command: Command) -> Result<(), Failure> {
     match command {
         Command::Inspect { part, format } => {
             let loaded = LoadedPart::read_file(&part)?;
-            let s = Study::new(&loaded);
-            emit(study::inspect(&s)?.into(), format, None)
+            emit(study::inspect(&Study::new(&loaded))?.into(), format, None)
         }
-        Command::Recognize {
-            part,
-            flags,
-            verbose,
-            format,
-            output,
-        } => {
-            let request = flags.request()?;
-            recognize(&part, &request, verbose, format, output.as_deref())
+        Command::Recognize(a) => {
+            let request = a.flags.request()?;
+            recognize(&a.part, &request, a.verbose, a.format, a.output.as_deref())
         }
-        Command::Plan {
-            part,
-            flags,
-            rules,
-            volumes_dir,
-            format,
-            output,
-        } => {
-            let request = study::PlanRequest {
-                recognize: flags.request()?,
-                rules: rules_of(rules.as_deref())?,
-            };
-            let loaded = LoadedPart::read_file(&part)?;
-            let s = Study::new(&loaded);
-            let planned = study::plan(&s, &request)?;
-            if let Some(dir) = &volumes_dir {
-                let skipped = study::write_volumes(&planned.plan, dir)?;
-                if skipped > 0 {
-                    eprintln!("note: {skipped} solid(s) bounded by a cylinder or cone are not written yet (their volumes are in the plan)");
-                }
-            }
-            emit(planned.into(), format, output.as_deref())
-        }
-        Command::Access {
-            part,
-            up,
-            machine,
-            tilt_limit,
-            tool_diameter,
-            cutting_length,
-            holder_diameter,
-            tool_radius,
-            threshold,
-            format,
-            output,
-        } => {
-            let setup = study::setup_of(up, machine.machine(tilt_limit))?;
-            let mut request = study::AccessRequest::new(setup);
-            request.tool = args::tool(tool_diameter, cutting_length, holder_diameter);
-            request.tool_radius = tool_radius;
-            request.threshold = threshold;
-            request.check()?;
-            let loaded = LoadedPart::read_file(&part)?;
-            let s = Study::new(&loaded);
-            let bar = Bar::new(loaded.part.faces.len());
-            let accessed = study::access_observed(&s, &request, |_, _| bar.inc())?;
-            drop(bar);
-            emit(accessed.into(), format, output.as_deref())
-        }
-        Command::Operations {
-            part,
-            up,
-            tools,
-            axial_depth,
-            by_feature,
-            format,
-            output,
-        } => {
-            let setup = study::setup_of(up, thinwall_analysis::Machine::ThreeAxis)?;
-            let mut request = study::OperationsRequest::new(setup);
-            request.tools = tools_of(tools.as_deref())?;
-            request.axial_depth = axial_depth;
-            request.by_feature = by_feature;
-            request.check()?;
-            let loaded = LoadedPart::read_file(&part)?;
-            let s = Study::new(&loaded);
-            emit(
-                study::operations(&s, &request)?.into(),
-                format,
-                output.as_deref(),
-            )
-        }
+        Command::Plan(a) => plan(a),
+        Command::Access(a) => access(a),
+        Command::Operations(a) => operations(a),
         Command::SizeWall(a) => emit(study::size_wall(&a.request())?.into(), a.format, None),
-        Command::Classify {
-            part,
-            volume,
-            before,
-            up,
-            format,
-            output,
-        } => {
-            let setup = study::setup_of(up, thinwall_analysis::Machine::ThreeAxis)?;
-            let loaded = LoadedPart::read_file(&part)?;
-            let mut volumes = Vec::new();
-            for v in &volume {
-                volumes.push(thinwall_classify::Volume {
-                    name: v.display().to_string(),
-                    part: thinwall_step::read_file(v)?.0,
-                    current: None,
-                    up: None,
-                });
-            }
-            let s = Study::new(&loaded);
-            let request = study::ClassifyRequest {
-                setup,
-                volumes,
-                before,
-            };
-            emit(
-                study::classify(&s, request)?.into(),
-                format,
-                output.as_deref(),
-            )
-        }
-        Command::Batch {
-            inputs,
-            out,
-            jobs,
-            format,
-            expect,
-            flags,
-        } => {
-            let mut request = flags.request()?;
+        Command::Classify(a) => classify(a),
+        Command::Batch(a) => {
+            let mut request = a.flags.request()?;
             // The parts run in parallel; each runs alone.
             request.parallel = false;
-            let jobs =
-                jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+            let cores = || std::thread::available_parallelism().map_or(1, |n| n.get());
             batch::command(batch::Batch {
-                inputs,
-                out,
-                jobs,
-                format,
-                expect,
+                inputs: a.inputs,
+                out: a.out,
+                jobs: a.jobs.unwrap_or_else(cores),
+                format: a.format,
+                expect: a.expect,
                 request,
             })
         }
-        Command::Check {
-            part,
-            expect,
-            update,
-            tolerance_mm,
-            tolerance_rel,
-            flags,
-        } => {
+        Command::Check(a) => {
             let tol = thinwall_report::expect::CheckTolerance {
-                absolute_mm: tolerance_mm,
-                relative: tolerance_rel,
+                absolute_mm: a.tolerance_mm,
+                relative: a.tolerance_rel,
             };
-            check::command(&part, &expect, update, tol, flags.request()?)
+            check::command(&a.part, &a.expect, a.update, tol, a.flags.request()?)
         }
     }
+}
+
+fn plan(a: args::PlanArgs) -> Result<(), Failure> {
+    let request = study::PlanRequest {
+        recognize: a.flags.request()?,
+        rules: rules_of(a.rules.as_deref())?,
+    };
+    let loaded = LoadedPart::read_file(&a.part)?;
+    let s = Study::new(&loaded);
+    let planned = study::plan(&s, &request)?;
+    if let Some(dir) = &a.volumes_dir {
+        let skipped = study::write_volumes(&planned.plan, dir)?;
+        if skipped > 0 {
+            eprintln!("note: {skipped} solid(s) bounded by a cylinder or cone are not written yet (their volumes are in the plan)");
+        }
+    }
+    emit(planned.into(), a.format, a.output.as_deref())
+}
+
+fn access(a: args::AccessArgs) -> Result<(), Failure> {
+    let setup = study::setup_of(a.up, a.machine.machine(a.tilt_limit))?;
+    let mut request = study::AccessRequest::new(setup);
+    request.tool = args::tool(a.tool_diameter, a.cutting_length, a.holder_diameter);
+    request.tool_radius = a.tool_radius;
+    request.threshold = a.threshold;
+    request.check()?;
+    let loaded = LoadedPart::read_file(&a.part)?;
+    let s = Study::new(&loaded);
+    let bar = Bar::new(loaded.part.faces.len());
+    let accessed = study::access_observed(&s, &request, |_, _| bar.inc())?;
+    drop(bar);
+    emit(accessed.into(), a.format, a.output.as_deref())
+}
+
+fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
+    let setup = study::setup_of(a.up, thinwall_analysis::Machine::ThreeAxis)?;
+    let mut request = study::OperationsRequest::new(setup);
+    request.tools = tools_of(a.tools.as_deref())?;
+    request.axial_depth = a.axial_depth;
+    request.by_feature = a.by_feature;
+    request.check()?;
+    let loaded = LoadedPart::read_file(&a.part)?;
+    let operated = study::operations(&Study::new(&loaded), &request)?;
+    emit(operated.into(), a.format, a.output.as_deref())
+}
+
+fn classify(a: args::ClassifyArgs) -> Result<(), Failure> {
+    let setup = study::setup_of(a.up, thinwall_analysis::Machine::ThreeAxis)?;
+    let loaded = LoadedPart::read_file(&a.part)?;
+    let mut volumes = Vec::new();
+    for v in &a.volume {
+        volumes.push(thinwall_classify::Volume {
+            name: v.display().to_string(),
+            part: thinwall_step::read_file(v)?.0,
+            current: None,
+            up: None,
+        });
+    }
+    let request = study::ClassifyRequest {
+        setup,
+        volumes,
+        before: a.before,
+    };
+    let classified = study::classify(&Study::new(&loaded), request)?;
+    emit(classified.into(), a.format, a.output.as_deref())
 }
 
 /// `recognize`: the report, with the time of every stage on stderr when
