@@ -8,7 +8,9 @@
 # CAPI_JSON_BINARY is plugin-api's example `capi_json` (cargo build --release
 # -p thinwall-capi --example capi_json). COMMANDS (environment) limits the
 # commands, e.g. COMMANDS="recognize classify"; ACCESS_TIMEOUT (seconds,
-# default 900) bounds one access run (a timeout is written as such).
+# default 900) bounds one access run (a timeout is written as such); PARTS
+# (environment) names a file listing the parts to run (default: every
+# shared part and fixture).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: snapshot_outputs.sh DIR [BINARY [CAPI_BINARY]]}
@@ -18,10 +20,14 @@ export COMMANDS=${COMMANDS:-"inspect recognize plan operations access capi class
 export ACCESS_TIMEOUT=${ACCESS_TIMEOUT:-900}
 mkdir -p "$out"
 list=$(mktemp)
-{
-  find ../shared/data -name '*.step' -o -name '*.stp' | sort
-  find fixtures -name '*.step' -not -path 'fixtures/classify/*' | sort
-} >"$list"
+if [ -n "${PARTS:-}" ]; then
+  cp "$PARTS" "$list"
+else
+  {
+    find ../shared/data -name '*.step' -o -name '*.stp' | sort
+    find fixtures -name '*.step' -not -path 'fixtures/classify/*' | sort
+  } >"$list"
+fi
 has() { [[ " $COMMANDS " == *" $1 "* ]]; }
 export -f has
 run_one() {

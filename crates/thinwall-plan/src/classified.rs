@@ -63,6 +63,8 @@ pub fn classify_features(
     let mut volumes: Vec<Volume> = Vec::new();
     let mut owner: Vec<(usize, usize)> = Vec::new();
     let mut boxes: Vec<[f64; 6]> = Vec::new();
+    // Why a feature's solid could not be read back, by feature.
+    let mut unreadable: Vec<Option<String>> = vec![None; features.len()];
     for (fi, f) in features.iter().enumerate() {
         for (si, s) in f.solids.iter().enumerate() {
             let name = format!("{}#{}", f.id, si + 1);
@@ -70,8 +72,12 @@ pub fn classify_features(
                 continue;
             };
             let text = crate::volumes::solids_step(&[solid], &name);
-            let Ok((part, _)) = thinwall_step::read_bytes(text.as_bytes(), &name) else {
-                continue;
+            let part = match thinwall_step::read_bytes(text.as_bytes(), &name) {
+                Ok((part, _)) => part,
+                Err(e) => {
+                    unreadable[fi] = Some(format!("its solid {name} could not be read back: {e}"));
+                    continue;
+                }
             };
             volumes.push(Volume {
                 name,
@@ -159,9 +165,9 @@ pub fn classify_features(
                 vx.total_cmp(&vy)
             }
         }) else {
-            f.classification = Some(unknown(
+            f.classification = Some(unknown(unreadable[fi].as_deref().unwrap_or(
                 "its solids are bounded by a cylinder or a cone: not classified yet",
-            ));
+            )));
             continue;
         };
         let mut types: Vec<VolumeType> = mine
