@@ -131,7 +131,7 @@ fn summary(
         .iter()
         .map(|o| {
             let first = o.passes.first().map_or(usize::MAX, |p| p.layer);
-            let f = o.feature.clone();
+            let f = o.feature.as_ref().map(|f| f.to_string());
             (o.stage, o.tool.clone(), f, first, o.area_mm2, o.volume_mm3)
         })
         .collect();

@@ -87,7 +87,7 @@ pub struct RoughingLayer {
     /// The plan's machining feature it belongs to, when the operations
     /// follow the plan.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub feature: Option<String>,
+    pub feature: Option<thinwall_plan::VolumeId>,
     pub z_top_mm: f64,
     pub z_bottom_mm: f64,
     /// STEP ids of the part's flat faces facing up at the layer's bottom.

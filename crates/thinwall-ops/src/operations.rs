@@ -82,7 +82,7 @@ pub struct Operation {
     /// The plan's machining feature it works in (operations along the
     /// plan).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub feature: Option<String>,
+    pub feature: Option<thinwall_plan::VolumeId>,
     pub z_top_mm: f64,
     pub z_bottom_mm: f64,
     /// The product adjacency of its fields together.
@@ -111,7 +111,7 @@ impl Operation {
         stage: Stage,
         tool: &CuttingTool,
         adjacency: Adjacency,
-        feature: Option<String>,
+        feature: Option<thinwall_plan::VolumeId>,
         pass: Pass,
     ) -> Self {
         Operation {
@@ -223,7 +223,7 @@ pub struct SetupOperations {
     /// The plan's machining features left to another set-up (operations
     /// along the plan only).
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub other_setup: Vec<String>,
+    pub other_setup: Vec<thinwall_plan::VolumeId>,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -307,7 +307,7 @@ pub(crate) struct Assembly<'a> {
     pub holes: &'a [HoleSite],
     /// Machining features (by `RoughingLayer::feature`) whose operations
     /// all come before another's: the plan's relations.
-    pub groups: &'a [(String, String)],
+    pub groups: &'a [(thinwall_plan::VolumeId, thinwall_plan::VolumeId)],
     pub tol: f64,
 }
 

@@ -92,7 +92,7 @@ pub(crate) fn group_edges(
     g: &mut DiGraph<usize, ()>,
     ops: &[Draft],
     layers: &[RoughingLayer],
-    groups: &[(String, String)],
+    groups: &[(thinwall_plan::VolumeId, thinwall_plan::VolumeId)],
 ) {
     let of = |id: &str| -> Vec<usize> {
         (0..ops.len())

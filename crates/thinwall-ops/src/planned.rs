@@ -179,7 +179,7 @@ pub fn by_feature(
             above = z;
         }
     }
-    let groups: Vec<(String, String)> = plan
+    let groups: Vec<(thinwall_plan::VolumeId, thinwall_plan::VolumeId)> = plan
         .feature_sequence
         .relations
         .iter()

@@ -32,7 +32,7 @@ use crate::scene::Scene;
 use crate::sizing::{size_wall, WallDimensions};
 use crate::types::Layer;
 use crate::types::RemovalFeature;
-use crate::types::{LayerConstraint, WallPlan};
+use crate::types::{LayerConstraint, VolumeId, WallPlan};
 use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::measure::boundary_points;
 use thinwall_analysis::{FeatureId, StiffnessKind};
@@ -374,11 +374,11 @@ pub fn relations(
         if mine.is_empty() {
             continue;
         }
-        let owned = |id: FeatureId| -> Vec<&str> {
+        let owned = |id: FeatureId| -> Vec<&VolumeId> {
             features
                 .iter()
                 .filter(|f| f.owner == Some(id))
-                .map(|f| f.id.as_str())
+                .map(|f| &f.id)
                 .collect()
         };
         for c in on_wall(out, w.id, StiffnessKind::Cutout) {
@@ -396,7 +396,7 @@ pub fn relations(
             for f in owned(c.id) {
                 rel.push(LayerConstraint {
                     before: after.id.clone(),
-                    after: f.to_string(),
+                    after: f.clone(),
                     why: format!("{} inserted into {}'s step approach (§4.1.3)", c.id, w.id),
                 });
             }
@@ -441,17 +441,17 @@ pub fn relations(
                     .iter()
                     .filter_map(|&s| below.iter().find(|l| l.side == s).copied())
                     .collect();
-                let f = f.id.as_str();
+                let f = &f.id;
                 for l in &above {
                     rel.push(LayerConstraint {
                         before: l.id.clone(),
-                        after: f.to_string(),
+                        after: f.clone(),
                         why: format!("{} machined once exposed (§4.1.3)", h.id),
                     });
                 }
                 for l in &firsts_below {
                     rel.push(LayerConstraint {
-                        before: f.to_string(),
+                        before: f.clone(),
                         after: l.id.clone(),
                         why: format!(
                             "{} before the layers below it, which still support the wall (§4.1.3)",
@@ -498,7 +498,7 @@ pub fn relations(
             for f in &feats {
                 if large {
                     rel.push(LayerConstraint {
-                        before: f.to_string(),
+                        before: (*f).clone(),
                         after: mine[0].id.clone(),
                         why: format!(
                             "{} is large: before all of {}'s layers (§4.1.3)",
@@ -509,7 +509,7 @@ pub fn relations(
                     for l in &tops {
                         rel.push(LayerConstraint {
                             before: l.id.clone(),
-                            after: f.to_string(),
+                            after: (*f).clone(),
                             why: format!("{} after the top layers beside it (§4.1.3)", c.id),
                         });
                     }

@@ -15,8 +15,8 @@
 
 pub use crate::types::{FeatureRelation, FeatureSequence};
 
-use crate::types::LayerConstraint;
 use crate::types::RemovalFeature;
+use crate::types::{LayerConstraint, VolumeId};
 use petgraph::algo::has_path_connecting;
 use petgraph::graph::{DiGraph, NodeIndex};
 use std::cmp::Reverse;
@@ -132,8 +132,8 @@ fn through_vanished(
     };
     let mut out = Vec::new();
     for r in layer_rel {
-        for (a, via_a) in reach(&r.before, &prev) {
-            for (b, via_b) in reach(&r.after, &next) {
+        for (a, via_a) in reach(r.before.as_str(), &prev) {
+            for (b, via_b) in reach(r.after.as_str(), &next) {
                 let via: Vec<String> = via_a.iter().chain(&via_b).cloned().collect();
                 let why = match via.is_empty() {
                     true => r.why.clone(),
@@ -147,7 +147,7 @@ fn through_vanished(
 }
 
 /// Kahn's algorithm with the module's tie-break.
-fn topo(features: &[RemovalFeature], g: &DiGraph<usize, ()>, nodes: &[NodeIndex]) -> Vec<String> {
+fn topo(features: &[RemovalFeature], g: &DiGraph<usize, ()>, nodes: &[NodeIndex]) -> Vec<VolumeId> {
     let key = |i: usize| {
         let f = &features[i];
         (!f.reachable, Reverse(ordered(f.z_range[1])), i)

@@ -14,7 +14,7 @@
 
 pub use crate::types::{FeatureClass, FeatureSolid, Piece, RemovalFeature};
 
-use crate::types::{Layer, SizeClass};
+use crate::types::{Layer, SizeClass, VolumeId};
 use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::FeatureId;
 use thinwall_pipeline::Outcome;
@@ -232,7 +232,7 @@ fn rest_feature(
 ) -> RemovalFeature {
     let access = (!reachable).then(|| access_of(r, &pieces)).flatten();
     RemovalFeature {
-        id: String::new(),
+        id: VolumeId::default(),
         owner,
         side: None,
         step: None,
@@ -519,15 +519,15 @@ fn renumber(feats: &mut [RemovalFeature]) {
         match f.size_class {
             FeatureClass::Bulk => {
                 nb += 1;
-                f.id = format!("B{nb}");
+                f.id = VolumeId::new('B', nb);
             }
             FeatureClass::OtherSetup => {
                 nx += 1;
-                f.id = format!("X{nx}");
+                f.id = VolumeId::new('X', nx);
             }
             FeatureClass::Detail => {
                 nd += 1;
-                f.id = format!("D{nd}");
+                f.id = VolumeId::new('D', nd);
             }
             _ => {}
         }

@@ -25,7 +25,7 @@ pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
 pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
 /// The removal engine the plan is built over (its own crate).
 pub use thinwall_removal as removal;
-pub use types::{LayerConstraint, Plan, PlannedFeature, RemovalSummary, WallPlan};
+pub use types::{LayerConstraint, Plan, PlannedFeature, RemovalSummary, VolumeId, WallPlan};
 
 use thinwall_analysis::{PartAnalysis, StiffnessKind};
 

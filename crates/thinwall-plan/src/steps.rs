@@ -20,8 +20,8 @@ pub use crate::types::{Layer, SizeClass};
 
 use crate::scene::Scene;
 use crate::sequence::Sequence;
-use crate::types::WallPlan;
 use crate::types::{Axis, WallShape};
+use crate::types::{VolumeId, WallPlan};
 use std::collections::BTreeMap;
 use thinwall_analysis::FeatureId;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
@@ -62,7 +62,7 @@ pub fn layers(
         }
     }
     for (i, l) in ordered.iter_mut().enumerate() {
-        l.id = format!("V{}", i + 1);
+        l.id = VolumeId::new('V', i + 1);
     }
     ordered
 }
@@ -139,7 +139,7 @@ fn wall_layers(
         let zs: Vec<f64> = corners.iter().map(|p| p.coords.dot(up)).collect();
         let axis_z = |hh: f64| (g.frame.origin + hd * (foot + hh)).coords.dot(up);
         Layer {
-            id: String::new(),
+            id: VolumeId::default(),
             owner: w.id,
             side,
             size_class: class,

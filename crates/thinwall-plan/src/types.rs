@@ -6,6 +6,7 @@
 use crate::sequence::{Constraint, Rejected, Sequence};
 use crate::sizing::Sizes;
 use serde::Serialize;
+use std::fmt;
 use thinwall_analysis::{FeatureId, StiffnessKind, VolumeType};
 use thinwall_classify::ProductAdjacency;
 use thinwall_connect::Connection;
@@ -82,7 +83,7 @@ pub enum SizeClass {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Layer {
     /// `V1`, `V2`, … in plan order.
-    pub id: String,
+    pub id: VolumeId,
     /// The wall it helps create.
     pub owner: FeatureId,
     /// Which side of the owner (0 or 1, as the recognition's `sides`).
@@ -144,7 +145,7 @@ pub struct Piece {
 pub struct RemovalFeature {
     /// `V…` for layers (their step-approach id), `B…` bulk, `X…` other
     /// set-up.
-    pub id: String,
+    pub id: VolumeId,
     /// The stiffness feature it belongs to (none: around the part).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub owner: Option<FeatureId>,
@@ -212,8 +213,8 @@ pub struct FeatureType {
 /// `before` comes out before `after`, and why.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FeatureRelation {
-    pub before: String,
-    pub after: String,
+    pub before: VolumeId,
+    pub after: VolumeId,
     pub why: String,
 }
 
@@ -222,7 +223,7 @@ pub struct FeatureRelation {
 pub struct FeatureSequence {
     pub relations: Vec<FeatureRelation>,
     pub dropped: Vec<FeatureRelation>,
-    pub order: Vec<String>,
+    pub order: Vec<VolumeId>,
 }
 
 /// A feature as the plan lists it.
@@ -313,8 +314,8 @@ pub struct RemovalSummary {
 /// A `before` relation between two layers and why.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LayerConstraint {
-    pub before: String,
-    pub after: String,
+    pub before: VolumeId,
+    pub after: VolumeId,
     pub why: String,
 }
 
@@ -336,5 +337,56 @@ fn unavailable_text<S: serde::Serializer>(
     match e {
         Some(e) => s.serialize_str(&format!("removal.{}: {e}", e.code())),
         None => s.serialize_none(),
+    }
+}
+
+/// The id of a step-approach layer or of a removal (machining) feature:
+/// `V3` (a layer, and the feature it becomes), `B1` (bulk), `X2` (another
+/// set-up's). Typed so that it is never taken for a stiffness feature's
+/// id; written as its text.
+/// (The default, empty, is a placeholder until the id is given.)
+#[derive(Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(transparent)]
+pub struct VolumeId(String);
+
+impl VolumeId {
+    /// The `n`-th id with `prefix` (`V`, `B`, `X`).
+    pub fn new(prefix: char, n: usize) -> Self {
+        Self(format!("{prefix}{n}"))
+    }
+
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl fmt::Display for VolumeId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::ops::Deref for VolumeId {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::borrow::Borrow<str> for VolumeId {
+    fn borrow(&self) -> &str {
+        &self.0
+    }
+}
+
+impl PartialEq<str> for VolumeId {
+    fn eq(&self, other: &str) -> bool {
+        self.0 == other
+    }
+}
+
+impl PartialEq<&str> for VolumeId {
+    fn eq(&self, other: &&str) -> bool {
+        self.0 == *other
     }
 }

@@ -302,7 +302,7 @@ pub fn feature_step(
         .filter_map(|s| feature_solid(&plan.frame, s))
         .collect();
     let skipped = f.solids.len() - solids.len();
-    (solids_step(&solids, &f.id), skipped)
+    (solids_step(&solids, f.id.as_str()), skipped)
 }
 
 /// Solids as one STEP text named `name`.
@@ -331,7 +331,7 @@ pub fn feature_part(
     if skipped == f.solids.len() {
         return None;
     }
-    thinwall_step::read_bytes(text.as_bytes(), &f.id)
+    thinwall_step::read_bytes(text.as_bytes(), f.id.as_str())
         .ok()
         .map(|(part, _)| part)
 }

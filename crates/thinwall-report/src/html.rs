@@ -163,12 +163,12 @@ pub fn plan_page(title: &str, a: &PartAnalysis, report: &RecognitionReport, plan
         .iter()
         .map(|f| match thinwall_plan::volumes::feature_part(plan, f) {
             Some(p) => VolumeGeometry {
-                id: f.id.clone(),
+                id: f.id.to_string(),
                 geometry: Some(geometry(&p, &part_mesh(&p))),
                 note: None,
             },
             None => VolumeGeometry {
-                id: f.id.clone(),
+                id: f.id.to_string(),
                 geometry: None,
                 note: Some("its solids (over a cone) are not written yet".to_string()),
             },

@@ -80,7 +80,7 @@ fn removal_text(plan: &Plan, s: &mut String) {
                     .get(id.as_str())
                     .is_some_and(|f| f.owner == Some(w.id))
             })
-            .map(String::as_str)
+            .map(|id| id.as_str())
             .collect();
         if !ids.is_empty() {
             let _ = writeln!(s, "  {:<5}{}", w.id, ids.join(" "));
