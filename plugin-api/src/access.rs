@@ -4,8 +4,8 @@
 //! `thinwall access`.
 
 use crate::error::{construct, count, free, guard, json_into, null, study_failure, tw_status};
-use crate::options::tw_options;
-use crate::part::tw_part;
+use crate::options::{options_or_default, tw_options};
+use crate::part::{part_ref, tw_part};
 use std::ffi::c_char;
 use thinwall_access::reach::Tool;
 use thinwall_access::Nature;
@@ -44,12 +44,8 @@ pub unsafe extern "C" fn tw_access(
     out: *mut *mut tw_access_result,
 ) -> tw_status {
     construct(out, || {
-        if part.is_null() {
-            return Err(null("part"));
-        }
-        let defaults = tw_options::default();
-        let o = if opt.is_null() { &defaults } else { &*opt };
-        let p = &*part;
+        let p = part_ref(part)?;
+        let o = options_or_default(opt);
         let mut request = AccessRequest::new(o.request.setup.clone());
         // 0 asks for the default of either value.
         if tool_diameter != 0.0 {

@@ -4,8 +4,8 @@
 use crate::error::{
     construct, count, cstring, free, json_into, null, string_at, study_failure, tw_status,
 };
-use crate::options::tw_options;
-use crate::part::tw_part;
+use crate::options::{options_or_default, tw_options};
+use crate::part::{part_ref, tw_part};
 use std::ffi::{c_char, CString};
 use thinwall_report::ClassificationReport;
 
@@ -33,9 +33,7 @@ pub unsafe extern "C" fn tw_classify(
     out: *mut *mut tw_classification,
 ) -> tw_status {
     construct(out, || {
-        if part.is_null() {
-            return Err(null("part"));
-        }
+        let p = part_ref(part)?;
         if volumes.is_null() && n_volumes > 0 {
             return Err(null("volumes"));
         }
@@ -59,9 +57,7 @@ pub unsafe extern "C" fn tw_classify(
         let pairs: Vec<(usize, usize)> = (0..n_before)
             .map(|k| (*before.add(2 * k), *before.add(2 * k + 1)))
             .collect();
-        let defaults = tw_options::default();
-        let o = if opt.is_null() { &defaults } else { &*opt };
-        let p = &*part;
+        let o = options_or_default(opt);
         let request = thinwall_study::ClassifyRequest {
             setup: o.request.setup.clone(),
             volumes: vols,

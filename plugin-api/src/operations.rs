@@ -6,8 +6,8 @@
 use crate::error::{
     construct, count, cstring, guard, json_into, null, string_at, study_failure, tw_status,
 };
-use crate::options::tw_options;
-use crate::part::tw_part;
+use crate::options::{options_or_default, tw_options};
+use crate::part::{part_ref, tw_part};
 use std::ffi::{c_char, CStr, CString};
 use thinwall_ops::operations::Stage;
 use thinwall_ops::ToolLibrary;
@@ -71,12 +71,8 @@ pub unsafe extern "C" fn tw_operations(
     out: *mut *mut tw_operations_result,
 ) -> tw_status {
     construct(out, || {
-        if part.is_null() {
-            return Err(null("part"));
-        }
-        let defaults = tw_options::default();
-        let o = if opt.is_null() { &defaults } else { &*opt };
-        let p = &*part;
+        let p = part_ref(part)?;
+        let o = options_or_default(opt);
         let mut request = OperationsRequest::new(o.request.setup.clone());
         request.tools = library(tools_toml)?;
         // 0 asks for the largest end mill's depth.

@@ -25,6 +25,17 @@ impl Default for tw_options {
     }
 }
 
+/// The options at `opt`, or the defaults for NULL.
+pub(crate) unsafe fn options_or_default<'a>(
+    opt: *const tw_options,
+) -> std::borrow::Cow<'a, tw_options> {
+    if opt.is_null() {
+        std::borrow::Cow::Owned(tw_options::default())
+    } else {
+        std::borrow::Cow::Borrowed(&*opt)
+    }
+}
+
 /// New options with the defaults; free with `tw_options_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_new(out: *mut *mut tw_options) -> tw_status {

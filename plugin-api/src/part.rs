@@ -10,6 +10,14 @@ pub struct tw_part {
     pub(crate) loaded: thinwall_study::LoadedPart,
 }
 
+/// The part at `part`; NULL is an error naming the argument.
+pub(crate) unsafe fn part_ref<'a>(part: *const tw_part) -> Result<&'a tw_part, Failure> {
+    if part.is_null() {
+        return Err(null("part"));
+    }
+    Ok(&*part)
+}
+
 impl tw_part {
     /// A study of the part for one call (no worker threads unless
     /// `parallel`).

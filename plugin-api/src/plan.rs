@@ -4,8 +4,8 @@
 use crate::error::{
     construct, count, cstring, free, guard, json_into, null, string_at, study_failure, tw_status,
 };
-use crate::options::tw_options;
-use crate::part::tw_part;
+use crate::options::{options_or_default, tw_options};
+use crate::part::{part_ref, tw_part};
 use std::ffi::{c_char, CStr, CString};
 use thinwall_plan::{Plan, Relation, RuleSet};
 
@@ -105,9 +105,7 @@ pub unsafe extern "C" fn tw_plan(
     out: *mut *mut tw_plan_result,
 ) -> tw_status {
     construct(out, || {
-        if part.is_null() {
-            return Err(null("part"));
-        }
+        let p = part_ref(part)?;
         let rules = if rules_toml.is_null() {
             RuleSet::default_rules()
         } else {
@@ -120,9 +118,7 @@ pub unsafe extern "C" fn tw_plan(
             RuleSet::from_toml(text, "rules")
                 .map_err(|e| (tw_status::TW_ERR_INVALID_CONFIG, e.to_string()))?
         };
-        let defaults = tw_options::default();
-        let o = if opt.is_null() { &defaults } else { &*opt };
-        let p = &*part;
+        let o = options_or_default(opt);
         let study = p.study(o.request.parallel);
         let request = thinwall_study::PlanRequest {
             recognize: o.request.clone(),

@@ -4,8 +4,8 @@
 use crate::error::{
     construct, count, cstring, free, guard, json_into, null, string_at, study_failure, tw_status,
 };
-use crate::options::tw_options;
-use crate::part::tw_part;
+use crate::options::{options_or_default, tw_options};
+use crate::part::{part_ref, tw_part};
 use std::ffi::{c_char, CString};
 use thinwall_connect::Connection;
 use thinwall_report::RecognitionReport;
@@ -40,12 +40,8 @@ pub unsafe extern "C" fn tw_recognize(
     out: *mut *mut tw_result,
 ) -> tw_status {
     construct(out, || {
-        if part.is_null() {
-            return Err(null("part"));
-        }
-        let defaults = tw_options::default();
-        let o = if opt.is_null() { &defaults } else { &*opt };
-        let p = &*part;
+        let p = part_ref(part)?;
+        let o = options_or_default(opt);
         let study = p.study(o.request.parallel);
         let report = thinwall_study::recognize(&study, &o.request)
             .map_err(study_failure)?
