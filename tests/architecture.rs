@@ -163,11 +163,6 @@ fn module_file(dir: &Path, names: &[&str]) -> Option<PathBuf> {
 /// (inside `{…}` lists too).
 fn references(src: &Path, file: &Path) -> BTreeSet<PathBuf> {
     let text = read(file);
-    let own_dir = if file.ends_with("mod.rs") {
-        file.parent().unwrap().to_path_buf()
-    } else {
-        file.with_extension("")
-    };
     let parent = if file.ends_with("mod.rs") {
         file.parent().unwrap().parent().unwrap().to_path_buf()
     } else {
@@ -215,7 +210,6 @@ fn references(src: &Path, file: &Path) -> BTreeSet<PathBuf> {
         }
     }
     out.remove(file);
-    let _ = own_dir;
     out
 }
 

@@ -12,7 +12,7 @@ use thinwall_plan::{Plan, Relation, RuleSet};
 /// A plan (opaque). Immutable; safe to share between threads. Strings it
 /// returns live as long as it does.
 pub struct tw_plan_result {
-    plan: Plan,
+    plan: std::sync::Arc<Plan>,
     /// Per constraint: the feature machined first (or with the other), the
     /// other, the relation.
     pairs: Vec<(CString, CString, tw_relation)>,
@@ -125,7 +125,7 @@ pub unsafe extern "C" fn tw_plan(
             rules,
         };
         let planned = thinwall_study::plan(&study, &request).map_err(study_failure)?;
-        let plan = planned.plan.as_ref().clone();
+        let plan = planned.plan;
         let pairs = plan
             .sequence
             .iter()

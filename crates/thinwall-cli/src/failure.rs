@@ -19,21 +19,23 @@ impl Failure {
         Failure::Usage(e.to_string())
     }
 
-    pub fn exit_code(&self) -> u8 {
+    /// The kind, as the library names it (its exit code and name).
+    fn error_kind(&self) -> thinwall_study::ErrorKind {
+        use thinwall_study::ErrorKind;
         match self {
-            Failure::Usage(_) => 2,
-            Failure::Input(_) => 1,
-            Failure::Internal(_) => 3,
+            Failure::Usage(_) => ErrorKind::Usage,
+            Failure::Input(_) => ErrorKind::Input,
+            Failure::Internal(_) => ErrorKind::Internal,
         }
+    }
+
+    pub fn exit_code(&self) -> u8 {
+        self.error_kind().exit_code()
     }
 
     /// `usage`, `input` or `internal`.
     pub fn kind(&self) -> &'static str {
-        match self {
-            Failure::Usage(_) => "usage",
-            Failure::Input(_) => "input",
-            Failure::Internal(_) => "internal",
-        }
+        self.error_kind().name()
     }
 
     pub fn message(&self) -> &str {

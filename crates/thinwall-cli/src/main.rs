@@ -158,30 +158,35 @@ fn recognize(
     emit(recognized.into(), format, output)
 }
 
-/// The sequence rules of `--rules`, or the shipped ones.
+/// The sequence rules of `--rules`, or the shipped ones. An unreadable
+/// file is an input failure.
 fn rules_of(path: Option<&Path>) -> Result<thinwall_plan::RuleSet, Failure> {
-    let Some(path) = path else {
-        return Ok(thinwall_plan::RuleSet::default_rules());
-    };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-    Ok(
-        thinwall_plan::RuleSet::from_toml(&text, &path.display().to_string())
-            .map_err(study::StudyError::from)?,
-    )
+    match path {
+        None => Ok(thinwall_plan::RuleSet::default_rules()),
+        Some(p) => Ok(thinwall_plan::RuleSet::from_toml(
+            &text_of(p, Failure::Input)?,
+            &p.display().to_string(),
+        )
+        .map_err(study::StudyError::from)?),
+    }
 }
 
-/// The tool library of `--tools`, or the shipped one.
+/// The tool library of `--tools`, or the shipped one. An unreadable file
+/// is a usage failure (as it always was).
 fn tools_of(path: Option<&Path>) -> Result<thinwall_ops::ToolLibrary, Failure> {
-    let Some(path) = path else {
-        return Ok(thinwall_ops::ToolLibrary::default_tools());
-    };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Usage(format!("{}: {e}", path.display())))?;
-    Ok(
-        thinwall_ops::ToolLibrary::from_toml(&text, &path.display().to_string())
-            .map_err(study::StudyError::from)?,
-    )
+    match path {
+        None => Ok(thinwall_ops::ToolLibrary::default_tools()),
+        Some(p) => Ok(thinwall_ops::ToolLibrary::from_toml(
+            &text_of(p, Failure::Usage)?,
+            &p.display().to_string(),
+        )
+        .map_err(study::StudyError::from)?),
+    }
+}
+
+/// The text of a settings file, or `failure` naming it.
+fn text_of(path: &Path, failure: fn(String) -> Failure) -> Result<String, Failure> {
+    std::fs::read_to_string(path).map_err(|e| failure(format!("{}: {e}", path.display())))
 }
 
 /// A progress bar on a terminal's stderr (nothing otherwise).

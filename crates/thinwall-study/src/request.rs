@@ -33,17 +33,16 @@ impl PlanRequest {
 }
 
 /// `access`: flank milling and reach of every face with a tool and its
-/// holder, in a set-up; the walls whose sides are judged come from
-/// `walls` (a recognition without reach of its own).
+/// holder, in the set-up of `walls`: the recognition (without reach of its
+/// own) whose wall sides are judged.
 #[derive(Clone, Debug)]
 pub struct AccessRequest {
-    pub setup: Setup,
     pub tool: Tool,
     /// Widen the unreachable zones by the tool's radius.
     pub tool_radius: bool,
     /// Share of a face that must be reached for it to be advisable, 0..=1.
     pub threshold: f64,
-    /// The recognition the walls come from (its set-up is `setup`).
+    /// The recognition the walls come from; its set-up is the access's.
     pub walls: RecognizeRequest,
 }
 
@@ -53,30 +52,28 @@ impl AccessRequest {
         let flank = FlankOptions::default();
         Self {
             walls: RecognizeRequest {
-                setup: setup.clone(),
+                setup,
                 allow_open: true,
                 ..Default::default()
             },
-            setup,
             tool: Tool::new(flank.tool_diameter),
             tool_radius: flank.tool_radius,
             threshold: flank.threshold,
         }
     }
 
+    /// The set-up (the walls' recognition's).
+    pub fn setup(&self) -> &Setup {
+        &self.walls.setup
+    }
+
     pub fn check(&self) -> Result<(), StudyError> {
-        self.setup.validate()?;
+        self.setup().validate()?;
         self.tool.check()?;
         if !(0.0..=1.0).contains(&self.threshold) {
             return Err(StudyError::invalid(
                 "threshold",
                 format!("must lie between 0 and 1, got {}", self.threshold),
-            ));
-        }
-        if self.walls.setup != self.setup {
-            return Err(StudyError::invalid(
-                "walls",
-                "must be recognized in the access set-up",
             ));
         }
         self.walls.check().map_err(StudyError::Request)

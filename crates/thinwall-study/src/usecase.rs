@@ -140,12 +140,12 @@ pub fn access_observed<'p>(
     done: impl Fn(usize, usize) + Sync,
 ) -> Result<Accessed<'p>, StudyError> {
     req.check()?;
-    let at = study.at(&req.setup)?;
+    let at = study.at(req.setup())?;
     let a = &at.analysis;
     let faces = thinwall_access::flank_milling(a, a.mesh(), &req.flank());
     let opts = ReachOptions {
         tool: req.tool.clone(),
-        machine: req.setup.machine,
+        machine: req.setup().machine,
         largest_tool: true,
     };
     let reached = reach::reach_observed(a, a.mesh(), &opts, |_| true, done)?;
@@ -153,11 +153,11 @@ pub fn access_observed<'p>(
     let reach = ReachResult::new(a, reached, &outcome, req.tool.diameter);
     let settings = ReachSettings {
         tool: req.tool.clone(),
-        machine: req.setup.machine,
+        machine: req.setup().machine,
     };
     let report = AccessReport::new(
         study.name(),
-        req.setup.up,
+        req.setup().up,
         req.flank(),
         faces,
         settings,
