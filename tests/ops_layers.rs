@@ -257,7 +257,7 @@ fn operations_keep_their_order_and_add_up() {
         let holes =
             thinwall_ops::drilling::hole_sites(&common::features_in_setup(&a), &r.frame, &lib);
         drilled_holes += holes.iter().filter(|h| h.drill.is_some()).count();
-        let plan = operations(&r, &lib, None, &holes);
+        let plan = operations(&r, &lib, None, &holes, serial());
         let what = path.display().to_string();
         for op in &plan.operations {
             assert!(
@@ -365,4 +365,14 @@ fn operations_keep_their_order_and_add_up() {
         "OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes, {wall_finishes} wall finishes, {drilled_holes} holes drilled"
     );
     assert!(ran >= 30);
+}
+
+/// Work on the calling thread, with no time limit.
+fn serial() -> thinwall_analysis::parallel::Work<'static> {
+    static NO_LIMIT: std::sync::OnceLock<thinwall_analysis::parallel::Budget> =
+        std::sync::OnceLock::new();
+    thinwall_analysis::parallel::Work {
+        parallel: false,
+        budget: NO_LIMIT.get_or_init(Default::default),
+    }
 }

@@ -111,6 +111,9 @@ typedef enum tw_status {
   // that is no graph over the set-up plane, for operations); the
   // message names the face.
   TW_ERR_UNSUPPORTED = 14,
+  // The input or the work it asks for exceeds a budget (file size,
+  // faces placed, time); the message names the limit.
+  TW_ERR_BUDGET_EXCEEDED = 15,
   // Thinwall failed internally; the message says how.
   TW_ERR_INTERNAL = 98,
   // Thinwall panicked; the panic was caught at the boundary.

@@ -43,7 +43,7 @@ pub unsafe extern "C" fn tw_access(
     threshold: f64,
     out: *mut *mut tw_access_result,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_access", out, || {
         let p = part_ref(part)?;
         let o = options_or_default(opt);
         let mut request = AccessRequest::new(o.request.setup.clone());
@@ -78,7 +78,9 @@ pub unsafe extern "C" fn tw_access_to_json(
     result: *const tw_access_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(result, out_json, |r| r.report.to_json())
+    json_into("tw_access_to_json", result, out_json, |r| {
+        r.report.to_json()
+    })
 }
 
 /// Number of planar faces judged (0 for NULL).
@@ -100,7 +102,7 @@ pub unsafe extern "C" fn tw_access_face(
     reached: *mut f64,
     advisable: *mut bool,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_access_face", || {
         if result.is_null() {
             return Err(null("result"));
         }
@@ -154,7 +156,7 @@ pub unsafe extern "C" fn tw_access_reach(
     unreachable_mm2: *mut f64,
     largest_tool_mm: *mut f64,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_access_reach", || {
         if result.is_null() {
             return Err(null("result"));
         }

@@ -32,7 +32,7 @@ pub unsafe extern "C" fn tw_classify(
     opt: *const tw_options,
     out: *mut *mut tw_classification,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_classify", out, || {
         let p = part_ref(part)?;
         if volumes.is_null() && n_volumes > 0 {
             return Err(null("volumes"));
@@ -119,7 +119,9 @@ pub unsafe extern "C" fn tw_classification_to_json(
     res: *const tw_classification,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(res, out_json, |r| r.report.to_json())
+    json_into("tw_classification_to_json", res, out_json, |r| {
+        r.report.to_json()
+    })
 }
 
 /// Free a classification. NULL is allowed.

@@ -42,6 +42,9 @@ pub enum tw_status {
     /// that is no graph over the set-up plane, for operations); the
     /// message names the face.
     TW_ERR_UNSUPPORTED = 14,
+    /// The input or the work it asks for exceeds a budget (file size,
+    /// faces placed, time); the message names the limit.
+    TW_ERR_BUDGET_EXCEEDED = 15,
     /// Thinwall failed internally; the message says how.
     TW_ERR_INTERNAL = 98,
     /// Thinwall panicked; the panic was caught at the boundary.
@@ -70,10 +73,15 @@ pub extern "C" fn tw_last_error_message() -> *const c_char {
     std::panic::catch_unwind(|| LAST_ERROR.with(|e| e.borrow().as_ptr())).unwrap_or(EMPTY.as_ptr())
 }
 
-/// Run `body` inside a panic boundary: a panic becomes `TW_ERR_PANIC` with
-/// its message, an `Err` its status and message; success clears the error.
-pub(crate) fn guard(body: impl FnOnce() -> Result<(), (tw_status, String)>) -> tw_status {
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
+/// Run `body` (the C function `stage`) inside a panic boundary: a panic
+/// becomes `TW_ERR_PANIC` with a message naming the stage and where it
+/// happened (and the file, when it happened in a use case), an `Err` its
+/// status and message; success clears the error. Nothing is printed.
+pub(crate) fn guard(
+    stage: &'static str,
+    body: impl FnOnce() -> Result<(), (tw_status, String)>,
+) -> tw_status {
+    match thinwall_study::contained(stage, "libthinwall", || Ok(body())) {
         Ok(Ok(())) => {
             clear_error();
             tw_status::TW_OK
@@ -83,12 +91,7 @@ pub(crate) fn guard(body: impl FnOnce() -> Result<(), (tw_status, String)>) -> t
             status
         }
         Err(panic) => {
-            let m = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
-            set_error(format!("internal panic: {m}"));
+            set_error(panic.to_string());
             tw_status::TW_ERR_PANIC
         }
     }
@@ -108,13 +111,14 @@ pub(crate) type Failure = (tw_status, String);
 /// A constructor's boundary: `*out` is NULL unless `make` succeeds, and then
 /// owns the new object.
 pub(crate) unsafe fn construct<T>(
+    stage: &'static str,
     out: *mut *mut T,
     make: impl FnOnce() -> Result<T, Failure>,
 ) -> tw_status {
     if !out.is_null() {
         *out = std::ptr::null_mut();
     }
-    guard(|| {
+    guard(stage, || {
         if out.is_null() {
             return Err(null("out"));
         }
@@ -127,6 +131,7 @@ pub(crate) unsafe fn construct<T>(
 /// `*out_json` = a new string (free with `tw_string_free`) made from `*obj`;
 /// NULL on failure.
 pub(crate) unsafe fn json_into<T>(
+    stage: &'static str,
     obj: *const T,
     out_json: *mut *mut c_char,
     json: impl FnOnce(&T) -> String,
@@ -134,7 +139,7 @@ pub(crate) unsafe fn json_into<T>(
     if !out_json.is_null() {
         *out_json = std::ptr::null_mut();
     }
-    guard(|| {
+    guard(stage, || {
         if out_json.is_null() {
             return Err(null("out_json"));
         }
@@ -190,7 +195,10 @@ fn read_status(e: &thinwall_step::StepError) -> tw_status {
         E::OpenShell { .. }
         | E::IdMismatch { .. }
         | E::CyclicAssembly { .. }
+        | E::CyclicReference { .. }
+        | E::BadNumber { .. }
         | E::TooManyInstances { .. } => tw_status::TW_ERR_INVALID_PART,
+        E::BudgetExceeded { .. } => tw_status::TW_ERR_BUDGET_EXCEEDED,
         _ => tw_status::TW_ERR_INTERNAL,
     }
 }
@@ -238,11 +246,7 @@ pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
         S::Operations(O::NoEndMill { .. }) => tw_status::TW_ERR_INVALID_CONFIG,
         S::Operations(O::Removal(_) | O::NoPlan(_)) => tw_status::TW_ERR_UNSUPPORTED,
         S::Classify(c) => classify_status(c),
+        S::Panic { .. } => tw_status::TW_ERR_PANIC,
     };
     (status, e.to_string())
-}
-
-/// The status of a read error.
-pub(crate) fn read_failure(e: thinwall_step::StepError) -> Failure {
-    (read_status(&e), e.to_string())
 }

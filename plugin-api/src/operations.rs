@@ -70,7 +70,7 @@ pub unsafe extern "C" fn tw_operations(
     axial_depth: f64,
     out: *mut *mut tw_operations_result,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_operations", out, || {
         let p = part_ref(part)?;
         let o = options_or_default(opt);
         let mut request = OperationsRequest::new(o.request.setup.clone());
@@ -104,7 +104,9 @@ pub unsafe extern "C" fn tw_operations_to_json(
     result: *const tw_operations_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(result, out_json, |r| r.report.to_json())
+    json_into("tw_operations_to_json", result, out_json, |r| {
+        r.report.to_json()
+    })
 }
 
 /// Number of operations, in their order (0 for NULL or nothing to remove).
@@ -121,7 +123,7 @@ pub unsafe extern "C" fn tw_operations_tool_changes(
     changes: *mut usize,
     plain: *mut usize,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_operations_tool_changes", || {
         if result.is_null() {
             return Err(null("result"));
         }
@@ -153,7 +155,7 @@ pub unsafe extern "C" fn tw_operation(
     volume_mm3: *mut f64,
     time_min: *mut f64,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_operation", || {
         if result.is_null() {
             return Err(null("result"));
         }

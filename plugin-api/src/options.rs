@@ -39,7 +39,7 @@ pub(crate) unsafe fn options_or_default<'a>(
 /// New options with the defaults; free with `tw_options_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_options_new(out: *mut *mut tw_options) -> tw_status {
-    construct(out, || Ok(tw_options::default()))
+    construct("tw_options_new", out, || Ok(tw_options::default()))
 }
 
 /// Change options; a change that fails (or panics) leaves them as they were.
@@ -47,7 +47,7 @@ unsafe fn with(
     opt: *mut tw_options,
     f: impl FnOnce(&mut tw_options) -> Result<(), String>,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_options_set", || {
         if opt.is_null() {
             return Err(null("opt"));
         }

@@ -1,8 +1,7 @@
 //! `tw_part`: a STEP part read into memory with its adjacency graph.
 
-use crate::error::{construct, count, free, null, read_failure, tw_status, Failure};
+use crate::error::{construct, count, free, null, study_failure, tw_status, Failure};
 use std::ffi::{c_char, CStr};
-use thinwall_brep::Part;
 
 /// A part read from STEP (opaque). Immutable; safe to share between threads.
 pub struct tw_part {
@@ -26,14 +25,13 @@ impl tw_part {
     }
 }
 
-/// A part from a read, with its adjacency graph.
+/// A part from a read (a panic in it named with the file), with its
+/// adjacency graph.
 fn finish(
-    read: Result<(Part, thinwall_step::ReadReport), thinwall_step::StepError>,
-    name: String,
+    read: Result<thinwall_study::LoadedPart, thinwall_study::StudyError>,
 ) -> Result<tw_part, Failure> {
-    let (part, read) = read.map_err(read_failure)?;
     Ok(tw_part {
-        loaded: thinwall_study::LoadedPart::new(name, part, read),
+        loaded: read.map_err(study_failure)?,
     })
 }
 
@@ -44,7 +42,7 @@ pub unsafe extern "C" fn tw_part_load_file(
     path: *const c_char,
     out: *mut *mut tw_part,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_part_load_file", out, || {
         if path.is_null() {
             return Err(null("path"));
         }
@@ -54,7 +52,7 @@ pub unsafe extern "C" fn tw_part_load_file(
                 "path is not UTF-8".to_string(),
             )
         })?;
-        finish(thinwall_step::read_file(p), p.to_string())
+        finish(thinwall_study::LoadedPart::read_file(p))
     })
 }
 
@@ -66,15 +64,12 @@ pub unsafe extern "C" fn tw_part_load_memory(
     len: usize,
     out: *mut *mut tw_part,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_part_load_memory", out, || {
         if data.is_null() {
             return Err(null("data"));
         }
         let bytes = std::slice::from_raw_parts(data, len);
-        finish(
-            thinwall_step::read_bytes(bytes, "<memory>"),
-            "<memory>".to_string(),
-        )
+        finish(thinwall_study::LoadedPart::read_bytes(bytes, "<memory>"))
     })
 }
 

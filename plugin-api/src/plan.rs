@@ -104,7 +104,7 @@ pub unsafe extern "C" fn tw_plan(
     rules_toml: *const c_char,
     out: *mut *mut tw_plan_result,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_plan", out, || {
         let p = part_ref(part)?;
         let rules = if rules_toml.is_null() {
             RuleSet::default_rules()
@@ -165,7 +165,9 @@ pub unsafe extern "C" fn tw_plan_to_json(
     plan: *const tw_plan_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(plan, out_json, |p| thinwall_report::plan::to_json(&p.plan))
+    json_into("tw_plan_to_json", plan, out_json, |p| {
+        thinwall_report::plan::to_json(&p.plan)
+    })
 }
 
 /// Number of sequence constraints in force (0 for NULL).
@@ -185,7 +187,7 @@ pub unsafe extern "C" fn tw_plan_sequence_pair(
     after: *mut *const c_char,
     relation: *mut tw_relation,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_plan_sequence_pair", || {
         if plan.is_null() {
             return Err(null("plan"));
         }
@@ -238,7 +240,7 @@ pub unsafe extern "C" fn tw_plan_feature(
     order_index: *mut usize,
     volume_mm3: *mut f64,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_plan_feature", || {
         if plan.is_null() {
             return Err(null("plan"));
         }
@@ -280,7 +282,7 @@ pub unsafe extern "C" fn tw_plan_feature_step(
     if !out_step.is_null() {
         *out_step = std::ptr::null_mut();
     }
-    guard(|| {
+    guard("tw_plan_feature_step", || {
         if plan.is_null() {
             return Err(null("plan"));
         }

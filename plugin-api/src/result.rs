@@ -39,7 +39,7 @@ pub unsafe extern "C" fn tw_recognize(
     opt: *const tw_options,
     out: *mut *mut tw_result,
 ) -> tw_status {
-    construct(out, || {
+    construct("tw_recognize", out, || {
         let p = part_ref(part)?;
         let o = options_or_default(opt);
         let study = p.study(o.request.parallel);
@@ -93,7 +93,7 @@ pub unsafe extern "C" fn tw_result_to_json(
     res: *const tw_result,
     out_json: *mut *mut c_char,
 ) -> tw_status {
-    json_into(res, out_json, |r| r.report.to_json())
+    json_into("tw_result_to_json", res, out_json, |r| r.report.to_json())
 }
 
 /// Number of stiffness features (0 for NULL).
@@ -130,7 +130,7 @@ pub unsafe extern "C" fn tw_result_feature_wall(
     length: *mut f64,
     thin: *mut bool,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_result_feature_wall", || {
         if res.is_null() {
             return Err(null("res"));
         }
@@ -177,7 +177,7 @@ pub unsafe extern "C" fn tw_result_feature_faces(
     cap: usize,
     len: *mut usize,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_result_feature_faces", || {
         if res.is_null() {
             return Err(null("res"));
         }
@@ -224,7 +224,7 @@ pub unsafe extern "C" fn tw_result_connection(
     first: *mut *const c_char,
     second: *mut *const c_char,
 ) -> tw_status {
-    guard(|| {
+    guard("tw_result_connection", || {
         if res.is_null() {
             return Err(null("res"));
         }

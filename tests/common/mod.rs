@@ -178,3 +178,4 @@ pub fn faces_reversed(text: &str) -> String {
     ids.reverse();
     format!("{}{}{}", &text[..start], ids.join(","), &text[end..])
 }
+pub mod mutate;

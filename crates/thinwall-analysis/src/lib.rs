@@ -22,6 +22,7 @@ pub mod boolean;
 pub mod components;
 pub mod measure;
 pub mod min_rect;
+pub mod parallel;
 pub mod polygon;
 pub mod setup;
 pub mod vocabulary;
@@ -96,6 +97,7 @@ pub struct PartAnalysis<'a> {
     smooth_degree: OnceLock<Vec<usize>>,
     mesh: OnceLock<Mesh>,
     parallel: bool,
+    budget: parallel::Budget,
 }
 
 impl<'a> PartAnalysis<'a> {
@@ -126,6 +128,7 @@ impl<'a> PartAnalysis<'a> {
             smooth_degree: OnceLock::new(),
             mesh: OnceLock::new(),
             parallel: true,
+            budget: parallel::Budget::default(),
         }
     }
 
@@ -135,6 +138,25 @@ impl<'a> PartAnalysis<'a> {
     pub fn with_parallelism(mut self, parallel: bool) -> Self {
         self.parallel = parallel;
         self
+    }
+
+    /// Whether work on this analysis may use rayon's worker threads.
+    pub fn is_parallel(&self) -> bool {
+        self.parallel
+    }
+
+    /// The deadline of the work running now on this analysis.
+    pub fn budget(&self) -> &parallel::Budget {
+        &self.budget
+    }
+
+    /// How work on this analysis runs: in parallel or not, within its
+    /// budget.
+    pub fn work(&self) -> parallel::Work<'_> {
+        parallel::Work {
+            parallel: self.parallel,
+            budget: &self.budget,
+        }
     }
 
     pub fn part(&self) -> &'a Part {
@@ -175,15 +197,9 @@ impl<'a> PartAnalysis<'a> {
     /// faces in parallel: free-form faces are the costly part; each face's
     /// result does not depend on the others or on the thread).
     pub fn face_props(&self) -> &[FaceProps] {
-        use rayon::prelude::*;
         self.props.get_or_init(|| {
             let ids: Vec<FaceId> = self.part.face_ids().collect();
-            let one = |&f: &FaceId| compute_face_props(self.part, f);
-            if self.parallel {
-                ids.par_iter().map(one).collect()
-            } else {
-                ids.iter().map(one).collect()
-            }
+            self.work().map(&ids, |&f| compute_face_props(self.part, f))
         })
     }
 

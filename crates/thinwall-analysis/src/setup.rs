@@ -11,6 +11,8 @@ use thiserror::Error;
 pub enum SetupError {
     #[error("up direction {0:?} has no length")]
     ZeroUp([f64; 3]),
+    #[error("up direction {0:?} is not three finite numbers")]
+    NotFiniteUp([f64; 3]),
     #[error("tilt limit must be within 0..90 degrees, got {0}")]
     TiltLimit(f64),
 }
@@ -20,6 +22,7 @@ impl SetupError {
     pub fn code(&self) -> &'static str {
         match self {
             SetupError::ZeroUp(_) => "zero_up",
+            SetupError::NotFiniteUp(_) => "not_finite_up",
             SetupError::TiltLimit(_) => "tilt_limit",
         }
     }
@@ -65,7 +68,10 @@ impl Setup {
             placement: None,
         };
         s.validate()?;
-        let u = Vector3::new(up[0], up[1], up[2]).normalize();
+        // Scaled first: a direction such as (1e308, 1e308, 0) has a length
+        // past f64's range.
+        let largest = up.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let u = (Vector3::new(up[0], up[1], up[2]) / largest).normalize();
         Ok(Self {
             up: [u.x, u.y, u.z],
             ..s
@@ -74,8 +80,11 @@ impl Setup {
 
     /// Reject a zero or non-finite up and a tilt limit outside 0..90°.
     pub fn validate(&self) -> Result<(), SetupError> {
-        let n = Vector3::new(self.up[0], self.up[1], self.up[2]).norm();
-        if !(n.is_finite() && n > 1e-9) {
+        if self.up.iter().any(|c| !c.is_finite()) {
+            return Err(SetupError::NotFiniteUp(self.up));
+        }
+        let largest = self.up.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        if largest <= 1e-9 {
             return Err(SetupError::ZeroUp(self.up));
         }
         if let Machine::FiveAxis { tilt_limit_deg } = self.machine {

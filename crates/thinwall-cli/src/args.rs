@@ -23,6 +23,26 @@ fn formats(names: &'static [&'static str]) -> impl TypedValueParser<Value = Form
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+    /// Most seconds a command may work on one part (each part of a
+    /// `batch`); past it the command stops with `budget_exceeded` (exit 1).
+    /// 0 for no limit.
+    #[arg(long, global = true, default_value_t = 600.0)]
+    pub time_limit: f64,
+}
+
+impl Cli {
+    /// The time limit, or a usage failure for a value that is not one.
+    pub fn time_limit(&self) -> Result<Option<std::time::Duration>, Failure> {
+        match self.time_limit {
+            t if t == 0.0 => Ok(None),
+            t if t.is_finite() && t > 0.0 && t <= 1e7 => {
+                Ok(Some(std::time::Duration::from_secs_f64(t)))
+            }
+            t => Err(Failure::Usage(format!(
+                "--time-limit: must be a number of seconds from 0 (no limit) to 1e7, got {t}"
+            ))),
+        }
+    }
 }
 
 #[derive(Subcommand)]
@@ -389,8 +409,10 @@ impl RecognizeFlags {
     pub fn request(self) -> Result<thinwall_study::RecognizeRequest, Failure> {
         let settings = match &self.config {
             Some(path) => {
+                // A settings file that cannot be used is a usage failure,
+                // however it fails (missing, unreadable, not UTF-8, bad TOML).
                 let text = std::fs::read_to_string(path)
-                    .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+                    .map_err(|e| Failure::Usage(format!("--config: {}: {e}", path.display())))?;
                 thinwall_pipeline::Settings::from_toml(&text, &path.display().to_string())
                     .map_err(Failure::usage)?
             }

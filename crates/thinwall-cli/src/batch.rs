@@ -8,12 +8,15 @@ use rayon::prelude::*;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::io::IsTerminal;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 use std::time::Instant;
 use thinwall_report::expect::{compare, CheckTolerance};
 
-/// One line of the summary (`summary.jsonl`).
+/// One line of the summary (`summary.jsonl`, in the order the parts
+/// finish).
 #[derive(Debug, Serialize)]
 pub struct PartLine {
     pub file: String,
@@ -55,6 +58,7 @@ pub fn command(b: Batch) -> Result<(), Failure> {
         .map_err(|e| Failure::Internal(format!("thread pool: {e}")))?;
     let progress = Progress::new(b.inputs.len());
     let names = report_names(&b.inputs);
+    let summary = Summary::create(&b.out)?;
     let t0 = Instant::now();
     let lines: Vec<PartLine> = pool.install(|| {
         // One part a task: parts differ in cost a hundredfold (a few large
@@ -65,6 +69,7 @@ pub fn command(b: Batch) -> Result<(), Failure> {
             .with_max_len(1)
             .map(|(path, name)| {
                 let line = one(&b, path, name);
+                summary.append(&line);
                 progress.done(&line);
                 line
             })
@@ -72,7 +77,7 @@ pub fn command(b: Batch) -> Result<(), Failure> {
     });
     progress.finish();
     let wall_seconds = t0.elapsed().as_secs_f64();
-    write_summary(&b.out, &lines)?;
+    summary.finish()?;
     print!("{}", table(&lines));
     let failed = lines.iter().filter(|l| !l.ok).count();
     println!(
@@ -160,7 +165,7 @@ struct Done {
 
 fn recognize(b: &Batch, path: &Path, name: &str) -> Result<Done, Failure> {
     let loaded = thinwall_study::LoadedPart::read_file(path)?;
-    let study = thinwall_study::Study::new(&loaded).with_parallelism(b.request.parallel);
+    let study = crate::limits::study(&loaded).with_parallelism(b.request.parallel);
     let recognized = thinwall_study::recognize(&study, &b.request)?;
     let report = &recognized.report;
     let mut features = BTreeMap::new();
@@ -199,14 +204,41 @@ fn differences(expect: &Path, actual: &str) -> Result<Vec<String>, Failure> {
     Ok(d.iter().map(|x| x.to_string()).collect())
 }
 
-fn write_summary(out: &Path, lines: &[PartLine]) -> Result<(), Failure> {
-    let mut text = String::new();
-    for l in lines {
-        text.push_str(&serde_json::to_string(l).map_err(|e| Failure::Internal(e.to_string()))?);
-        text.push('\n');
+/// `summary.jsonl`, a line appended as each part finishes (a batch that
+/// is stopped leaves the lines of the parts it finished).
+struct Summary {
+    path: PathBuf,
+    file: Mutex<Result<std::fs::File, String>>,
+}
+
+impl Summary {
+    fn create(out: &Path) -> Result<Self, Failure> {
+        let path = out.join("summary.jsonl");
+        let file = std::fs::File::create(&path)
+            .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+        Ok(Self {
+            path,
+            file: Mutex::new(Ok(file)),
+        })
     }
-    let file = out.join("summary.jsonl");
-    std::fs::write(&file, text).map_err(|e| Failure::Input(format!("{}: {e}", file.display())))
+
+    /// Append `line`; the first failure to write is kept for [`finish`].
+    fn append(&self, line: &PartLine) {
+        let mut file = self.file.lock().unwrap_or_else(|p| p.into_inner());
+        if let Ok(f) = file.as_mut() {
+            let text = serde_json::to_string(line).unwrap_or_default() + "\n";
+            if let Err(e) = f.write_all(text.as_bytes()).and_then(|()| f.flush()) {
+                *file = Err(e.to_string());
+            }
+        }
+    }
+
+    fn finish(self) -> Result<(), Failure> {
+        match self.file.into_inner().unwrap_or_else(|p| p.into_inner()) {
+            Ok(_) => Ok(()),
+            Err(e) => Err(Failure::Input(format!("{}: {e}", self.path.display()))),
+        }
+    }
 }
 
 /// The summary as a table: file, faces, features by kind, time, and why

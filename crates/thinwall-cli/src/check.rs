@@ -10,7 +10,7 @@ pub fn recognition_json(
     request: &thinwall_study::RecognizeRequest,
 ) -> Result<String, Failure> {
     let loaded = thinwall_study::LoadedPart::read_file(part)?;
-    let study = thinwall_study::Study::new(&loaded);
+    let study = crate::limits::study(&loaded);
     Ok(thinwall_study::recognize(&study, request)?.report.to_json())
 }
 

@@ -66,3 +66,19 @@ impl From<thinwall_step::StepError> for Failure {
         thinwall_study::StudyError::from(e).into()
     }
 }
+
+/// Longest line of an error message printed (a settings file's line or a
+/// file name can be kilobytes long).
+const LONGEST_LINE: usize = 400;
+
+/// `message` with each line cut to [`LONGEST_LINE`] characters.
+pub fn shortened(message: &str) -> String {
+    message
+        .lines()
+        .map(|l| match l.char_indices().nth(LONGEST_LINE) {
+            Some((at, _)) => format!("{}… ({} characters)", &l[..at], l.chars().count()),
+            None => l.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}

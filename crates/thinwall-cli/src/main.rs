@@ -5,21 +5,29 @@ use clap::Parser;
 use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
-use thinwall_study::{self as study, Format, LoadedPart, Rendered, Study};
+use thinwall_study::{self as study, Format, LoadedPart, Rendered};
 
 mod args;
 mod batch;
 mod check;
 mod failure;
+mod limits;
 use args::{Cli, Command};
 use failure::Failure;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match run(cli.command) {
+    let ran = cli.time_limit().and_then(|limit| {
+        limits::set_time_limit(limit);
+        // A panic outside a use case is reported like one inside: exit 3,
+        // one line, no backtrace (unless RUST_BACKTRACE asks for it).
+        study::contained("the command line", "thinwall", || Ok(run(cli.command)))
+            .unwrap_or_else(|e| Err(e.into()))
+    });
+    match ran {
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
-            eprintln!("thinwall: error: {}", failure.message());
+            eprintln!("thinwall: error: {}", failure::shortened(failure.message()));
             ExitCode::from(failure.exit_code())
         }
     }
@@ -29,7 +37,11 @@ fn run(command: Command) -> Result<(), Failure> {
     match command {
         Command::Inspect { part, format } => {
             let loaded = LoadedPart::read_file(&part)?;
-            emit(study::inspect(&Study::new(&loaded))?.into(), format, None)
+            emit(
+                study::inspect(&limits::study(&loaded))?.into(),
+                format,
+                None,
+            )
         }
         Command::Recognize(a) => {
             let request = a.flags.request()?;
@@ -44,11 +56,10 @@ fn run(command: Command) -> Result<(), Failure> {
             let mut request = a.flags.request()?;
             // The parts run in parallel; each runs alone.
             request.parallel = false;
-            let cores = || std::thread::available_parallelism().map_or(1, |n| n.get());
             batch::command(batch::Batch {
                 inputs: a.inputs,
                 out: a.out,
-                jobs: a.jobs.unwrap_or_else(cores),
+                jobs: limits::jobs(a.jobs)?,
                 format: a.format,
                 expect: a.expect,
                 request,
@@ -70,7 +81,7 @@ fn plan(a: args::PlanArgs) -> Result<(), Failure> {
         rules: rules_of(a.rules.as_deref())?,
     };
     let loaded = LoadedPart::read_file(&a.part)?;
-    let s = Study::new(&loaded);
+    let s = limits::study(&loaded);
     let planned = study::plan(&s, &request)?;
     if let Some(dir) = &a.volumes_dir {
         let skipped = study::write_volumes(&planned.plan, dir)?;
@@ -89,7 +100,7 @@ fn access(a: args::AccessArgs) -> Result<(), Failure> {
     request.threshold = a.threshold;
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
-    let s = Study::new(&loaded);
+    let s = limits::study(&loaded);
     let bar = Bar::new(loaded.part.faces.len());
     let accessed = study::access_observed(&s, &request, |_, _| bar.inc())?;
     drop(bar);
@@ -104,7 +115,7 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     request.by_feature = a.by_feature;
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
-    let operated = study::operations(&Study::new(&loaded), &request)?;
+    let operated = study::operations(&limits::study(&loaded), &request)?;
     emit(operated.into(), a.format, a.output.as_deref())
 }
 
@@ -125,7 +136,7 @@ fn classify(a: args::ClassifyArgs) -> Result<(), Failure> {
         volumes,
         before: a.before,
     };
-    let classified = study::classify(&Study::new(&loaded), request)?;
+    let classified = study::classify(&limits::study(&loaded), request)?;
     emit(classified.into(), a.format, a.output.as_deref())
 }
 
@@ -139,11 +150,12 @@ fn recognize(
     output: Option<&Path>,
 ) -> Result<(), Failure> {
     let t0 = std::time::Instant::now();
-    let (model, read) = thinwall_step::read_file(part)?;
+    let name = part.display().to_string();
+    let (model, read) = study::contained("read", &name, || Ok(thinwall_step::read_file(part)?))?;
     let read_seconds = t0.elapsed().as_secs_f64();
-    let loaded = LoadedPart::new(part.display().to_string(), model, read);
+    let loaded = study::contained("read", &name, || Ok(LoadedPart::new(&name, model, read)))?;
     let graph_seconds = t0.elapsed().as_secs_f64() - read_seconds;
-    let s = Study::new(&loaded);
+    let s = limits::study(&loaded);
     let recognized = study::recognize(&s, request)?;
     if verbose {
         eprintln!("{read_seconds:>9.4} s  read");

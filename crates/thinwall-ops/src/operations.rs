@@ -25,8 +25,8 @@ use crate::order::{group_edges, nested, precedence, tool_order};
 use crate::rest::{select, Adjacency, FieldTools, ToolShare};
 use crate::tools::{CuttingTool, ToolLibrary};
 use petgraph::graph::NodeIndex;
-use rayon::prelude::*;
 use serde::Serialize;
+use thinwall_analysis::parallel::Work;
 use thinwall_removal::Removal;
 
 impl Stage {
@@ -243,6 +243,7 @@ pub fn operations(
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
     holes: &[HoleSite],
+    work: Work<'_>,
 ) -> SetupOperations {
     let (mills, a_p) = mills_and_depth(lib, axial_depth_mm);
     let layers = roughing_layers(
@@ -253,7 +254,7 @@ pub fn operations(
         },
     );
     let tol = 1e-6 * r.size.max(1.0);
-    let field_tools = tools_for(&layers, &mills, holes, tol);
+    let field_tools = tools_for(&layers, &mills, holes, tol, work);
     assemble(
         Assembly {
             lib,
@@ -285,19 +286,17 @@ pub(crate) fn tools_for(
     mills: &[&CuttingTool],
     holes: &[HoleSite],
     tol: f64,
+    work: Work<'_>,
 ) -> Vec<Vec<FieldTools>> {
-    layers
-        .par_iter()
-        .map(|l| {
-            l.fields
-                .par_iter()
-                .map(|f| match drilled_by(f, l, holes, tol) {
-                    Some(h) => FieldTools::drilled(&holes[h].id),
-                    None => select(f, mills, &l.floor_region),
-                })
-                .collect()
-        })
-        .collect()
+    work.map(layers, |l| {
+        l.fields
+            .iter()
+            .map(|f| match drilled_by(f, l, holes, tol) {
+                Some(h) => FieldTools::drilled(&holes[h].id),
+                None => select(f, mills, &l.floor_region),
+            })
+            .collect()
+    })
 }
 
 /// What the operations are assembled with besides the layers.

@@ -119,6 +119,7 @@ pub fn by_feature(
     holes: &[HoleSite],
     stock: Rect<f64>,
     size: f64,
+    work: thinwall_analysis::parallel::Work<'_>,
 ) -> SetupOperations {
     let (mills, a_p) = mills_and_depth(lib, axial_depth_mm);
     let smallest = mills.last().map_or(0.0, |t| t.diameter_mm);
@@ -185,7 +186,7 @@ pub fn by_feature(
         .iter()
         .map(|r| (r.before.clone(), r.after.clone()))
         .collect();
-    let field_tools = tools_for(&layers, &mills, holes, tol);
+    let field_tools = tools_for(&layers, &mills, holes, tol, work);
     let mut ops = assemble(
         Assembly {
             lib,

@@ -63,7 +63,10 @@ pub fn plan_setup(
     let size = a.bounding_box().diagonal();
     let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
     let holes = hole_sites(features, &frame, lib);
-    Ok((frame, operations(&removal, lib, axial_depth_mm, &holes)))
+    Ok((
+        frame,
+        operations(&removal, lib, axial_depth_mm, &holes, a.work()),
+    ))
 }
 
 /// The operations of `a`'s set-up along its `plan`: each machining feature
@@ -86,6 +89,6 @@ pub fn along_plan(
     );
     let size = a.bounding_box().diagonal();
     let holes = hole_sites(features, &frame, lib);
-    let ops = crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size);
+    let ops = crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
     Ok((frame, ops))
 }

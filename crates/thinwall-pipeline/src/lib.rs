@@ -206,6 +206,7 @@ pub fn run_on(a: &PartAnalysis, req: &Request) -> Result<Outcome, PipelineError>
     }
     a.face_props();
     clock.lap("face properties");
+    a.work().check();
     // The two recognizers only read the analysis: run them side by side.
     let stiffness = || timed(|| thinwall_recognize::recognize(a, &req.config));
     let m_opts = machining_options(req);
@@ -219,6 +220,7 @@ pub fn run_on(a: &PartAnalysis, req: &Request) -> Result<Outcome, PipelineError>
     clock.record("stiffness features", t_stiff);
     clock.record("machining features", t_mach);
     clock.lap("recognizers (wall time)");
+    a.work().check();
     let mut recognition = recognition;
     let mut structure = thinwall_connect::connect(&recognition, &req.setup, &req.connect);
     structure.validate()?;

@@ -3,7 +3,8 @@
 //! entities, units) stays in here.
 
 use crate::id_scan;
-use crate::{ReadIssue, ReadReport, StepError};
+use crate::references::{self, References};
+use crate::{ReadIssue, ReadLimits, ReadReport, StepError};
 use std::collections::{HashMap, HashSet};
 use step_io::model as m;
 use step_io::scene::{
@@ -44,12 +45,13 @@ type Matrix = [[f64; 4]; 4];
 const MAX_ASSEMBLY_DEPTH: usize = 32;
 /// Deepest nesting of surface curves followed to their 3D curve.
 const MAX_CURVE_NESTING: usize = 16;
-/// Most definition instances an assembly walk places (a definition used
-/// twice at each of 32 levels would otherwise place 2³² of them).
-const MAX_INSTANCES: usize = 100_000;
-
-/// Read `bytes` (named `file` in messages) into a part.
-pub fn read(bytes: &[u8], file: &str) -> Result<(Part, ReadReport), StepError> {
+/// Read `bytes` (named `file` in messages) into a part, within `limits`.
+pub fn read(
+    bytes: &[u8],
+    file: &str,
+    limits: &ReadLimits,
+) -> Result<(Part, ReadReport), StepError> {
+    refuse_cycles(bytes, file)?;
     let (model, report) = step_io::read(bytes).map_err(|e| StepError::Syntax {
         file: file.to_string(),
         message: e.to_string(),
@@ -80,7 +82,7 @@ pub fn read(bytes: &[u8], file: &str) -> Result<(Part, ReadReport), StepError> {
     let dropped: HashSet<u64> = report.dropped.iter().map(|(id, _)| *id).collect();
     let ids = EntityIds::new(bytes, &dropped, &model, file)?;
     let scene = model.scene();
-    let mut builder = Builder::new(&scene, &ids, file, &mut out);
+    let mut builder = Builder::new(&scene, &ids, file, &mut out, limits);
     builder.collect_bodies()?;
     let part = builder.part;
     for w in scene.warnings() {
@@ -98,7 +100,27 @@ pub fn read(bytes: &[u8], file: &str) -> Result<(Part, ReadReport), StepError> {
     if part.bodies.is_empty() {
         return Err(no_brep(&model, file, &out));
     }
+    crate::sanity::check(&part, file)?;
     Ok((part, out))
+}
+
+/// Refuse a file whose references (or product usages) go round in a
+/// circle before step-io, which follows them recursively, sees it.
+fn refuse_cycles(bytes: &[u8], file: &str) -> Result<(), StepError> {
+    let refs = References::scan(bytes);
+    if let Some(c) = refs.cycle() {
+        return Err(StepError::CyclicReference {
+            file: file.to_string(),
+            entities: references::list(&c),
+        });
+    }
+    if let Some(c) = refs.assembly_cycle() {
+        return Err(StepError::CyclicAssembly {
+            file: file.to_string(),
+            detail: format!("product definitions and usages {}", references::list(&c)),
+        });
+    }
+    Ok(())
 }
 
 /// Dangling references, looked for only when step-io dropped something
@@ -267,6 +289,7 @@ struct Builder<'s, 'm> {
     part: Part,
     units: (f64, f64),
     placed: HashSet<(EntityKey, [u64; 12])>,
+    limits: &'s ReadLimits,
 }
 
 /// The state of an assembly walk: the definitions above the current one,
@@ -293,6 +316,7 @@ impl<'s, 'm> Builder<'s, 'm> {
         ids: &'s EntityIds,
         file: &'s str,
         report: &'s mut ReadReport,
+        limits: &'s ReadLimits,
     ) -> Self {
         let units = scene.units();
         let (length_name, mm) = match &units.length {
@@ -327,6 +351,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             part,
             units: (mm, rad),
             placed: HashSet::new(),
+            limits,
         }
     }
 
@@ -367,7 +392,7 @@ impl<'s, 'm> Builder<'s, 'm> {
                 self.add_solid(solid, matrix, Some(format!("mapped item {}", mi.name())))?;
             }
             for sm in mi.surface_models() {
-                self.add_surface_model(sm, matrix, Some(format!("mapped item {}", mi.name())));
+                self.add_surface_model(sm, matrix, Some(format!("mapped item {}", mi.name())))?;
             }
         }
         let solids: Vec<_> = self.scene.all_solids().collect();
@@ -379,7 +404,7 @@ impl<'s, 'm> Builder<'s, 'm> {
         let models: Vec<_> = self.scene.all_surface_models().collect();
         for sm in models {
             if !self.placed.iter().any(|(k, _)| *k == sm.key()) {
-                self.add_surface_model(sm, IDENTITY, None);
+                self.add_surface_model(sm, IDENTITY, None)?;
             }
         }
         Ok(())
@@ -398,15 +423,17 @@ impl<'s, 'm> Builder<'s, 'm> {
         if walk.ancestors.contains(&def.key()) {
             return Err(StepError::CyclicAssembly {
                 file: self.file.to_string(),
-                definition: def.id().to_string(),
-                path,
+                detail: format!(
+                    "product definition '{}' contains itself (path {path})",
+                    def.id()
+                ),
             });
         }
         walk.instances += 1;
-        if walk.instances > MAX_INSTANCES {
+        if walk.instances > self.limits.max_instances {
             return Err(StepError::TooManyInstances {
                 file: self.file.to_string(),
-                limit: MAX_INSTANCES,
+                limit: self.limits.max_instances,
             });
         }
         if depth > MAX_ASSEMBLY_DEPTH {
@@ -421,7 +448,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             self.add_solid(solid, matrix, placement.clone())?;
         }
         for sm in def.surface_models() {
-            self.add_surface_model(sm, matrix, placement.clone());
+            self.add_surface_model(sm, matrix, placement.clone())?;
         }
         walk.ancestors.push(def.key());
         for occ in def.occurrences() {
@@ -484,8 +511,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             shells: Vec::new(),
             placement,
         };
-        self.add_body(body, shells, self.place(matrix));
-        Ok(())
+        self.add_body(body, shells, self.place(matrix))
     }
 
     fn add_surface_model(
@@ -493,9 +519,9 @@ impl<'s, 'm> Builder<'s, 'm> {
         sm: step_io::scene::SurfaceModel<'s>,
         matrix: Matrix,
         placement: Option<String>,
-    ) {
+    ) -> Result<(), StepError> {
         if !self.placed.insert((sm.key(), matrix_key(&matrix))) {
-            return;
+            return Ok(());
         }
         let shells: Vec<_> = sm.shells().collect();
         let step_id = self.ids.of(sm.key());
@@ -508,11 +534,12 @@ impl<'s, 'm> Builder<'s, 'm> {
                 placement,
             };
             let shells = shells.into_iter().map(|(s, o)| (s, o, false)).collect();
-            self.add_body(body, shells, self.place(matrix));
+            self.add_body(body, shells, self.place(matrix))
         } else {
             self.part.supplemental.surface_models.push(step_id);
             self.part.supplemental.face_count +=
                 shells.iter().map(|(s, _)| s.faces().count()).sum::<usize>();
+            Ok(())
         }
     }
 
@@ -521,7 +548,15 @@ impl<'s, 'm> Builder<'s, 'm> {
         mut body: Body,
         shells: Vec<(SShell<'s>, Orientation, bool)>,
         place: Place,
-    ) {
+    ) -> Result<(), StepError> {
+        let adding: usize = shells.iter().map(|(s, _, _)| s.faces().count()).sum();
+        if self.part.faces.len() + adding > self.limits.max_faces {
+            return Err(StepError::BudgetExceeded {
+                file: self.file.to_string(),
+                what: "faces placed (instances × their faces)",
+                limit: self.limits.max_faces as u64,
+            });
+        }
         let body_id = BodyId(self.part.bodies.len() as u32);
         let mut edges: HashMap<EntityKey, EdgeId> = HashMap::new();
         let mut vertices: HashMap<EntityKey, VertexId> = HashMap::new();
@@ -539,6 +574,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             });
         }
         self.part.bodies.push(body);
+        Ok(())
     }
 
     fn add_face(

@@ -30,11 +30,23 @@ pub enum StepError {
         expected: usize,
         found: usize,
     },
-    #[error("{file}: the assembly is cyclic: product definition '{definition}' contains itself (path {path})")]
-    CyclicAssembly {
+    #[error("{file}: the assembly is cyclic: {detail}")]
+    CyclicAssembly { file: String, detail: String },
+    #[error("{file}: entities refer to each other in a circle: {entities}")]
+    CyclicReference { file: String, entities: String },
+    #[error("{file}: {value} is {why} (entity #{entity}: {what})")]
+    BadNumber {
         file: String,
-        definition: String,
-        path: String,
+        entity: u64,
+        what: String,
+        value: f64,
+        why: &'static str,
+    },
+    #[error("{file}: {what} exceeds the reader's budget of {limit} (a setting: ReadLimits)")]
+    BudgetExceeded {
+        file: String,
+        what: &'static str,
+        limit: u64,
     },
     #[error("{file}: the assembly places more than {limit} instances")]
     TooManyInstances { file: String, limit: usize },
@@ -52,6 +64,9 @@ impl StepError {
             StepError::OpenShell { .. } => "open_shell",
             StepError::IdMismatch { .. } => "id_mismatch",
             StepError::CyclicAssembly { .. } => "cyclic_assembly",
+            StepError::CyclicReference { .. } => "cyclic_reference",
+            StepError::BadNumber { .. } => "bad_number",
+            StepError::BudgetExceeded { .. } => "budget_exceeded",
             StepError::TooManyInstances { .. } => "too_many_instances",
             StepError::Internal { .. } => "internal",
         }

@@ -14,6 +14,8 @@
 mod bridge;
 mod error;
 pub mod id_scan;
+mod references;
+pub mod sanity;
 
 pub use error::StepError;
 
@@ -39,15 +41,65 @@ pub struct ReadReport {
     pub repaired: Vec<ReadIssue>,
 }
 
-/// Read a STEP file from disk.
+/// How much a file may ask of the reader. A file past a limit is refused
+/// with [`StepError::BudgetExceeded`] (or [`StepError::TooManyInstances`])
+/// before the work it would take is done.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReadLimits {
+    /// Largest file read, bytes (a device such as `/dev/zero` is read up to
+    /// this and refused).
+    pub max_bytes: u64,
+    /// Most faces placed in all (an assembly places its parts' faces once
+    /// per instance; mapped items likewise).
+    pub max_faces: usize,
+    /// Most definition instances an assembly walk visits (a definition used
+    /// twice at each of 32 levels would otherwise place 2³² of them).
+    pub max_instances: usize,
+}
+
+impl Default for ReadLimits {
+    /// 256 MiB, 250,000 faces, 100,000 instances: about 100 times the
+    /// largest NIST test part, and within 2 GiB of memory.
+    fn default() -> Self {
+        Self {
+            max_bytes: 256 << 20,
+            max_faces: 250_000,
+            max_instances: 100_000,
+        }
+    }
+}
+
+/// Read a STEP file from disk, within the default [`ReadLimits`].
 pub fn read_file(path: impl AsRef<Path>) -> Result<(Part, ReadReport), StepError> {
+    read_file_with(path, &ReadLimits::default())
+}
+
+/// Read a STEP file from disk, within `limits`.
+pub fn read_file_with(
+    path: impl AsRef<Path>,
+    limits: &ReadLimits,
+) -> Result<(Part, ReadReport), StepError> {
+    use std::io::Read;
     let path = path.as_ref();
     let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| StepError::Io {
+    let io = |source| StepError::Io {
         file: name.clone(),
         source,
-    })?;
-    read_bytes(&bytes, &name)
+    };
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .map_err(io)?
+        .take(limits.max_bytes + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > limits.max_bytes {
+        return Err(StepError::BudgetExceeded {
+            file: name,
+            what: "file size, bytes",
+            limit: limits.max_bytes,
+        });
+    }
+    read_bytes_with(&bytes, &name, limits)
 }
 
 /// Read STEP text held in memory; `name` is used in error messages.
@@ -55,7 +107,23 @@ pub fn read_file(path: impl AsRef<Path>) -> Result<(Part, ReadReport), StepError
 /// Never panics: a panic inside the parser is caught and returned as
 /// [`StepError::Internal`].
 pub fn read_bytes(bytes: &[u8], name: &str) -> Result<(Part, ReadReport), StepError> {
-    match std::panic::catch_unwind(|| bridge::read(bytes, name)) {
+    read_bytes_with(bytes, name, &ReadLimits::default())
+}
+
+/// [`read_bytes`] within `limits`.
+pub fn read_bytes_with(
+    bytes: &[u8],
+    name: &str,
+    limits: &ReadLimits,
+) -> Result<(Part, ReadReport), StepError> {
+    if bytes.len() as u64 > limits.max_bytes {
+        return Err(StepError::BudgetExceeded {
+            file: name.to_string(),
+            what: "file size, bytes",
+            limit: limits.max_bytes,
+        });
+    }
+    match std::panic::catch_unwind(|| bridge::read(bytes, name, limits)) {
         Ok(r) => r,
         Err(panic) => {
             let message = panic

@@ -70,6 +70,21 @@ pub enum StudyError {
     Classify(#[from] thinwall_classify::ClassifyError),
     #[error(transparent)]
     Sizing(#[from] thinwall_plan::sizing::SizingError),
+    /// The work took longer than the study's time limit.
+    #[error("{file}: {stage} did not finish within its time limit of {limit_seconds} s (a setting: --time-limit)")]
+    BudgetExceeded {
+        stage: &'static str,
+        file: String,
+        limit_seconds: f64,
+    },
+    /// A defect of Thinwall: a panic, caught (see `contained`).
+    #[error("{file}: internal error in {stage} (a Thinwall bug, please report it): {message} (at {location})")]
+    Panic {
+        stage: &'static str,
+        file: String,
+        message: String,
+        location: String,
+    },
 }
 
 impl StudyError {
@@ -94,7 +109,7 @@ impl StudyError {
             R::TiltLimit(_) => Some("tilt_limit"),
         };
         let setup = |e: &SE| match e {
-            SE::ZeroUp(_) => Some("up"),
+            SE::ZeroUp(_) | SE::NotFiniteUp(_) => Some("up"),
             SE::TiltLimit(_) => Some("tilt_limit"),
             _ => None,
         };
@@ -125,6 +140,8 @@ impl StudyError {
             StudyError::Request(e) | StudyError::Recognition { source: e, .. } => pipeline_kind(e),
             StudyError::Operations(O::NoEndMill { .. }) => ErrorKind::Usage,
             StudyError::Operations(O::Removal(_) | O::NoPlan(_)) => ErrorKind::Input,
+            StudyError::Panic { .. } => ErrorKind::Internal,
+            StudyError::BudgetExceeded { .. } => ErrorKind::Input,
         }
     }
 
@@ -145,6 +162,8 @@ impl StudyError {
             StudyError::Operations(e) => format!("operations.{}", e.code()),
             StudyError::Classify(e) => format!("classify.{}", e.code()),
             StudyError::Sizing(_) => "sizing".to_string(),
+            StudyError::Panic { .. } => "panic".to_string(),
+            StudyError::BudgetExceeded { .. } => "budget_exceeded".to_string(),
         }
     }
 }

@@ -23,6 +23,7 @@
 //!
 //! [`PartAnalysis`]: thinwall_analysis::PartAnalysis
 
+mod contain;
 mod error;
 mod loaded;
 mod memo;
@@ -31,6 +32,7 @@ mod request;
 mod study;
 mod usecase;
 
+pub use contain::{contained, panic_message};
 pub use error::{ErrorKind, StudyError};
 pub use loaded::LoadedPart;
 pub use render::{render, Format, Rendered};

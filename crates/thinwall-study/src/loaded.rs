@@ -33,13 +33,18 @@ impl LoadedPart {
     /// Read the STEP file at `path`.
     pub fn read_file(path: impl AsRef<Path>) -> Result<Self, StudyError> {
         let path = path.as_ref();
-        let (part, read) = thinwall_step::read_file(path)?;
-        Ok(Self::new(path.display().to_string(), part, read))
+        let name = path.display().to_string();
+        crate::contained("read", &name, || {
+            let (part, read) = thinwall_step::read_file(path)?;
+            Ok(Self::new(name.clone(), part, read))
+        })
     }
 
     /// Read STEP text from memory; `name` names it in results and errors.
     pub fn read_bytes(bytes: &[u8], name: &str) -> Result<Self, StudyError> {
-        let (part, read) = thinwall_step::read_bytes(bytes, name)?;
-        Ok(Self::new(name, part, read))
+        crate::contained("read", name, || {
+            let (part, read) = thinwall_step::read_bytes(bytes, name)?;
+            Ok(Self::new(name, part, read))
+        })
     }
 }

@@ -101,7 +101,26 @@ pub struct OperationsRequest {
     pub by_feature: bool,
 }
 
+/// Most roughing layers an axial depth may cut a part into (the work grows
+/// with their number).
+pub const MOST_LAYERS: f64 = 10_000.0;
+
 impl OperationsRequest {
+    /// The axial depth against a part `size_mm` across: at most
+    /// [`MOST_LAYERS`] layers through it.
+    pub fn check_for_part(&self, size_mm: f64) -> Result<(), StudyError> {
+        match self.axial_depth {
+            Some(d) if d * MOST_LAYERS < size_mm => Err(StudyError::invalid(
+                "axial_depth",
+                format!(
+                    "must be at least {:.4} mm on this part ({size_mm:.1} mm across: at most {MOST_LAYERS} layers), got {d}",
+                    size_mm / MOST_LAYERS
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
     /// The shipped tool library in `setup`, the whole removal at once.
     pub fn new(setup: Setup) -> Self {
         Self {

@@ -4,7 +4,7 @@
 use crate::memo::Memo;
 use crate::{LoadedPart, StudyError};
 use std::sync::Arc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_pipeline::{Outcome, PipelineError, Request};
 use thinwall_plan::{Plan, RuleSet};
@@ -14,6 +14,7 @@ use thinwall_plan::{Plan, RuleSet};
 pub struct Study<'p> {
     loaded: &'p LoadedPart,
     parallel: bool,
+    time_limit: Option<Duration>,
     setups: Memo<Setup, AtSetup<'p>>,
 }
 
@@ -33,6 +34,7 @@ impl<'p> Study<'p> {
         Self {
             loaded,
             parallel: true,
+            time_limit: None,
             setups: Memo::default(),
         }
     }
@@ -41,6 +43,13 @@ impl<'p> Study<'p> {
     /// threads turns them off); the results are the same either way.
     pub fn with_parallelism(mut self, parallel: bool) -> Self {
         self.parallel = parallel;
+        self
+    }
+
+    /// Let each use case on this study take at most `limit` (none by
+    /// default); past it the use case fails with `budget_exceeded`.
+    pub fn with_time_limit(mut self, limit: Option<Duration>) -> Self {
+        self.time_limit = limit;
         self
     }
 
@@ -57,11 +66,12 @@ impl<'p> Study<'p> {
         self.parallel
     }
 
-    /// The part in `setup`, its analysis built the first time.
+    /// The part in `setup`, its analysis built the first time; the work
+    /// starting now on it has the study's time limit.
     pub fn at(&self, setup: &Setup) -> Result<Arc<AtSetup<'p>>, StudyError> {
         setup.validate()?;
         let loaded = self.loaded;
-        self.setups.get_or_try(setup, || {
+        let at = self.setups.get_or_try(setup, || {
             let t0 = Instant::now();
             let analysis = PartAnalysis::with_graph(&loaded.part, &loaded.graph, setup.clone())
                 .with_parallelism(self.parallel);
@@ -71,15 +81,28 @@ impl<'p> Study<'p> {
                 outcomes: Memo::default(),
                 plans: Memo::default(),
             })
-        })
+        })?;
+        at.analysis.budget().start(self.time_limit);
+        Ok(at)
     }
 }
 
 impl AtSetup<'_> {
     /// The recognition outcome of `req` (whose set-up is this one).
+    /// The study's parallelism decides (serial when it is serial, whatever
+    /// `req.parallel` says; the results are the same).
     pub fn outcome(&self, req: &Request) -> Result<Arc<Outcome>, PipelineError> {
+        let req = &self.as_run(req);
         self.outcomes
             .get_or_try(req, || thinwall_pipeline::run_on(&self.analysis, req))
+    }
+
+    /// `req` as this set-up runs it: serial when the study is.
+    fn as_run(&self, req: &Request) -> Request {
+        Request {
+            parallel: self.analysis.is_parallel(),
+            ..req.clone()
+        }
     }
 
     /// The plan of the recognition of `req` with `rules`; `name` names the
@@ -90,7 +113,7 @@ impl AtSetup<'_> {
         req: &Request,
         rules: &RuleSet,
     ) -> Result<Arc<Plan>, PipelineError> {
-        let key = (req.clone(), rules.clone());
+        let key = (self.as_run(req), rules.clone());
         self.plans.get_or_try(&key, || {
             let outcome = self.outcome(req)?;
             Ok(thinwall_plan::plan(name, &self.analysis, &outcome, rules))

@@ -6,7 +6,7 @@ use crate::request::{
     AccessRequest, ClassifyRequest, OperationsRequest, PlanRequest, RecognizeRequest,
     SizeWallRequest,
 };
-use crate::{AtSetup, Study, StudyError};
+use crate::{contained, AtSetup, Study, StudyError};
 use std::path::Path;
 use std::sync::Arc;
 use thinwall_access::reach::{self, ReachOptions};
@@ -68,42 +68,48 @@ fn recognition(study: &Study, source: PipelineError) -> StudyError {
 }
 
 pub fn inspect<'p>(study: &Study<'p>) -> Result<Inspected<'p>, StudyError> {
-    let at = study.at(&Setup::default())?;
-    let loaded = study.loaded();
-    let report = thinwall_report::inspect(&loaded.name, &at.analysis, &loaded.read);
-    Ok(Inspected { at, report })
+    contained("inspect", study.name(), || {
+        let at = study.at(&Setup::default())?;
+        let loaded = study.loaded();
+        let report = thinwall_report::inspect(&loaded.name, &at.analysis, &loaded.read);
+        Ok(Inspected { at, report })
+    })
 }
 
 pub fn recognize<'p>(
     study: &Study<'p>,
     req: &RecognizeRequest,
 ) -> Result<Recognized<'p>, StudyError> {
-    req.check().map_err(StudyError::Request)?;
-    let at = study.at(&req.setup)?;
-    let outcome = at.outcome(req).map_err(|e| recognition(study, e))?;
-    let loaded = study.loaded();
-    let report = thinwall_report::recognition_report(&loaded.name, &loaded.part, &outcome)
-        .with_read(&loaded.read);
-    let mut timings = vec![("analysis", at.built_seconds)];
-    timings.extend(outcome.timings.iter().copied());
-    Ok(Recognized {
-        at,
-        outcome,
-        report,
-        timings,
+    contained("recognize", study.name(), || {
+        req.check().map_err(StudyError::Request)?;
+        let at = study.at(&req.setup)?;
+        let outcome = at.outcome(req).map_err(|e| recognition(study, e))?;
+        let loaded = study.loaded();
+        let report = thinwall_report::recognition_report(&loaded.name, &loaded.part, &outcome)
+            .with_read(&loaded.read);
+        let mut timings = vec![("analysis", at.built_seconds)];
+        timings.extend(outcome.timings.iter().copied());
+        Ok(Recognized {
+            at,
+            outcome,
+            report,
+            timings,
+        })
     })
 }
 
 pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
-    req.check()?;
-    let at = study.at(&req.recognize.setup)?;
-    let outcome = at
-        .outcome(&req.recognize)
-        .map_err(|e| recognition(study, e))?;
-    let plan = at
-        .plan(study.name(), &req.recognize, &req.rules)
-        .map_err(|e| recognition(study, e))?;
-    Ok(Planned { at, outcome, plan })
+    contained("plan", study.name(), || {
+        req.check()?;
+        let at = study.at(&req.recognize.setup)?;
+        let outcome = at
+            .outcome(&req.recognize)
+            .map_err(|e| recognition(study, e))?;
+        let plan = at
+            .plan(study.name(), &req.recognize, &req.rules)
+            .map_err(|e| recognition(study, e))?;
+        Ok(Planned { at, outcome, plan })
+    })
 }
 
 /// Write each machining feature of `plan` as a STEP solid (`V1.step`, …)
@@ -139,86 +145,102 @@ pub fn access_observed<'p>(
     req: &AccessRequest,
     done: impl Fn(usize, usize) + Sync,
 ) -> Result<Accessed<'p>, StudyError> {
-    req.check()?;
-    let at = study.at(req.setup())?;
-    let a = &at.analysis;
-    let faces = thinwall_access::flank_milling(a, a.mesh(), &req.flank());
-    let opts = ReachOptions {
-        tool: req.tool.clone(),
-        machine: req.setup().machine,
-        largest_tool: true,
-    };
-    let reached = reach::reach_observed(a, a.mesh(), &opts, |_| true, done)?;
-    let outcome = at.outcome(&req.walls).map_err(|e| recognition(study, e))?;
-    let reach = ReachResult::new(a, reached, &outcome, req.tool.diameter);
-    let settings = ReachSettings {
-        tool: req.tool.clone(),
-        machine: req.setup().machine,
-    };
-    let report = AccessReport::new(
-        study.name(),
-        req.setup().up,
-        req.flank(),
-        faces,
-        settings,
-        reach,
-    );
-    Ok(Accessed { at, report })
+    contained("access", study.name(), || {
+        req.check()?;
+        let at = study.at(req.setup())?;
+        let a = &at.analysis;
+        let faces = thinwall_access::flank_milling(a, a.mesh(), &req.flank());
+        let opts = ReachOptions {
+            tool: req.tool.clone(),
+            machine: req.setup().machine,
+            largest_tool: true,
+        };
+        let reached = reach::reach_observed(a, a.mesh(), &opts, |_| true, done)?;
+        let outcome = at.outcome(&req.walls).map_err(|e| recognition(study, e))?;
+        let reach = ReachResult::new(a, reached, &outcome, req.tool.diameter);
+        let settings = ReachSettings {
+            tool: req.tool.clone(),
+            machine: req.setup().machine,
+        };
+        let report = AccessReport::new(
+            study.name(),
+            req.setup().up,
+            req.flank(),
+            faces,
+            settings,
+            reach,
+        );
+        Ok(Accessed { at, report })
+    })
 }
 
 pub fn operations<'p>(
     study: &Study<'p>,
     req: &OperationsRequest,
 ) -> Result<Operated<'p>, StudyError> {
-    req.check()?;
-    let at = study.at(&req.setup)?;
-    let a = &at.analysis;
-    // The holes are the machining features found in this set-up.
-    let in_setup = RecognizeRequest {
-        setup: req.setup.clone(),
-        allow_open: true,
-        machining: MachiningRequest {
-            in_setup: true,
-            ..Default::default()
-        },
-        ..Default::default()
-    };
-    let holes = at.outcome(&in_setup).map_err(|e| recognition(study, e))?;
-    let (frame, ops) = if req.by_feature {
-        let recognize = RecognizeRequest {
+    contained("operations", study.name(), || {
+        req.check()?;
+        let at = study.at(&req.setup)?;
+        let a = &at.analysis;
+        req.check_for_part(a.bounding_box().diagonal())?;
+        // The holes are the machining features found in this set-up.
+        let in_setup = RecognizeRequest {
             setup: req.setup.clone(),
+            allow_open: true,
+            machining: MachiningRequest {
+                in_setup: true,
+                ..Default::default()
+            },
             ..Default::default()
         };
-        let plan = at
-            .plan(study.name(), &recognize, &RuleSet::default_rules())
-            .map_err(|e| recognition(study, e))?;
-        thinwall_ops::setup::along_plan(a, &plan, &holes.machining, &req.tools, req.axial_depth)?
-    } else {
-        thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
-    };
-    let report = OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
-    Ok(Operated { at, report })
+        let holes = at.outcome(&in_setup).map_err(|e| recognition(study, e))?;
+        let (frame, ops) = if req.by_feature {
+            let recognize = RecognizeRequest {
+                setup: req.setup.clone(),
+                ..Default::default()
+            };
+            let plan = at
+                .plan(study.name(), &recognize, &RuleSet::default_rules())
+                .map_err(|e| recognition(study, e))?;
+            thinwall_ops::setup::along_plan(
+                a,
+                &plan,
+                &holes.machining,
+                &req.tools,
+                req.axial_depth,
+            )?
+        } else {
+            thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
+        };
+        let report =
+            OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
+        Ok(Operated { at, report })
+    })
 }
 
 pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classified<'p>, StudyError> {
-    req.check()?;
-    let at = study.at(&req.setup)?;
-    let result = thinwall_classify::classify(&thinwall_classify::Request {
-        part: &at.analysis,
-        volumes: &req.volumes,
-        before: &req.before,
-        together: &[],
-        priority: vec![],
-    })?;
-    let report = ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
-    Ok(Classified {
-        at,
-        report,
-        volumes: req.volumes,
+    contained("classify", study.name(), || {
+        req.check()?;
+        let at = study.at(&req.setup)?;
+        let result = thinwall_classify::classify(&thinwall_classify::Request {
+            part: &at.analysis,
+            volumes: &req.volumes,
+            before: &req.before,
+            together: &[],
+            priority: vec![],
+        })?;
+        let report = ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
+        Ok(Classified {
+            at,
+            report,
+            volumes: req.volumes,
+        })
     })
 }
 
 /// `size-wall`: B_RF, h_RF and H_RF of a thin wall (no part needed).
 pub fn size_wall(req: &SizeWallRequest) -> Result<thinwall_plan::Sizes, StudyError> {
-    Ok(thinwall_plan::size_wall(&req.wall, &req.parameters)?)
+    contained("size-wall", "size-wall", || {
+        Ok(thinwall_plan::size_wall(&req.wall, &req.parameters)?)
+    })
 }

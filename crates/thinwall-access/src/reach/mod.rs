@@ -32,7 +32,6 @@ pub mod side;
 pub mod walls;
 
 pub use largest::{largest_tool, SMALLEST_TOOL, TOOL_PRECISION};
-use rayon::prelude::*;
 use scene::Scene;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -87,7 +86,7 @@ impl Tool {
     }
 
     pub fn check(&self) -> Result<(), ReachError> {
-        let ok = |v: f64| v.is_finite() && v > 0.0;
+        let ok = |v: f64| v.is_finite() && v > 0.0 && v <= MAX_TOOL_MM;
         if !ok(self.diameter) {
             return Err(ReachError::Diameter(self.diameter));
         }
@@ -104,6 +103,9 @@ impl Tool {
     }
 }
 
+/// Largest tool diameter and cutting length accepted, mm.
+pub const MAX_TOOL_MM: f64 = 1e4;
+
 impl Default for Tool {
     /// The preferred tool, Ø12.
     fn default() -> Self {
@@ -114,9 +116,9 @@ impl Default for Tool {
 /// Why reach cannot be judged.
 #[derive(Debug, Error, PartialEq)]
 pub enum ReachError {
-    #[error("tool diameter must be a positive number of mm, got {0}")]
+    #[error("tool diameter must be a positive number of mm up to 10,000, got {0}")]
     Diameter(f64),
-    #[error("cutting length must be a positive number of mm, got {0}")]
+    #[error("cutting length must be a positive number of mm up to 10,000, got {0}")]
     CuttingLength(f64),
     #[error("holder diameter {holder} mm must be at least the tool's {diameter} mm")]
     Holder { holder: f64, diameter: f64 },
@@ -372,18 +374,14 @@ pub fn reach_observed(
         .filter(|&k| wanted(mesh.faces[k].face))
         .collect();
     let (total, count) = (chosen.len(), std::sync::atomic::AtomicUsize::new(0));
-    let out = chosen
-        .into_par_iter()
-        .with_max_len(1)
-        .map(|k| {
-            let r = face_reach(a, mesh, &ctx, &scenes, k as u32, opts.largest_tool);
-            done(
-                count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
-                total,
-            );
-            r
-        })
-        .collect();
+    let out = a.work().map(&chosen, |&k| {
+        let r = face_reach(a, mesh, &ctx, &scenes, k as u32, opts.largest_tool);
+        done(
+            count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
+            total,
+        );
+        r
+    });
     Ok(out)
 }
 
@@ -397,12 +395,10 @@ pub fn scenes(a: &PartAnalysis, mesh: &Mesh, axes: &[Vector3]) -> Vec<Scene> {
     );
     let reference = azimuth_reference(a, &a.up());
     let tess: Vec<bool> = mesh.faces.iter().map(|m| tessellated(a, m.face)).collect();
-    axes.par_iter()
-        .map(|ax| {
-            let frame = Frame::from_axis(centre, *ax, Some(reference)).unwrap_or_else(Frame::world);
-            Scene::new(mesh, frame, |k| tess[k])
-        })
-        .collect()
+    a.work().map(axes, |ax| {
+        let frame = Frame::from_axis(centre, *ax, Some(reference)).unwrap_or_else(Frame::world);
+        Scene::new(mesh, frame, |k| tess[k])
+    })
 }
 
 /// Whether a face's triangles only approximate it: a curved face, or a

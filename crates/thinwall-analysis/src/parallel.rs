@@ -1,0 +1,125 @@
+//! How work on a part runs: on rayon's worker threads or on the calling
+//! thread only (a host that asks for serial work, as the C ABI's `parallel`
+//! option does, gets no thread started; the results are the same either
+//! way), and within a time budget.
+//!
+//! A [`Budget`] holds the deadline of the call running now. Work checks it
+//! between items; past the deadline the check unwinds with an
+//! [`OverBudget`] payload, which `thinwall_study::contained` turns into a
+//! typed `budget_exceeded` error (the unwinding is how a long computation
+//! deep in a layer is stopped without every layer's error type knowing of
+//! budgets).
+
+use rayon::prelude::*;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// The payload of the unwinding that stops work past its deadline.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OverBudget {
+    /// The limit that was exceeded, seconds.
+    pub limit_seconds: f64,
+}
+
+/// The deadline of the work running now on one part (none by default).
+#[derive(Debug, Default)]
+pub struct Budget {
+    deadline: Mutex<Option<(Instant, Duration)>>,
+}
+
+impl Budget {
+    /// Let the work starting now take at most `limit` (`None`: no limit).
+    pub fn start(&self, limit: Option<Duration>) {
+        let mut d = self.deadline.lock().unwrap_or_else(|p| p.into_inner());
+        *d = limit.map(|l| (Instant::now() + l, l));
+    }
+
+    /// Unwind with [`OverBudget`] when the deadline has passed.
+    pub fn check(&self) {
+        let d = *self.deadline.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some((deadline, limit)) = d {
+            if Instant::now() > deadline {
+                std::panic::panic_any(OverBudget {
+                    limit_seconds: limit.as_secs_f64(),
+                });
+            }
+        }
+    }
+}
+
+/// How to run work over many items: in parallel or not, within a budget.
+#[derive(Clone, Copy, Debug)]
+pub struct Work<'b> {
+    pub parallel: bool,
+    pub budget: &'b Budget,
+}
+
+impl Work<'_> {
+    /// `f` of each of `items`, in their order; on rayon's workers (one item
+    /// per task: items may cost very different amounts) when parallel. The
+    /// budget is checked before each item.
+    pub fn map<I, T, F>(&self, items: &[I], f: F) -> Vec<T>
+    where
+        I: Sync,
+        T: Send,
+        F: Fn(&I) -> T + Sync + Send,
+    {
+        let one = |i: &I| {
+            self.budget.check();
+            f(i)
+        };
+        if self.parallel {
+            items.par_iter().with_max_len(1).map(one).collect()
+        } else {
+            items.iter().map(one).collect()
+        }
+    }
+
+    /// Unwind with [`OverBudget`] when the deadline has passed.
+    pub fn check(&self) {
+        self.budget.check();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn serial_and_parallel_give_the_same_results_in_order() {
+        let budget = Budget::default();
+        let items: Vec<u32> = (0..100).collect();
+        let f = |x: &u32| x * x;
+        let (par, ser) = (
+            Work {
+                parallel: true,
+                budget: &budget,
+            },
+            Work {
+                parallel: false,
+                budget: &budget,
+            },
+        );
+        assert_eq!(par.map(&items, f), ser.map(&items, f));
+        assert_eq!(ser.map(&items, f)[7], 49);
+    }
+
+    #[test]
+    fn work_past_its_deadline_unwinds_with_over_budget() {
+        let budget = Budget::default();
+        budget.start(Some(Duration::ZERO));
+        std::thread::sleep(Duration::from_millis(2));
+        let work = Work {
+            parallel: false,
+            budget: &budget,
+        };
+        let r = std::panic::catch_unwind(|| work.map(&[1, 2], |x| *x));
+        let payload = r.unwrap_err();
+        assert_eq!(
+            payload.downcast_ref::<OverBudget>(),
+            Some(&OverBudget { limit_seconds: 0.0 })
+        );
+        budget.start(None);
+        assert_eq!(work.map(&[1, 2], |x| *x), vec![1, 2]);
+    }
+}
