@@ -247,6 +247,7 @@ pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
         S::Operations(O::Removal(_) | O::NoPlan(_)) => tw_status::TW_ERR_UNSUPPORTED,
         S::Classify(c) => classify_status(c),
         S::Panic { .. } => tw_status::TW_ERR_PANIC,
+        S::BudgetExceeded { .. } => tw_status::TW_ERR_BUDGET_EXCEEDED,
     };
     (status, e.to_string())
 }
