@@ -26,7 +26,12 @@ pub struct Cli {
     /// Most seconds a command may work on one part (each part of a
     /// `batch`); past it the command stops with `budget_exceeded` (exit 1).
     /// 0 for no limit.
-    #[arg(long, global = true, default_value_t = 600.0)]
+    #[arg(
+        allow_negative_numbers = true,
+        long,
+        global = true,
+        default_value_t = 600.0
+    )]
     pub time_limit: f64,
 }
 
@@ -176,10 +181,10 @@ pub struct CheckArgs {
     #[arg(long)]
     pub update: bool,
     /// Sizes within this many mm (plus the relative part) are the same.
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 0.01)]
     pub tolerance_mm: f64,
     /// Sizes within this fraction (plus the absolute part) are the same.
-    #[arg(long, default_value_t = 1e-3)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 1e-3)]
     pub tolerance_rel: f64,
     #[command(flatten)]
     pub flags: RecognizeFlags,
@@ -362,19 +367,19 @@ pub struct RecognizeFlags {
     #[arg(long, value_delimiter = ',')]
     pub exclude: Vec<String>,
     /// Maximum milling force, N.
-    #[arg(long)]
+    #[arg(allow_negative_numbers = true, long)]
     pub force: Option<f64>,
     /// Allowed deflection, mm.
-    #[arg(long)]
+    #[arg(allow_negative_numbers = true, long)]
     pub allowed_deflection: Option<f64>,
     /// Preferred tool diameter, mm.
-    #[arg(long)]
+    #[arg(allow_negative_numbers = true, long)]
     pub tool_diameter: Option<f64>,
     /// Machine class: 3-axis (tool axis = up) or 5-axis.
     #[arg(long, value_enum, default_value = "3-axis")]
     pub machine: MachineArg,
     /// 5-axis: largest tilt of the tool axis from up, degrees.
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(allow_negative_numbers = true, long, default_value_t = 30.0)]
     pub tilt_limit: f64,
     /// Link thin walls to the thick walls they stand on.
     #[arg(long)]

@@ -54,7 +54,7 @@ pub fn read(
     refuse_cycles(bytes, file)?;
     let (model, report) = step_io::read(bytes).map_err(|e| StepError::Syntax {
         file: file.to_string(),
-        message: e.to_string(),
+        message: with_truncation(e.to_string(), bytes),
     })?;
     let mut out = ReadReport {
         entities_read: report.entities_read,
@@ -102,6 +102,22 @@ pub fn read(
     }
     crate::sanity::check(&part, file)?;
     Ok((part, out))
+}
+
+/// A parse error at the end of the text, with where the text ends (a
+/// truncated file is the usual cause).
+fn with_truncation(message: String, bytes: &[u8]) -> String {
+    if !message.contains("end of file") {
+        return message;
+    }
+    let lines = bytes.iter().filter(|b| **b == b'\n').count() + 1;
+    let last = References::scan(bytes).last_id();
+    match last {
+        Some(id) => format!(
+            "{message} (the text ends at line {lines}, after entity #{id}: is the file truncated?)"
+        ),
+        None => format!("{message} (the text ends at line {lines}: is the file truncated?)"),
+    }
 }
 
 /// Refuse a file whose references (or product usages) go round in a
@@ -553,7 +569,7 @@ impl<'s, 'm> Builder<'s, 'm> {
         if self.part.faces.len() + adding > self.limits.max_faces {
             return Err(StepError::BudgetExceeded {
                 file: self.file.to_string(),
-                what: "faces placed (instances × their faces)",
+                what: "the faces placed (instances × their faces)",
                 limit: self.limits.max_faces as u64,
             });
         }

@@ -34,10 +34,11 @@ pub enum StepError {
     CyclicAssembly { file: String, detail: String },
     #[error("{file}: entities refer to each other in a circle: {entities}")]
     CyclicReference { file: String, entities: String },
-    #[error("{file}: {value} is {why} (entity #{entity}: {what})")]
+    #[error("{}: {} {} is {}{}", .file, .what, number(*.value), .why, at(*.entity))]
     BadNumber {
         file: String,
-        entity: u64,
+        /// The entity whose geometry holds the value (none for the units).
+        entity: Option<u64>,
         what: String,
         value: f64,
         why: &'static str,
@@ -71,4 +72,21 @@ impl StepError {
             StepError::Internal { .. } => "internal",
         }
     }
+}
+
+/// A number as a person reads it: plain for everyday magnitudes, in
+/// scientific notation for the extreme ones a bad file holds.
+fn number(v: f64) -> String {
+    if v != 0.0 && !(1e-4..1e7).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
+/// ` (entity #N)`, or nothing.
+fn at(entity: Option<u64>) -> String {
+    entity
+        .map(|e| format!(" (entity #{e})"))
+        .unwrap_or_default()
 }

@@ -95,7 +95,7 @@ pub fn read_file_with(
     if bytes.len() as u64 > limits.max_bytes {
         return Err(StepError::BudgetExceeded {
             file: name,
-            what: "file size, bytes",
+            what: "the file's size (bytes)",
             limit: limits.max_bytes,
         });
     }
@@ -119,7 +119,7 @@ pub fn read_bytes_with(
     if bytes.len() as u64 > limits.max_bytes {
         return Err(StepError::BudgetExceeded {
             file: name.to_string(),
-            what: "file size, bytes",
+            what: "the file's size (bytes)",
             limit: limits.max_bytes,
         });
     }

@@ -80,6 +80,11 @@ impl References {
         out
     }
 
+    /// The id of the last statement.
+    pub fn last_id(&self) -> Option<u64> {
+        self.ids.last().copied()
+    }
+
     fn refs_of(&self, i: usize) -> &[u64] {
         &self.refs[self.starts[i]..self.starts[i + 1]]
     }

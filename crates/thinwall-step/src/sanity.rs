@@ -38,7 +38,7 @@ type Bad = (String, f64, &'static str);
 /// Refuse `part` if any of its numbers is out of bounds (first one found, in
 /// the order units, vertices, edges, faces).
 pub fn check(part: &Part, file: &str) -> Result<(), StepError> {
-    let err = |entity: u64, (what, value, why): Bad| StepError::BadNumber {
+    let err = |entity: Option<u64>, (what, value, why): Bad| StepError::BadNumber {
         file: file.to_string(),
         entity,
         what,
@@ -47,23 +47,23 @@ pub fn check(part: &Part, file: &str) -> Result<(), StepError> {
     };
     let u = &part.units;
     for (what, v) in [
-        ("millimetres per length unit", u.mm_per_unit),
-        ("radians per angle unit", u.rad_per_unit),
+        ("the length unit, in mm,", u.mm_per_unit),
+        ("the angle unit, in radians,", u.rad_per_unit),
     ] {
         if !UNIT_FACTOR.contains(&v) {
-            return Err(err(0, (what.into(), v, "outside 1e-9 ..= 1e9")));
+            return Err(err(None, (what.into(), v, "outside 1e-9 ..= 1e9")));
         }
     }
     for v in &part.vertices {
-        point(&v.point, "vertex").map_err(|b| err(v.step_id, b))?;
+        point(&v.point, "vertex").map_err(|b| err(Some(v.step_id), b))?;
     }
     for e in &part.edges {
         curve(&e.curve)
             .and_then(|()| e.nurbs.as_ref().map_or(Ok(()), nurbs_curve))
-            .map_err(|b| err(e.step_id, b))?;
+            .map_err(|b| err(Some(e.step_id), b))?;
     }
     for f in &part.faces {
-        surface(&f.surface).map_err(|b| err(f.step_id, b))?;
+        surface(&f.surface).map_err(|b| err(Some(f.step_id), b))?;
     }
     Ok(())
 }
