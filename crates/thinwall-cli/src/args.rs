@@ -39,7 +39,7 @@ impl Cli {
     /// The time limit, or a usage failure for a value that is not one.
     pub fn time_limit(&self) -> Result<Option<std::time::Duration>, Failure> {
         match self.time_limit {
-            t if t == 0.0 => Ok(None),
+            0.0 => Ok(None),
             t if t.is_finite() && t > 0.0 && t <= 1e7 => {
                 Ok(Some(std::time::Duration::from_secs_f64(t)))
             }
