@@ -119,7 +119,10 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
     let analyses: Vec<PartAnalysis> = req
         .volumes
         .iter()
-        .map(|v| PartAnalysis::new(&v.part, Setup::clone(req.part.setup())))
+        .map(|v| {
+            PartAnalysis::new(&v.part, Setup::clone(req.part.setup()))
+                .with_parallelism(req.part.is_parallel())
+        })
         .collect();
     checks::volumes(req.part, req.volumes, &analyses)?;
     let vol_faces: Vec<Vec<FaceGeom>> = analyses.iter().map(FaceGeom::all).collect();
