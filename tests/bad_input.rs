@@ -232,3 +232,25 @@ fn missing_file_is_an_io_error_naming_it() {
     assert_eq!(e.code(), "io");
     assert!(e.to_string().contains("/nonexistent/part.step"));
 }
+
+#[test]
+fn a_shell_listing_a_face_twice_counts_it_once_and_says_so() {
+    let text = good();
+    let (part, _) = read_bytes(text.as_bytes(), "good.step").unwrap();
+    let at = text.find("CLOSED_SHELL('',(").expect("a closed shell") + "CLOSED_SHELL('',(".len();
+    let first: String = text[at..]
+        .chars()
+        .take_while(|c| *c != ',' && *c != ')')
+        .collect();
+    let doubled = format!("{}{first},{}", &text[..at], &text[at..]);
+    let (again, report) = read_bytes(doubled.as_bytes(), "twice.step").unwrap();
+    assert_eq!(again.faces.len(), part.faces.len());
+    assert!(
+        report
+            .repaired
+            .iter()
+            .any(|r| r.message.contains("more than once")),
+        "{:?}",
+        report.repaired
+    );
+}

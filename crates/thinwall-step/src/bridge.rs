@@ -576,9 +576,18 @@ impl<'s, 'm> Builder<'s, 'm> {
         let body_id = BodyId(self.part.bodies.len() as u32);
         let mut edges: HashMap<EntityKey, EdgeId> = HashMap::new();
         let mut vertices: HashMap<EntityKey, VertexId> = HashMap::new();
+        let mut seen: HashSet<EntityKey> = HashSet::new();
         for (shell, orient, is_void) in shells {
             let mut faces = Vec::new();
             for face in shell.faces() {
+                if !seen.insert(face.key()) {
+                    let (shell_id, face_id) = (self.ids.of(shell.key()), self.ids.of(face.key()));
+                    self.issue(
+                        Some(shell_id),
+                        format!("shell lists face #{face_id} more than once: counted once"),
+                    );
+                    continue;
+                }
                 let flip = orient == Orientation::Reversed;
                 let id = self.add_face(face, body_id, flip, &place, &mut edges, &mut vertices);
                 faces.push(id);
