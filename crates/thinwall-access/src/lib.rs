@@ -145,9 +145,10 @@ pub fn flank_milling(
     options: &FlankOptions,
 ) -> Vec<PlanarFaceAccess> {
     let boxes = mesh_boxes(mesh);
-    a.planar_faces()
-        .map(|pf| face_access(a, mesh, &boxes, pf.face, &pf.frame, options))
-        .collect()
+    let planar: Vec<_> = a.planar_faces().collect();
+    a.work().map(&planar, |pf| {
+        face_access(a, mesh, &boxes, pf.face, &pf.frame, options)
+    })
 }
 
 /// Each mesh face's box (min, max), to skip faces far from a slab.

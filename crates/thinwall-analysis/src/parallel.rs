@@ -11,8 +11,48 @@
 //! budgets).
 
 use rayon::prelude::*;
+use std::cell::Cell;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
+
+/// A deadline and the limit it came from.
+type Deadline = Option<(Instant, Duration)>;
+
+thread_local! {
+    /// The deadline of the work this thread is doing now: set by
+    /// [`Budget::start`] on the calling thread and by [`Work::map`] on each
+    /// worker for each item, so code deep in a layer can check it with
+    /// [`check_deadline`] without a handle.
+    static DEADLINE: Cell<Deadline> = const { Cell::new(None) };
+}
+
+/// Unwind with [`OverBudget`] when the work this thread is doing is past
+/// its deadline (a thread-local read and a clock read: cheap enough for a
+/// loop over rows or pieces).
+pub fn check_deadline() {
+    if let Some((deadline, limit)) = DEADLINE.get() {
+        if Instant::now() > deadline {
+            std::panic::panic_any(OverBudget {
+                limit_seconds: limit.as_secs_f64(),
+            });
+        }
+    }
+}
+
+/// Restores the thread's deadline when dropped (also when unwinding).
+pub struct DeadlineScope(Deadline);
+
+/// Keep the thread's deadline as it is now, to be restored when the scope
+/// ends.
+pub fn deadline_scope() -> DeadlineScope {
+    DeadlineScope(DEADLINE.get())
+}
+
+impl Drop for DeadlineScope {
+    fn drop(&mut self) {
+        DEADLINE.set(self.0);
+    }
+}
 
 /// The payload of the unwinding that stops work past its deadline.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,15 +69,20 @@ pub struct Budget {
 
 impl Budget {
     /// Let the work starting now take at most `limit` (`None`: no limit).
+    /// The calling thread's deadline is set too.
     pub fn start(&self, limit: Option<Duration>) {
         let mut d = self.deadline.lock().unwrap_or_else(|p| p.into_inner());
         *d = limit.map(|l| (Instant::now() + l, l));
+        DEADLINE.set(*d);
+    }
+
+    fn deadline(&self) -> Deadline {
+        *self.deadline.lock().unwrap_or_else(|p| p.into_inner())
     }
 
     /// Unwind with [`OverBudget`] when the deadline has passed.
     pub fn check(&self) {
-        let d = *self.deadline.lock().unwrap_or_else(|p| p.into_inner());
-        if let Some((deadline, limit)) = d {
+        if let Some((deadline, limit)) = self.deadline() {
             if Instant::now() > deadline {
                 std::panic::panic_any(OverBudget {
                     limit_seconds: limit.as_secs_f64(),
@@ -64,8 +109,11 @@ impl Work<'_> {
         T: Send,
         F: Fn(&I) -> T + Sync + Send,
     {
+        let deadline = self.budget.deadline();
         let one = |i: &I| {
-            self.budget.check();
+            let _scope = deadline_scope();
+            DEADLINE.set(deadline);
+            check_deadline();
             f(i)
         };
         if self.parallel {
@@ -121,5 +169,22 @@ mod tests {
         );
         budget.start(None);
         assert_eq!(work.map(&[1, 2], |x| *x), vec![1, 2]);
+    }
+
+    #[test]
+    fn code_deep_in_an_item_sees_its_deadline_and_a_scope_restores_it() {
+        let budget = Budget::default();
+        let scope = deadline_scope();
+        budget.start(Some(Duration::ZERO));
+        std::thread::sleep(Duration::from_millis(2));
+        let work = Work {
+            parallel: true,
+            budget: &budget,
+        };
+        let deep = std::panic::catch_unwind(|| work.map(&[1], |_| 0));
+        assert!(deep.unwrap_err().is::<OverBudget>());
+        assert!(std::panic::catch_unwind(check_deadline).is_err());
+        drop(scope);
+        check_deadline();
     }
 }

@@ -69,6 +69,8 @@ pub fn contained<T>(
     work: impl FnOnce() -> Result<T, StudyError>,
 ) -> Result<T, StudyError> {
     install_hook();
+    // The deadline a use case sets on this thread ends with it.
+    let _deadline = thinwall_analysis::parallel::deadline_scope();
     let quiet = Quiet::new();
     let run = catch_unwind(AssertUnwindSafe(work));
     drop(quiet);

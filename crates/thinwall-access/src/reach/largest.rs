@@ -165,6 +165,7 @@ impl<'a> WholeJudge<'a> {
     }
 
     fn judge(&mut self, d: f64) -> bool {
+        self.a.work().check();
         let ctx = Ctx {
             tool: self.ctx.tool.scaled(d),
             touch: self.ctx.touch,

@@ -497,7 +497,10 @@ fn face_reach(
     };
     let judged: Vec<(Contact, Judged)> = scenes
         .iter()
-        .map(|s| judge(a, mesh, ctx, s, own, &normals))
+        .map(|s| {
+            a.work().check();
+            judge(a, mesh, ctx, s, own, &normals)
+        })
         .collect();
     let mut best = 0;
     for (k, j) in judged.iter().enumerate() {

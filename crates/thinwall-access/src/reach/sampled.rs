@@ -66,6 +66,7 @@ pub fn judge_some(
     let mut out = Judged::default();
     let mut stops: Vec<(u32, bool)> = Vec::new();
     for k in some {
+        thinwall_analysis::parallel::check_deadline();
         if out.area - out.reached > lost_mm2 {
             out.cut_short = true;
             return out;

@@ -127,6 +127,7 @@ pub fn judge_within(
     );
     let mut blocks: Vec<Block> = Vec::new();
     for w in bands.windows(2) {
+        thinwall_analysis::parallel::check_deadline();
         if out.area - out.reached > budget {
             out.cut_short = true;
             return out;
