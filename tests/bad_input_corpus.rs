@@ -31,6 +31,11 @@ fn bases() -> Vec<std::path::PathBuf> {
 fn mutants() -> Vec<Mutant> {
     let mut all = Vec::new();
     for path in bases() {
+        // Only parts that read: a mutation of a file that is refused as it
+        // is (NIST FTC 08 holds a mesh only) shows nothing.
+        if thinwall_step::read_file(&path).is_err() {
+            continue;
+        }
         let text = std::fs::read_to_string(&path).unwrap();
         let base = path.file_stem().unwrap().to_string_lossy().to_string();
         all.extend(corpus(&base, &text));
@@ -90,6 +95,14 @@ fn judge(m: &Mutant) -> Option<String> {
 fn every_mutated_file_ends_with_a_typed_error_or_a_result_never_a_panic() {
     let all = mutants();
     assert!(all.len() >= 60, "{} mutants", all.len());
+    let read = all
+        .iter()
+        .filter(|m| LoadedPart::read_bytes(&m.bytes, &m.name).is_ok())
+        .count();
+    eprintln!(
+        "{} mutated files, {read} of them read and run through every command",
+        all.len()
+    );
     let failures: Vec<String> = all
         .iter()
         .filter_map(|m| judge(m).map(|why| format!("{} ({}): {why}", m.name, m.class)))

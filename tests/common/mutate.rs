@@ -185,6 +185,33 @@ fn find(text: &str, words: &[&str]) -> Option<(u64, std::ops::Range<usize>)> {
         .find(|(_, r)| words.iter().all(|w| text[r.clone()].contains(w)))
 }
 
+/// The first statement with every one of `words` among the entities the
+/// first closed shell reaches (so the solid is built from it: geometry of
+/// annotations or of a surface model beside the solid is not).
+fn find_in_solid(text: &str, words: &[&str]) -> Option<(u64, std::ops::Range<usize>)> {
+    let all = statements(text);
+    let by_id: std::collections::HashMap<u64, std::ops::Range<usize>> =
+        all.iter().cloned().collect();
+    let (shell, _) = find(text, &["CLOSED_SHELL"])?;
+    let mut reached = std::collections::HashSet::from([shell]);
+    let mut todo = vec![shell];
+    while let Some(id) = todo.pop() {
+        let Some(r) = by_id.get(&id) else { continue };
+        let body = &text[r.clone()];
+        let body = &body[body.find('=').unwrap_or(0)..];
+        for part in body.split('#').skip(1) {
+            let digits: String = part.chars().take_while(char::is_ascii_digit).collect();
+            if let Ok(next) = digits.parse::<u64>() {
+                if reached.insert(next) {
+                    todo.push(next);
+                }
+            }
+        }
+    }
+    all.into_iter()
+        .find(|(id, r)| reached.contains(id) && words.iter().all(|w| text[r.clone()].contains(w)))
+}
+
 fn largest_id(text: &str) -> u64 {
     statements(text)
         .iter()
@@ -240,7 +267,7 @@ fn unit_factor(text: &str, factor: &str) -> Option<String> {
 
 /// The point of the first vertex at (`v`, 0, 0).
 fn vertex_coordinate(text: &str, v: &str) -> Option<String> {
-    let (_, r) = find(text, &["VERTEX_POINT"])?;
+    let (_, r) = find_in_solid(text, &["VERTEX_POINT"])?;
     let s = &text[r];
     let p: u64 = s[s.rfind('#')? + 1..]
         .chars()
@@ -258,7 +285,7 @@ fn vertex_coordinate(text: &str, v: &str) -> Option<String> {
 
 /// The last number of the first `keyword` statement (a radius) set to `v`.
 fn last_number_of(text: &str, keyword: &str, v: &str) -> Option<String> {
-    let (_, r) = find(text, &[&format!("{keyword}(")])?;
+    let (_, r) = find_in_solid(text, &[&format!("{keyword}(")])?;
     let s = &text[r.clone()];
     let close = s.rfind(')')?;
     let comma = s[..close].rfind(',')?;
@@ -268,7 +295,7 @@ fn last_number_of(text: &str, keyword: &str, v: &str) -> Option<String> {
 
 /// The first knot of the first B-spline curve set to `v`.
 fn first_knot(text: &str, v: &str) -> Option<String> {
-    let (_, r) = find(text, &["B_SPLINE_CURVE_WITH_KNOTS"])?;
+    let (_, r) = find_in_solid(text, &["B_SPLINE_CURVE_WITH_KNOTS"])?;
     let s = &text[r.clone()];
     // The knots: the last parenthesised list of reals in the statement.
     let mut best = None;
