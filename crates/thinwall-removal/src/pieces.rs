@@ -4,7 +4,10 @@
 //!
 //! Supported: planes at any angle, cylinders whose axis is square to up
 //! (foot fillets, holes through upright walls; cut at their silhouettes),
-//! cones about an axis along up (countersinks, drafted bosses). Vertical
+//! cones about an axis along up (countersinks, drafted bosses), tori about
+//! an axis along up and spheres, each face within one half (above or below
+//! its equator: the corner of a pocket where its corner radius meets its
+//! floor fillet, a blended hole edge, a spherical dimple). Vertical
 //! faces (planes along up, cylinders about an axis along up) project to
 //! curves and carry no volume. Any other surface makes the removal plan
 //! unavailable, with the face named.
@@ -13,7 +16,7 @@ use super::sample::face_loop_points;
 use super::RemovalError;
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Orient, Polygon, Rect};
 use thinwall_brep::{FaceId, Part};
-use thinwall_geom::{Frame, Point3, Surface};
+use thinwall_geom::{Frame, Point3, Surface, Vector3};
 
 /// |n·up| below this: the face is vertical (projects to a curve).
 const VERTICAL_EPS: f64 = 1e-9;
@@ -60,6 +63,18 @@ pub enum Height {
         #[serde(skip)]
         pad: [f64; 3],
     },
+    /// Half of a torus about a vertical axis through `c` (a sphere when
+    /// `big_r` is 0): `z = zc + sign·√(r² − (ρ − R)²)`, ρ the distance from
+    /// the axis; the upper half (`sign` +1) or the lower one.
+    Revolved {
+        c: [f64; 2],
+        zc: f64,
+        big_r: f64,
+        r: f64,
+        sign: f64,
+        #[serde(skip)]
+        pad: [f64; 1],
+    },
 }
 
 /// A graph piece of one face.
@@ -91,7 +106,8 @@ fn unsupported(part: &Part, f: FaceId, why: &str) -> RemovalError {
     }
 }
 
-fn face_pieces(part: &Part, f: FaceId, frame: &Frame) -> Result<Vec<Piece>, RemovalError> {
+/// The graph pieces of one face of `part` in `frame` (z = up).
+pub fn face_pieces(part: &Part, f: FaceId, frame: &Frame) -> Result<Vec<Piece>, RemovalError> {
     let face = part.face(f);
     let sense = if face.same_sense { 1.0 } else { -1.0 };
     let local = |p: &Point3| frame.to_local(p);
@@ -118,6 +134,32 @@ fn face_pieces(part: &Part, f: FaceId, frame: &Frame) -> Result<Vec<Piece>, Remo
                 return Err(unsupported(part, f, "a cylinder tilted to the tool axis"));
             }
             cylinder_pieces(part, f, frame, cf, *radius, sense)
+        }
+        Surface::Torus {
+            frame: tf,
+            major_radius,
+            minor_radius,
+        } => {
+            let a = frame.vector_to_local(&tf.z);
+            if a.z.abs() < 1.0 - VERTICAL_EPS {
+                return Err(unsupported(
+                    part,
+                    f,
+                    "a torus whose axis is not the tool axis",
+                ));
+            }
+            revolved_piece(
+                part,
+                f,
+                frame,
+                &tf.origin,
+                *major_radius,
+                *minor_radius,
+                sense,
+            )
+        }
+        Surface::Sphere { frame: sf, radius } => {
+            revolved_piece(part, f, frame, &sf.origin, 0.0, *radius, sense)
         }
         Surface::Cone { frame: cf, .. } => {
             let a = frame.vector_to_local(&cf.z);
@@ -187,6 +229,18 @@ impl Height {
         }
     }
 
+    /// `z = zc + sign·√(r² − (ρ − R)²)` about `c`.
+    pub fn revolved(c: [f64; 2], zc: f64, big_r: f64, r: f64, sign: f64) -> Self {
+        Height::Revolved {
+            c,
+            zc,
+            big_r,
+            r,
+            sign,
+            pad: [0.0; 1],
+        }
+    }
+
     /// Distance across a cylinder's axis (0 for the others).
     pub fn across(&self, x: f64, y: f64) -> f64 {
         match *self {
@@ -204,6 +258,17 @@ impl Height {
                 o[2] + sign * (r * r - u * u).max(0.0).sqrt()
             }
             Height::Cone { c, z0, k, .. } => z0 + k * (x - c[0]).hypot(y - c[1]),
+            Height::Revolved {
+                c,
+                zc,
+                big_r,
+                r,
+                sign,
+                ..
+            } => {
+                let d = (x - c[0]).hypot(y - c[1]) - big_r;
+                zc + sign * (r * r - d * d).max(0.0).sqrt()
+            }
         }
     }
 
@@ -216,6 +281,17 @@ impl Height {
     /// The lowest and highest height over a region: at its corners, and
     /// at a half cylinder's crest where the region spans the axis.
     pub fn range_over(&self, region: &MultiPolygon<f64>) -> [f64; 2] {
+        if let Height::Revolved {
+            c,
+            zc,
+            big_r,
+            r,
+            sign,
+            ..
+        } = *self
+        {
+            return revolved_range(region, c, zc, big_r, r, sign);
+        }
         let corners = || region.0.iter().flat_map(|p| p.exterior().0.iter());
         let mut z = [f64::INFINITY, f64::NEG_INFINITY];
         for c in corners() {
@@ -527,6 +603,204 @@ fn s_range(region: &MultiPolygon<f64>) -> (f64, f64) {
 
 /// A cone about a vertical axis: one piece, its height linear in the
 /// distance to the axis.
+/// The height range of a revolved half over a region: its height falls as
+/// |ρ − R| grows, so the extremes are at the region's nearest and farthest
+/// distances from the axis (the nearest on an edge, or 0 where the region
+/// holds the axis) and at ρ = R where the region spans it.
+fn revolved_range(
+    region: &MultiPolygon<f64>,
+    c: [f64; 2],
+    zc: f64,
+    big_r: f64,
+    r: f64,
+    sign: f64,
+) -> [f64; 2] {
+    use geo::Contains;
+    let (mut near, mut far) = (f64::INFINITY, 0.0f64);
+    for p in &region.0 {
+        for ring in std::iter::once(p.exterior()).chain(p.interiors()) {
+            for w in ring.0.windows(2) {
+                let (a, b) = (
+                    (w[0].x - c[0], w[0].y - c[1]),
+                    (w[1].x - c[0], w[1].y - c[1]),
+                );
+                far = far.max(a.0.hypot(a.1));
+                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+                let len2 = dx * dx + dy * dy;
+                let t = if len2 > 0.0 {
+                    (-(a.0 * dx + a.1 * dy) / len2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                near = near.min((a.0 + t * dx).hypot(a.1 + t * dy));
+            }
+        }
+    }
+    if region.contains(&geo::Point::new(c[0], c[1])) {
+        near = 0.0;
+    }
+    if !near.is_finite() {
+        return [zc, zc];
+    }
+    let z = |d: f64| zc + sign * (r * r - d * d).max(0.0).sqrt();
+    let d_far = (near - big_r).abs().max((far - big_r).abs());
+    let d_near = if near <= big_r && big_r <= far {
+        0.0
+    } else {
+        (near - big_r).abs().min((far - big_r).abs())
+    };
+    let (a, b) = (z(d_far), z(d_near));
+    [a.min(b), a.max(b)]
+}
+
+/// Whether a face of a torus or sphere whose boundary lies in one half
+/// (`sign`) still reaches across the equator: a cap or zone bounded by
+/// circles of latitude only (a dome over a circle below the equator has
+/// the same boundary as the bowl under it). Each loop that is a circle of
+/// latitude says which way the face goes from it — the loop runs with the
+/// face on its left seen from the outward normal, `sense` times the
+/// surface's, which at the loop points up the meridian when it turns
+/// counter-clockwise seen from above on the tube's outer side (ρ > R).
+/// The face goes on past the farthest such circle toward the equator
+/// unless another circle beyond it turns it back.
+fn crosses_equator(
+    loops: &[Vec<Point3>],
+    frame: &Frame,
+    o: &Vector3,
+    big_r: f64,
+    sign: f64,
+    sense: f64,
+    tol: f64,
+) -> bool {
+    // (height of the circle, whether the face goes up from it)
+    let mut circles: Vec<(f64, bool)> = Vec::new();
+    for l in loops {
+        let local: Vec<Vector3> = l.iter().map(|p| frame.to_local(p)).collect();
+        let z = local.iter().map(|p| p.z).sum::<f64>() / local.len().max(1) as f64;
+        if local.iter().any(|p| (p.z - z).abs() > tol) {
+            continue;
+        }
+        let xy: Vec<(f64, f64)> = local.iter().map(|p| (p.x, p.y)).collect();
+        let rho = local
+            .iter()
+            .map(|p| (p.x - o.x).hypot(p.y - o.y))
+            .sum::<f64>()
+            / local.len() as f64;
+        let outer = if rho >= big_r { 1.0 } else { -1.0 };
+        let up = sense * signed_area(&xy).signum() * outer > 0.0;
+        circles.push((z, up));
+    }
+    // In the upper half the face must not go down past its lowest circle
+    // without a circle below turning it back; in the lower half, up.
+    let toward_equator = |&(z, up): &(f64, bool)| {
+        let goes = if sign > 0.0 { !up } else { up };
+        goes && !circles.iter().any(|&(z2, up2)| {
+            if sign > 0.0 {
+                z2 < z - tol && up2
+            } else {
+                z2 > z + tol && !up2
+            }
+        })
+    };
+    circles.iter().any(toward_equator)
+}
+
+/// The signed area of a closed polygon (counter-clockwise positive).
+fn signed_area(pts: &[(f64, f64)]) -> f64 {
+    let n = pts.len();
+    0.5 * (0..n)
+        .map(|i| {
+            let (p, q) = (pts[i], pts[(i + 1) % n]);
+            p.0 * q.1 - q.0 * p.1
+        })
+        .sum::<f64>()
+}
+
+/// A torus about a vertical axis (or a sphere, `big_r` 0) whose face lies
+/// within one half, above or below its equator: one graph piece over the
+/// projection of its loops.
+fn revolved_piece(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    centre: &Point3,
+    big_r: f64,
+    r: f64,
+    sense: f64,
+) -> Result<Vec<Piece>, RemovalError> {
+    let o = frame.to_local(centre);
+    let loops = face_loop_points(part, f);
+    let tol = 1e-6 * r.max(1.0);
+    let (mut above, mut below) = (false, false);
+    for p in loops.iter().flatten() {
+        let dz = frame.to_local(p).z - o.z;
+        above |= dz > tol;
+        below |= dz < -tol;
+    }
+    let sign = match (above, below) {
+        (true, false) => 1.0,
+        (false, true) => -1.0,
+        (true, true) => {
+            return Err(unsupported(
+                part,
+                f,
+                "a torus or sphere face across its equator (not split there yet)",
+            ))
+        }
+        // Bounded by its equator (a hemisphere, a torus's upper or lower
+        // band): the outermost loop runs with the face on its left seen
+        // from the outward normal, which there is `sense` times the
+        // radial direction, so the face is above the loop when the loop
+        // turns counter-clockwise seen from above for sense +1.
+        (false, false) => {
+            let turn = loops
+                .iter()
+                .map(|l| {
+                    let pts: Vec<(f64, f64)> = l
+                        .iter()
+                        .map(|p| {
+                            let q = frame.to_local(p);
+                            (q.x, q.y)
+                        })
+                        .collect();
+                    signed_area(&pts)
+                })
+                .max_by(|a, b| a.abs().total_cmp(&b.abs()))
+                .unwrap_or(0.0);
+            if turn == 0.0 {
+                return Err(unsupported(
+                    part,
+                    f,
+                    "a torus or sphere face without a boundary",
+                ));
+            }
+            sense * turn.signum()
+        }
+    };
+    if crosses_equator(&loops, frame, &o, big_r, sign, sense, tol) {
+        return Err(unsupported(
+            part,
+            f,
+            "a torus or sphere face across its equator (not split there yet)",
+        ));
+    }
+    // The surface's normal points away from the tube's centre line: up on
+    // the upper half.
+    let facing = if sign * sense > 0.0 {
+        Facing::Up
+    } else {
+        Facing::Down
+    };
+    let region = project(part, f, frame);
+    Ok(finish(
+        f,
+        part.face(f).step_id,
+        facing,
+        region,
+        Height::revolved([o.x, o.y], o.z, big_r, r, sign),
+    ))
+}
+
 fn cone_piece(
     part: &Part,
     f: FaceId,
