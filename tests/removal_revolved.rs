@@ -4,8 +4,11 @@
 //! holds the volume under it that its own triangles (the watertight
 //! tessellation, an independent computation) hold, and a face that would
 //! need a split at its equator is refused by name, never given a wrong
-//! piece. NIST STC 08 — tori and spheres, no tilted face — gets a whole
-//! removal whose part volume is the tessellation's.
+//! piece; a sphere face across its equator bounded by circles of latitude
+//! is split there. NIST STC 08 — tori and spheres, no tilted face — gets a
+//! whole removal whose part volume is the tessellation's; a removal whose
+//! blocks do not add up (STC 06 today) is refused, naming faces, never
+//! returned.
 
 mod common;
 
@@ -137,4 +140,30 @@ fn nist_stc_08_gets_a_whole_removal_of_the_tessellations_volume() {
         (removed - want).abs() <= 1e-6 * r.stock_volume,
         "{removed} {want}"
     );
+}
+
+#[test]
+fn a_removal_that_does_not_add_up_is_refused_naming_faces() {
+    let path = common::shared_data().join("nist/nist_stc_06_asme1_ap242-e3.stp");
+    let (part, _) = thinwall_step::read_file(path).unwrap();
+    let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
+    let bb = a.bounding_box();
+    let stock = StockShape::Block {
+        lo: bb.min,
+        hi: bb.max,
+    };
+    match Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal()) {
+        Ok(r) => {
+            let removed = r.removed_volume() + r.sliver_volume;
+            let want = r.stock_volume - r.part_volume;
+            assert!(
+                (removed - want).abs() <= 1e-6 * r.stock_volume,
+                "{removed} {want}"
+            );
+        }
+        Err(e) => {
+            assert_eq!(e.code(), "inconsistent", "{e}");
+            assert!(e.to_string().contains("faces #"), "{e}");
+        }
+    }
 }

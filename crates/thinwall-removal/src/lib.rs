@@ -37,6 +37,10 @@ pub enum RemovalError {
     UnsupportedFace { step_id: u64, reason: String },
     #[error("the stock does not contain the part over {area_mm2:.3} mm² of its footprint")]
     StockTooSmall { area_mm2: f64 },
+    /// The blocks do not add up to stock − part (pieces whose projections
+    /// overlap where they should meet): refused rather than a wrong volume.
+    #[error("the removal does not add up: {volume_mm3:.3} mm³ off stock − part, worst over faces {}", faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>().join(", "))]
+    Inconsistent { volume_mm3: f64, faces: Vec<u64> },
 }
 
 impl RemovalError {
@@ -44,6 +48,7 @@ impl RemovalError {
         match self {
             RemovalError::UnsupportedFace { .. } => "unsupported_face",
             RemovalError::StockTooSmall { .. } => "stock_too_small",
+            RemovalError::Inconsistent { .. } => "inconsistent",
         }
     }
 }
@@ -340,6 +345,17 @@ impl Removal {
             StockShape::Block { lo, hi } => (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]),
             StockShape::Solid(_) => signed_volume(&stock_pieces),
         };
+        let removed = blocks.iter().map(|b| b.volume).sum::<f64>() + sliver_volume;
+        if (removed - (stock_volume - part_volume)).abs() > 1e-6 * stock_volume.abs() {
+            return Err(inconsistent(
+                removed - (stock_volume - part_volume),
+                &cells,
+                &blocks,
+                &part_pieces,
+                &stock_pieces,
+                stock,
+            ));
+        }
         let vertical = pieces::vertical_faces(part, &frame);
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
         let bottom = match stock {
@@ -417,6 +433,70 @@ impl Removal {
 
 /// A solid's volume from its pieces: Σ ±∫∫ h (divergence theorem with
 /// the field (0, 0, z)).
+/// The error of a removal whose blocks do not add up, naming the part's
+/// faces over the cell that is most off.
+fn inconsistent(
+    off: f64,
+    cells: &[cells::Cell],
+    blocks: &[Block],
+    part_pieces: &[Piece],
+    stock_pieces: &[Piece],
+    stock: &StockShape,
+) -> RemovalError {
+    let np = part_pieces.len();
+    let signed = |p: &Piece, c: &cells::Cell| {
+        let f = flux::flux(&p.height, &c.poly);
+        if p.facing == Facing::Up {
+            f
+        } else {
+            -f
+        }
+    };
+    let mut by_cell = vec![0.0; cells.len()];
+    for b in blocks {
+        by_cell[b.cell] += b.volume;
+    }
+    let worst = cells
+        .iter()
+        .enumerate()
+        .map(|(ci, c)| {
+            let stock_col = match stock {
+                StockShape::Block { lo, hi } => (hi[2] - lo[2]) * c.area,
+                StockShape::Solid(_) => c
+                    .covers
+                    .iter()
+                    .filter(|&&k| k >= np && k < np + stock_pieces.len())
+                    .map(|&k| signed(&stock_pieces[k - np], c))
+                    .sum(),
+            };
+            let part_col: f64 = c
+                .covers
+                .iter()
+                .filter(|&&k| k < np)
+                .map(|&k| signed(&part_pieces[k], c))
+                .sum();
+            (ci, (stock_col - part_col - by_cell[ci]).abs())
+        })
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(ci, _)| ci);
+    let mut faces: Vec<u64> = worst
+        .map(|ci| {
+            cells[ci]
+                .covers
+                .iter()
+                .filter(|&&k| k < np)
+                .map(|&k| part_pieces[k].step_id)
+                .collect()
+        })
+        .unwrap_or_default();
+    faces.sort_unstable();
+    faces.dedup();
+    RemovalError::Inconsistent {
+        volume_mm3: off,
+        faces,
+    }
+}
+
 pub fn signed_volume(pieces: &[Piece]) -> f64 {
     pieces
         .iter()

@@ -705,6 +705,90 @@ fn crosses_equator(
     circles.iter().any(toward_equator)
 }
 
+/// A sphere face across its equator bounded by circles of latitude only (a
+/// dome over a circle below its equator, a zone, a ball): split at the
+/// equator into its upper and lower halves, each over the annulus (or disk)
+/// between its boundary circle's projection and the equator's. Any other
+/// boundary is refused by name.
+#[allow(clippy::too_many_arguments)]
+fn sphere_zone(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    o: &Vector3,
+    r: f64,
+    sense: f64,
+    loops: &[Vec<Point3>],
+    tol: f64,
+) -> Result<Vec<Piece>, RemovalError> {
+    let refuse = || {
+        unsupported(
+            part,
+            f,
+            "a sphere face across its equator not bounded by circles of latitude",
+        )
+    };
+    // Each loop: its ring in the plane, and whether it bounds the upper
+    // half from above (the face goes down from it) or the lower from below.
+    let (mut top, mut bottom) = (None, None);
+    for l in loops {
+        let local: Vec<Vector3> = l.iter().map(|p| frame.to_local(p)).collect();
+        let z = local.iter().map(|p| p.z).sum::<f64>() / local.len().max(1) as f64;
+        if local.iter().any(|p| (p.z - z).abs() > tol) {
+            return Err(refuse());
+        }
+        let xy: Vec<(f64, f64)> = local.iter().map(|p| (p.x, p.y)).collect();
+        let up = sense * signed_area(&xy).signum() > 0.0;
+        let slot = match (up, z > o.z) {
+            (false, true) => &mut top,
+            (true, false) => &mut bottom,
+            _ => return Err(refuse()),
+        };
+        if slot.replace(ring(xy.into_iter())).is_some() {
+            return Err(refuse());
+        }
+    }
+    let equator = ring(circle_points(o.x, o.y, r));
+    let half = |cap: Option<LineString<f64>>, sign: f64| {
+        let mut rings = vec![equator.clone()];
+        rings.extend(cap);
+        let facing = if sign * sense > 0.0 {
+            Facing::Up
+        } else {
+            Facing::Down
+        };
+        finish(
+            f,
+            part.face(f).step_id,
+            facing,
+            polygon_of_rings(rings),
+            Height::revolved([o.x, o.y], o.z, 0.0, r, sign),
+        )
+    };
+    let mut out = half(top, 1.0);
+    out.extend(half(bottom, -1.0));
+    Ok(out)
+}
+
+/// A circle about `(cx, cy)` as points whose polygon keeps the circle's
+/// area (chords with their midpoints pushed out by 4/3 of the sagitta,
+/// as `sample.rs` does for edges: 64 chords).
+fn circle_points(cx: f64, cy: f64, r: f64) -> impl Iterator<Item = (f64, f64)> {
+    const CHORDS: usize = 64;
+    let step = std::f64::consts::TAU / CHORDS as f64;
+    (0..2 * CHORDS).map(move |k| {
+        let t = 0.5 * step * k as f64;
+        let rr = if k % 2 == 0 {
+            r
+        } else {
+            // The chord's midpoint pushed out by 4/3 of the sagitta.
+            let mid = r * (0.5 * step).cos();
+            mid + (r - mid) * 4.0 / 3.0
+        };
+        (cx + rr * t.cos(), cy + rr * t.sin())
+    })
+}
+
 /// The signed area of a closed polygon (counter-clockwise positive).
 fn signed_area(pts: &[(f64, f64)]) -> f64 {
     let n = pts.len();
@@ -740,11 +824,14 @@ fn revolved_piece(
     let sign = match (above, below) {
         (true, false) => 1.0,
         (false, true) => -1.0,
+        (true, true) if big_r == 0.0 => {
+            return sphere_zone(part, f, frame, &o, r, sense, &loops, tol);
+        }
         (true, true) => {
             return Err(unsupported(
                 part,
                 f,
-                "a torus or sphere face across its equator (not split there yet)",
+                "a torus face across its equator (not split there yet)",
             ))
         }
         // Bounded by its equator (a hemisphere, a torus's upper or lower
@@ -778,10 +865,13 @@ fn revolved_piece(
         }
     };
     if crosses_equator(&loops, frame, &o, big_r, sign, sense, tol) {
+        if big_r == 0.0 {
+            return sphere_zone(part, f, frame, &o, r, sense, &loops, tol);
+        }
         return Err(unsupported(
             part,
             f,
-            "a torus or sphere face across its equator (not split there yet)",
+            "a torus face across its equator (not split there yet)",
         ));
     }
     // The surface's normal points away from the tube's centre line: up on
