@@ -152,7 +152,8 @@ fn a_removal_that_does_not_add_up_is_refused_naming_faces() {
         lo: bb.min,
         hi: bb.max,
     };
-    match Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal()) {
+    match Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal()).and_then(Removal::checked)
+    {
         Ok(r) => {
             let removed = r.removed_volume() + r.sliver_volume;
             let want = r.stock_volume - r.part_volume;

@@ -61,7 +61,8 @@ pub fn plan_setup(
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
-    let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?;
+    let removal =
+        Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
     let holes = hole_sites(features, &frame, lib);
     Ok((
         frame,

@@ -53,7 +53,7 @@ pub fn removal_plan(
         notes,
         ..Default::default()
     };
-    let r = match Removal::new(part, frame, &stock, &bands, size) {
+    let r = match Removal::new(part, frame, &stock, &bands, size).and_then(Removal::checked) {
         Ok(r) => r,
         Err(e) => {
             summary.unavailable = Some(e);

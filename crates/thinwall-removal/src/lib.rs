@@ -106,6 +106,9 @@ pub struct Removal {
     pub sliver_volume: f64,
     /// The part's size (its bounding diagonal), mm: tolerances scale with it.
     pub size: f64,
+    /// Why the blocks do not add up to stock − part, if they do not (see
+    /// [`Removal::checked`]).
+    pub inconsistency: Option<RemovalError>,
 }
 
 pub use thinwall_geom::tolerance::SLIVER_WIDTH;
@@ -346,16 +349,17 @@ impl Removal {
             StockShape::Solid(_) => signed_volume(&stock_pieces),
         };
         let removed = blocks.iter().map(|b| b.volume).sum::<f64>() + sliver_volume;
-        if (removed - (stock_volume - part_volume)).abs() > 1e-6 * stock_volume.abs() {
-            return Err(inconsistent(
+        let off = (removed - (stock_volume - part_volume)).abs() > 1e-6 * stock_volume.abs();
+        let inconsistency = off.then(|| {
+            inconsistent(
                 removed - (stock_volume - part_volume),
                 &cells,
                 &blocks,
                 &part_pieces,
                 &stock_pieces,
                 stock,
-            ));
-        }
+            )
+        });
         let vertical = pieces::vertical_faces(part, &frame);
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
         let bottom = match stock {
@@ -376,7 +380,18 @@ impl Removal {
             blocks,
             stock_volume,
             part_volume,
+            inconsistency,
         })
+    }
+
+    /// The decomposition, if its blocks add up to stock − part (to 1e-6
+    /// of the stock); else [`RemovalError::Inconsistent`], naming faces. A
+    /// plan or operations use only a checked removal: never a wrong volume.
+    pub fn checked(self) -> Result<Self, RemovalError> {
+        match self.inconsistency {
+            Some(e) => Err(e),
+            None => Ok(self),
+        }
     }
 
     /// The lowest and highest height of a bound over a region, mm.
