@@ -46,10 +46,16 @@ fn mutants() -> Vec<Mutant> {
     all
 }
 
-/// What went wrong with one mutant, if anything.
-fn judge(m: &Mutant) -> Option<String> {
+/// What went wrong with one mutant, if anything, and whether it was read.
+fn judge(m: &Mutant) -> (bool, Option<String>) {
+    let read = LoadedPart::read_bytes(&m.bytes, &m.name);
+    let ok = read.is_ok();
+    (ok, judge_read(m, read))
+}
+
+fn judge_read(m: &Mutant, read: Result<LoadedPart, StudyError>) -> Option<String> {
     let bad = |e: &StudyError| e.kind() == ErrorKind::Internal;
-    let loaded = match LoadedPart::read_bytes(&m.bytes, &m.name) {
+    let loaded = match read {
         Err(e) => {
             if bad(&e) {
                 return Some(format!("internal error on reading: {e}"));
@@ -95,17 +101,16 @@ fn judge(m: &Mutant) -> Option<String> {
 fn every_mutated_file_ends_with_a_typed_error_or_a_result_never_a_panic() {
     let all = mutants();
     assert!(all.len() >= 60, "{} mutants", all.len());
-    let read = all
-        .iter()
-        .filter(|m| LoadedPart::read_bytes(&m.bytes, &m.name).is_ok())
-        .count();
+    let judged: Vec<(bool, Option<String>)> = all.iter().map(judge).collect();
+    let read = judged.iter().filter(|j| j.0).count();
     eprintln!(
         "{} mutated files, {read} of them read and run through every command",
         all.len()
     );
     let failures: Vec<String> = all
         .iter()
-        .filter_map(|m| judge(m).map(|why| format!("{} ({}): {why}", m.name, m.class)))
+        .zip(judged)
+        .filter_map(|(m, (_, why))| why.map(|why| format!("{} ({}): {why}", m.name, m.class)))
         .collect();
     assert!(
         failures.is_empty(),

@@ -6,6 +6,8 @@
 
 mod common;
 
+use thinwall_analysis::parallel::Work;
+
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_geom::Vector3;
 use thinwall_ops::drilling::{hole_sites, DrillKind};
@@ -31,7 +33,7 @@ fn plan(text: &str, up: [f64; 3]) -> SetupOperations {
     .unwrap();
     let lib = ToolLibrary::default_tools();
     let holes = hole_sites(&common::features_in_setup(&a), &frame, &lib);
-    operations(&r, &lib, None, &holes, serial())
+    operations(&r, &lib, None, &holes, Work::serial())
 }
 
 fn text() -> String {
@@ -184,15 +186,5 @@ fn operations_do_not_depend_on_pose_or_face_order() {
             }
         }
         assert_eq!(p.tool_changes, base.tool_changes, "{what}");
-    }
-}
-
-/// Work on the calling thread, with no time limit.
-fn serial() -> thinwall_analysis::parallel::Work<'static> {
-    static NO_LIMIT: std::sync::OnceLock<thinwall_analysis::parallel::Budget> =
-        std::sync::OnceLock::new();
-    thinwall_analysis::parallel::Work {
-        parallel: false,
-        budget: NO_LIMIT.get_or_init(Default::default),
     }
 }

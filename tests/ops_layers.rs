@@ -5,6 +5,8 @@
 
 mod common;
 
+use thinwall_analysis::parallel::Work;
+
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_geom::Vector3;
 use thinwall_ops::layers::{
@@ -257,7 +259,7 @@ fn operations_keep_their_order_and_add_up() {
         let holes =
             thinwall_ops::drilling::hole_sites(&common::features_in_setup(&a), &r.frame, &lib);
         drilled_holes += holes.iter().filter(|h| h.drill.is_some()).count();
-        let plan = operations(&r, &lib, None, &holes, serial());
+        let plan = operations(&r, &lib, None, &holes, Work::serial());
         let what = path.display().to_string();
         for op in &plan.operations {
             assert!(
@@ -365,14 +367,4 @@ fn operations_keep_their_order_and_add_up() {
         "OPS {ran} parts, fewer changes on {fewer}, {finishes} floor finishes, {wall_finishes} wall finishes, {drilled_holes} holes drilled"
     );
     assert!(ran >= 30);
-}
-
-/// Work on the calling thread, with no time limit.
-fn serial() -> thinwall_analysis::parallel::Work<'static> {
-    static NO_LIMIT: std::sync::OnceLock<thinwall_analysis::parallel::Budget> =
-        std::sync::OnceLock::new();
-    thinwall_analysis::parallel::Work {
-        parallel: false,
-        budget: NO_LIMIT.get_or_init(Default::default),
-    }
 }

@@ -8,45 +8,14 @@
 #[allow(dead_code)]
 mod mutate;
 
+mod common;
+
+use common::{build_example, crate_dir, tool};
 use std::path::PathBuf;
 use std::process::Command;
 
-fn crate_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// The directory of the `libthinwall.so` built with this test.
-fn lib_dir() -> PathBuf {
-    let exe = std::env::current_exe().unwrap();
-    let deps = exe.parent().unwrap().to_path_buf();
-    [deps.clone(), deps.parent().unwrap().to_path_buf()]
-        .into_iter()
-        .find(|d| d.join("libthinwall.so").exists())
-        .expect("libthinwall.so")
-}
-
-fn tool(name: &str) -> bool {
-    Command::new(name)
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success())
-}
-
-fn build_host(out: &PathBuf) {
-    let lib = lib_dir();
-    let status = Command::new("gcc")
-        .args(["-Wall", "-Wextra", "-Werror", "-std=c11", "-g"])
-        .arg("-I")
-        .arg(crate_dir().join("include"))
-        .arg(crate_dir().join("examples/bad_input.c"))
-        .arg("-L")
-        .arg(&lib)
-        .arg(format!("-Wl,--disable-new-dtags,-rpath,{}", lib.display()))
-        .args(["-lthinwall", "-o"])
-        .arg(out)
-        .status()
-        .expect("gcc");
-    assert!(status.success(), "bad_input.c does not compile");
+fn build_host(out: &std::path::Path) {
+    build_example("bad_input.c", out);
 }
 
 /// One mutant of each class in `dir`; the large assembly classes apart
@@ -56,19 +25,9 @@ fn corpus(dir: &std::path::Path) -> (Vec<PathBuf>, Vec<PathBuf>) {
     let text = std::fs::read_to_string(shared).unwrap();
     let assembly =
         std::fs::read_to_string(crate_dir().join("../fixtures/bracket_assembly.step")).unwrap();
-    let mut all = mutate::corpus("filleted_rib_04", &text);
-    all.extend(mutate::assembly_corpus(
-        "bracket_assembly",
-        &assembly,
-        15,
-        20_000,
-    ));
-    let mut seen = std::collections::HashSet::new();
     let (mut small, mut large) = (Vec::new(), Vec::new());
-    for m in all.into_iter().filter(|m| seen.insert(m.class)) {
-        let path = dir.join(format!("{}.step", m.name));
-        std::fs::write(&path, &m.bytes).unwrap();
-        match m.class {
+    for (path, class, _) in mutate::one_of_each_class(dir, "filleted_rib_04", &text, &assembly) {
+        match class {
             "amplifying_tree" | "mapped_items" => large.push(path),
             _ => small.push(path),
         }

@@ -3,22 +3,10 @@
 //! runs without `LD_LIBRARY_PATH`; the shared library of a release build
 //! is small (no debug info).
 
-use std::path::PathBuf;
+mod common;
+
+use common::{crate_dir, lib_dir};
 use std::process::Command;
-
-fn crate_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// The directory of the libraries built with this test.
-fn lib_dir() -> PathBuf {
-    let exe = std::env::current_exe().unwrap();
-    let deps = exe.parent().unwrap().to_path_buf();
-    [deps.clone(), deps.parent().unwrap().to_path_buf()]
-        .into_iter()
-        .find(|d| d.join("libthinwall.so").exists() && d.join("libthinwall.a").exists())
-        .expect("libthinwall.so and .a")
-}
 
 #[test]
 fn a_host_built_with_pkg_config_runs_from_the_installed_library() {

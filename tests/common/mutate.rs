@@ -385,3 +385,25 @@ fn mapped_items(text: &str, n: usize) -> String {
     ));
     append(text, &extra)
 }
+
+/// One mutant of each class — of `part` (a single part's text) and of
+/// `assembly` (see [`assembly_corpus`]) — written to `dir` as
+/// `<name>.step`: each file's path, class and expected code.
+pub fn one_of_each_class(
+    dir: &std::path::Path,
+    base: &str,
+    part: &str,
+    assembly: &str,
+) -> Vec<(std::path::PathBuf, &'static str, Option<&'static str>)> {
+    let mut all = corpus(base, part);
+    all.extend(assembly_corpus("bracket_assembly", assembly, 15, 20_000));
+    let mut seen = std::collections::HashSet::new();
+    all.into_iter()
+        .filter(|m| seen.insert(m.class))
+        .map(|m| {
+            let path = dir.join(format!("{}.step", m.name));
+            std::fs::write(&path, &m.bytes).expect("a writable directory");
+            (path, m.class, m.expect)
+        })
+        .collect()
+}

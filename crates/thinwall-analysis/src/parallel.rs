@@ -99,6 +99,22 @@ pub struct Work<'b> {
     pub budget: &'b Budget,
 }
 
+/// No deadline, for [`Work::serial`].
+static UNLIMITED: Budget = Budget {
+    deadline: Mutex::new(None),
+};
+
+impl Work<'static> {
+    /// Work on the calling thread with no time limit (a caller outside a
+    /// study: a test, a tool).
+    pub fn serial() -> Self {
+        Work {
+            parallel: false,
+            budget: &UNLIMITED,
+        }
+    }
+}
+
 impl Work<'_> {
     /// `f` of each of `items`, in their order; on rayon's workers (one item
     /// per task: items may cost very different amounts) when parallel. The

@@ -33,21 +33,9 @@ fn one_of_each_class(dir: &Path) -> Vec<(PathBuf, Option<&'static str>)> {
     let part = repo("../shared/data/thinwall/filleted_rib_04.step");
     let text = std::fs::read_to_string(part).unwrap();
     let assembly = std::fs::read_to_string(repo("fixtures/bracket_assembly.step")).unwrap();
-    let mut all = mutate::corpus("filleted_rib_04", &text);
-    all.extend(mutate::assembly_corpus(
-        "bracket_assembly",
-        &assembly,
-        15,
-        20_000,
-    ));
-    let mut seen = std::collections::HashSet::new();
-    all.into_iter()
-        .filter(|m| seen.insert(m.class))
-        .map(|m| {
-            let path = dir.join(format!("{}.step", m.name));
-            std::fs::write(&path, &m.bytes).unwrap();
-            (path, m.expect)
-        })
+    mutate::one_of_each_class(dir, "filleted_rib_04", &text, &assembly)
+        .into_iter()
+        .map(|(path, _, expect)| (path, expect))
         .collect()
 }
 

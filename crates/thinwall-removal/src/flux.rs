@@ -84,27 +84,8 @@ pub fn flux(h: &Height, p: &Polygon<f64>) -> f64 {
             });
             o[2] * area(p) + sign * half
         }
-        Height::Cone { c, z0, k, .. } => {
-            // ∫∫ ρ dA = ∮ (ρ/3)(x dy − y dx) about the axis.
-            let rho = region_sum(p, |ls| {
-                let (mut i, mut area) = (0.0, 0.0);
-                for w in ls.0.windows(2) {
-                    let (x0, y0) = (w[0].x - c[0], w[0].y - c[1]);
-                    let (x1, y1) = (w[1].x - c[0], w[1].y - c[1]);
-                    let cross = x0 * y1 - x1 * y0;
-                    area += 0.5 * cross;
-                    if cross == 0.0 {
-                        continue;
-                    }
-                    for_each_node(0.0, 1.0, EDGE_NODES, |t, wt| {
-                        let (x, y) = (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t);
-                        i += x.hypot(y) / 3.0 * cross * wt;
-                    });
-                }
-                (i, area)
-            });
-            z0 * area(p) + k * rho
-        }
+        // ∫∫ ρ dA: the radial field with F(ρ) = ρ/3.
+        Height::Cone { c, z0, k, .. } => z0 * area(p) + k * radial_flux(p, c, |rho| rho / 3.0),
         Height::Revolved {
             c,
             zc,
@@ -116,10 +97,8 @@ pub fn flux(h: &Height, p: &Polygon<f64>) -> f64 {
     }
 }
 
-/// `∫∫ √(r² − (ρ − R)²) dA` over a polygon about the axis through `c`: the
-/// radial field `F(ρ)·(x, y)` with `ρ² F(ρ) = ∫₀^ρ f(s) s ds` has
-/// divergence `f`, so the integral is `∮ F(ρ) (x dy − y dx)`; the inner
-/// integral is a closed form.
+/// `∫∫ √(r² − (ρ − R)²) dA` over a polygon about the axis through `c`, by
+/// [`radial_flux`] with `ρ² F(ρ)` in closed form.
 fn revolved_flux(p: &Polygon<f64>, c: [f64; 2], big_r: f64, r: f64) -> f64 {
     // ∫ (u + R) √(r² − u²) du, u = s − R.
     let prim = |u: f64| {
@@ -139,6 +118,13 @@ fn revolved_flux(p: &Polygon<f64>, c: [f64; 2], big_r: f64, r: f64) -> f64 {
             (prim(rho - big_r) - prim(u_lo)) / (rho * rho)
         }
     };
+    radial_flux(p, c, big_f)
+}
+
+/// `∫∫ f(ρ) dA` over a polygon, ρ the distance from `c`, given
+/// `F(ρ) = (1/ρ²) ∫₀^ρ f(s) s ds`: the field `F(ρ)·(x, y)` has divergence
+/// `f`, so the integral is `∮ F(ρ) (x dy − y dx)` along the rings.
+fn radial_flux(p: &Polygon<f64>, c: [f64; 2], big_f: impl Fn(f64) -> f64) -> f64 {
     region_sum(p, |ls| {
         let (mut i, mut area) = (0.0, 0.0);
         for w in ls.0.windows(2) {

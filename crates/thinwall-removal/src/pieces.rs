@@ -674,21 +674,9 @@ fn crosses_equator(
 ) -> bool {
     // (height of the circle, whether the face goes up from it)
     let mut circles: Vec<(f64, bool)> = Vec::new();
-    for l in loops {
-        let local: Vec<Vector3> = l.iter().map(|p| frame.to_local(p)).collect();
-        let z = local.iter().map(|p| p.z).sum::<f64>() / local.len().max(1) as f64;
-        if local.iter().any(|p| (p.z - z).abs() > tol) {
-            continue;
-        }
-        let xy: Vec<(f64, f64)> = local.iter().map(|p| (p.x, p.y)).collect();
-        let rho = local
-            .iter()
-            .map(|p| (p.x - o.x).hypot(p.y - o.y))
-            .sum::<f64>()
-            / local.len() as f64;
-        let outer = if rho >= big_r { 1.0 } else { -1.0 };
-        let up = sense * signed_area(&xy).signum() * outer > 0.0;
-        circles.push((z, up));
+    for c in loops.iter().filter_map(|l| latitude(l, frame, o, tol)) {
+        let outer = if c.rho >= big_r { 1.0 } else { -1.0 };
+        circles.push((c.z, sense * c.turn.signum() * outer > 0.0));
     }
     // In the upper half the face must not go down past its lowest circle
     // without a circle below turning it back; in the lower half, up.
@@ -732,19 +720,14 @@ fn sphere_zone(
     // half from above (the face goes down from it) or the lower from below.
     let (mut top, mut bottom) = (None, None);
     for l in loops {
-        let local: Vec<Vector3> = l.iter().map(|p| frame.to_local(p)).collect();
-        let z = local.iter().map(|p| p.z).sum::<f64>() / local.len().max(1) as f64;
-        if local.iter().any(|p| (p.z - z).abs() > tol) {
-            return Err(refuse());
-        }
-        let xy: Vec<(f64, f64)> = local.iter().map(|p| (p.x, p.y)).collect();
-        let up = sense * signed_area(&xy).signum() > 0.0;
-        let slot = match (up, z > o.z) {
+        let c = latitude(l, frame, o, tol).ok_or_else(refuse)?;
+        let up = sense * c.turn.signum() > 0.0;
+        let slot = match (up, c.z > o.z) {
             (false, true) => &mut top,
             (true, false) => &mut bottom,
             _ => return Err(refuse()),
         };
-        if slot.replace(ring(xy.into_iter())).is_some() {
+        if slot.replace(c.ring).is_some() {
             return Err(refuse());
         }
     }
@@ -789,15 +772,33 @@ fn circle_points(cx: f64, cy: f64, r: f64) -> impl Iterator<Item = (f64, f64)> {
     })
 }
 
-/// The signed area of a closed polygon (counter-clockwise positive).
-fn signed_area(pts: &[(f64, f64)]) -> f64 {
-    let n = pts.len();
-    0.5 * (0..n)
-        .map(|i| {
-            let (p, q) = (pts[i], pts[(i + 1) % n]);
-            p.0 * q.1 - q.0 * p.1
-        })
+/// A loop that is a circle of latitude about the vertical axis through
+/// `o`: its height, its ring in the plane, its mean distance from the axis
+/// and its turn (signed area, counter-clockwise seen from above positive).
+struct Latitude {
+    z: f64,
+    ring: LineString<f64>,
+    rho: f64,
+    turn: f64,
+}
+
+/// The loop as a circle of latitude, if all its points share a height.
+fn latitude(l: &[Point3], frame: &Frame, o: &Vector3, tol: f64) -> Option<Latitude> {
+    use geo::Area;
+    let local: Vec<Vector3> = l.iter().map(|p| frame.to_local(p)).collect();
+    let n = local.len().max(1) as f64;
+    let z = local.iter().map(|p| p.z).sum::<f64>() / n;
+    if local.iter().any(|p| (p.z - z).abs() > tol) {
+        return None;
+    }
+    let rho = local
+        .iter()
+        .map(|p| (p.x - o.x).hypot(p.y - o.y))
         .sum::<f64>()
+        / n;
+    let ring = ring(local.iter().map(|p| (p.x, p.y)));
+    let turn = Polygon::new(ring.clone(), vec![]).signed_area();
+    Some(Latitude { z, ring, rho, turn })
 }
 
 /// A torus about a vertical axis (or a sphere, `big_r` 0) whose face lies
@@ -842,16 +843,8 @@ fn revolved_piece(
         (false, false) => {
             let turn = loops
                 .iter()
-                .map(|l| {
-                    let pts: Vec<(f64, f64)> = l
-                        .iter()
-                        .map(|p| {
-                            let q = frame.to_local(p);
-                            (q.x, q.y)
-                        })
-                        .collect();
-                    signed_area(&pts)
-                })
+                .filter_map(|l| latitude(l, frame, &o, tol))
+                .map(|c| c.turn)
                 .max_by(|a, b| a.abs().total_cmp(&b.abs()))
                 .unwrap_or(0.0);
             if turn == 0.0 {

@@ -51,10 +51,13 @@ pub fn read(
     file: &str,
     limits: &ReadLimits,
 ) -> Result<(Part, ReadReport), StepError> {
-    refuse_cycles(bytes, file)?;
+    // One scan of the text's references serves the cycle check, the end of
+    // a truncated file and the dangling references.
+    let refs = References::scan(bytes);
+    refuse_cycles(&refs, file)?;
     let (model, report) = step_io::read(bytes).map_err(|e| StepError::Syntax {
         file: file.to_string(),
-        message: with_truncation(e.to_string(), bytes),
+        message: with_truncation(e.to_string(), bytes, &refs),
     })?;
     let mut out = ReadReport {
         entities_read: report.entities_read,
@@ -91,7 +94,7 @@ pub fn read(
             message: format!("step-io: {w}"),
         });
     }
-    for (referrer, missing) in id_scan_dangling(bytes, &out) {
+    for (referrer, missing) in dangling(&refs, &out) {
         out.dropped.push(ReadIssue {
             entity: Some(referrer),
             message: format!("refers to #{missing}, which the file does not define"),
@@ -106,12 +109,12 @@ pub fn read(
 
 /// A parse error at the end of the text, with where the text ends (a
 /// truncated file is the usual cause).
-fn with_truncation(message: String, bytes: &[u8]) -> String {
+fn with_truncation(message: String, bytes: &[u8], refs: &References) -> String {
     if !message.contains("end of file") {
         return message;
     }
     let lines = bytes.iter().filter(|b| **b == b'\n').count() + 1;
-    let last = References::scan(bytes).last_id();
+    let last = refs.last_id();
     match last {
         Some(id) => format!(
             "{message} (the text ends at line {lines}, after entity #{id}: is the file truncated?)"
@@ -122,8 +125,7 @@ fn with_truncation(message: String, bytes: &[u8]) -> String {
 
 /// Refuse a file whose references (or product usages) go round in a
 /// circle before step-io, which follows them recursively, sees it.
-fn refuse_cycles(bytes: &[u8], file: &str) -> Result<(), StepError> {
-    let refs = References::scan(bytes);
+fn refuse_cycles(refs: &References, file: &str) -> Result<(), StepError> {
     if let Some(c) = refs.cycle() {
         return Err(StepError::CyclicReference {
             file: file.to_string(),
@@ -139,15 +141,15 @@ fn refuse_cycles(bytes: &[u8], file: &str) -> Result<(), StepError> {
     Ok(())
 }
 
-/// Dangling references, looked for only when step-io dropped something
-/// because of one (the scan is a second pass over the text).
-fn id_scan_dangling(bytes: &[u8], report: &ReadReport) -> Vec<(u64, u64)> {
+/// Dangling references, named only when step-io dropped something because
+/// of one.
+fn dangling(refs: &References, report: &ReadReport) -> Vec<(u64, u64)> {
     if report
         .dropped
         .iter()
         .any(|d| d.message.contains("dangling"))
     {
-        crate::id_scan::dangling_references(bytes)
+        refs.dangling()
     } else {
         Vec::new()
     }

@@ -110,91 +110,9 @@ pub fn scan_ids(bytes: &[u8]) -> HashMap<&'static str, Vec<u64>> {
     out
 }
 
-/// Statements of the DATA section as `(id, body)`: the text after `#id =`
-/// up to its `;`, with strings and comments blanked (so a `#` inside them
-/// is not a reference).
-fn statements(bytes: &[u8]) -> Vec<(u64, Vec<u8>)> {
-    let mut out = Vec::new();
-    let mut current: Vec<u8> = Vec::new();
-    let (n, mut i) = (bytes.len(), 0);
-    while i < n {
-        match bytes[i] {
-            b'\'' => {
-                i += 1;
-                while i < n && !(bytes[i] == b'\'' && bytes.get(i + 1) != Some(&b'\'')) {
-                    i += if bytes[i] == b'\'' { 2 } else { 1 };
-                }
-                current.push(b' ');
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                i += 2;
-                while i + 1 < n && !(bytes[i] == b'*' && bytes[i + 1] == b'/') {
-                    i += 1;
-                }
-                i += 1;
-            }
-            b';' => {
-                let text = std::mem::take(&mut current);
-                if let Some((id, body)) = split_statement(&text) {
-                    out.push((id, body));
-                }
-            }
-            b => current.push(b),
-        }
-        i += 1;
-    }
-    out
-}
-
-/// `#id = body` → `(id, body)`.
-fn split_statement(text: &[u8]) -> Option<(u64, Vec<u8>)> {
-    let t = std::str::from_utf8(text).ok()?.trim_start();
-    let rest = t.strip_prefix('#')?;
-    let (id, body) = rest.split_once('=')?;
-    Some((id.trim().parse().ok()?, body.as_bytes().to_vec()))
-}
-
-/// References to entities the file does not define: `(referrer, missing)`,
-/// in file order.
-pub fn dangling_references(bytes: &[u8]) -> Vec<(u64, u64)> {
-    let stmts = statements(bytes);
-    let defined: std::collections::HashSet<u64> = stmts.iter().map(|(id, _)| *id).collect();
-    let mut out = Vec::new();
-    for (id, body) in &stmts {
-        let mut j = 0;
-        while j < body.len() {
-            if body[j] == b'#' {
-                let start = j + 1;
-                let mut k = start;
-                while k < body.len() && body[k].is_ascii_digit() {
-                    k += 1;
-                }
-                if let Some(r) = std::str::from_utf8(&body[start..k])
-                    .ok()
-                    .and_then(|d| d.parse::<u64>().ok())
-                {
-                    if !defined.contains(&r) {
-                        out.push((*id, r));
-                    }
-                }
-                j = k;
-            } else {
-                j += 1;
-            }
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn dangling_references_name_referrer_and_missing_entity() {
-        let text = b"DATA;\n#1 = FOO('#9 in a string',#2,(#3,#4));\n#2 = BAR(/* #8 */ #1);\n#3 = BAZ();\nENDSEC;";
-        assert_eq!(dangling_references(text), vec![(1, 4)]);
-    }
 
     #[test]
     fn finds_ids_and_skips_strings_and_comments() {

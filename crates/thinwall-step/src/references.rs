@@ -80,6 +80,20 @@ impl References {
         out
     }
 
+    /// References to entities the file does not define: `(referrer,
+    /// missing)`, in file order.
+    pub fn dangling(&self) -> Vec<(u64, u64)> {
+        let defined: std::collections::HashSet<u64> = self.ids.iter().copied().collect();
+        (0..self.ids.len())
+            .flat_map(|i| {
+                self.refs_of(i)
+                    .iter()
+                    .filter(|r| !defined.contains(r))
+                    .map(move |&r| (self.ids[i], r))
+            })
+            .collect()
+    }
+
     /// The id of the last statement.
     pub fn last_id(&self) -> Option<u64> {
         self.ids.last().copied()
@@ -318,6 +332,12 @@ mod tests {
         assert_eq!(r.keywords, vec![vec!["FOO"], vec!["BAR", "BAZ"]]);
         assert_eq!(r.refs_of(0), &[2, 3, 4]);
         assert_eq!(r.refs_of(1), &[1, 3]);
+    }
+
+    #[test]
+    fn dangling_references_name_referrer_and_missing_entity() {
+        let text = "DATA;\n#1 = FOO('#9 in a string',#2,(#3,#4));\n#2 = BAR(/* #8 */ #1);\n#3 = BAZ();\nENDSEC;";
+        assert_eq!(scan(text).dangling(), vec![(1, 4)]);
     }
 
     #[test]
