@@ -3,7 +3,8 @@
 //!   crates its `Cargo.toml` depends on;
 //! - its test index names every test file;
 //! - no two source files of one crate refer to each other in a circle
-//!   (`crate::a` / `super::a` paths, the crate root aside).
+//!   (`crate::a` / `super::a` paths, the crate root aside);
+//! - no library function is longer than [`MAX_FUNCTION_LINES`] lines.
 
 use petgraph::algo::tarjan_scc;
 use petgraph::graph::DiGraph;
@@ -257,5 +258,103 @@ fn no_two_files_of_a_crate_refer_to_each_other_in_a_circle() {
         circles.is_empty(),
         "files in a circle:\n{}",
         circles.join("\n")
+    );
+}
+
+/// The longest a library function may be, lines from its signature to its
+/// closing brace (issue 36: a function read at once).
+const MAX_FUNCTION_LINES: usize = 100;
+
+/// The functions of a rustfmt-formatted source longer than the limit:
+/// (first line, name, lines). A function ends at the first `}` at its own
+/// indentation.
+fn long_functions(text: &str) -> Vec<(usize, String, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < lines.len() {
+        let line = lines[i];
+        let indent = line.len() - line.trim_start().len();
+        let words: Vec<&str> = line.trim_start().split_whitespace().collect();
+        let at = words.iter().position(|w| *w == "fn");
+        let is_fn = at.is_some_and(|k| {
+            words[..k].iter().all(|w| {
+                w.starts_with("pub") || ["const", "unsafe", "async", "extern", "\"C\""].contains(w)
+            }) && words.len() > k + 1
+        });
+        if !is_fn {
+            i += 1;
+            continue;
+        }
+        // The body opens on the signature's last line; a declaration
+        // without a body ends in `;`.
+        let mut j = i;
+        while j < lines.len()
+            && !lines[j].trim_end().ends_with('{')
+            && !lines[j].trim_end().ends_with(';')
+        {
+            j += 1;
+        }
+        if j == lines.len()
+            || lines[j].trim_end().ends_with(';')
+            || lines[j].trim_end().ends_with("{}")
+        {
+            i = j + 1;
+            continue;
+        }
+        let close = format!("{}}}", " ".repeat(indent));
+        let Some(end) = (j + 1..lines.len()).find(|&k| lines[k].trim_end() == close) else {
+            i += 1;
+            continue;
+        };
+        let name = words[at.unwrap() + 1]
+            .split(['(', '<'])
+            .next()
+            .unwrap_or("")
+            .to_string();
+        if end - i + 1 > MAX_FUNCTION_LINES {
+            out.push((i + 1, name, end - i + 1));
+        }
+        i = end + 1;
+    }
+    out
+}
+
+#[test]
+fn the_long_function_check_finds_a_long_function() {
+    let body = "    let x = 1;\n".repeat(MAX_FUNCTION_LINES);
+    let text =
+        format!("/// Doc.\npub fn long(a: u32) -> u32 {{\n{body}    x\n}}\n\nfn short() {{}}\n");
+    assert_eq!(
+        long_functions(&text),
+        vec![(2, "long".to_string(), MAX_FUNCTION_LINES + 3)]
+    );
+    let text = format!(
+        "fn ok() {{\n{}}}\n",
+        "    a();\n".repeat(MAX_FUNCTION_LINES - 2)
+    );
+    assert!(long_functions(&text).is_empty());
+}
+
+#[test]
+fn no_library_function_is_longer_than_the_limit() {
+    let mut long = Vec::new();
+    for m in manifests() {
+        let src = m.parent().unwrap().join("src");
+        for f in sources(&src) {
+            for (line, name, n) in long_functions(&read(&f)) {
+                let at = f
+                    .strip_prefix(common::root())
+                    .unwrap_or(&f)
+                    .display()
+                    .to_string();
+                long.push(format!("{at}:{line} {name}: {n} lines"));
+            }
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "functions over {MAX_FUNCTION_LINES} lines (split them into named steps):\n{}",
+        long.join("\n")
     );
 }

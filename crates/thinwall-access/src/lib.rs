@@ -217,44 +217,7 @@ fn face_access(
     } else {
         0.0
     };
-    // One direction once (within 1°), with its best priority, then the
-    // proposing edge's STEP id: neither face nor edge order decides which
-    // stays.
-    let mut proposals = candidates(&loops, &region);
-    proposals.sort_by_key(|c| (c.2, part.edge(c.4).step_id, c.5));
-    let same = 1.0f64.to_radians().cos();
-    let mut kept: Vec<Proposal> = Vec::with_capacity(proposals.len());
-    for c in proposals {
-        if !kept
-            .iter()
-            .any(|k| k.0[0] * c.0[0] + k.0[1] * c.0[1] > same)
-        {
-            kept.push(c);
-        }
-    }
-    // Each candidate's L-zone once: its area orders the candidates, and
-    // the G-zone intersects the zones themselves.
-    let mut candidates: Vec<(Proposal, MultiPolygon<f64>)> = kept
-        .into_iter()
-        .map(|mut c| {
-            let l = zones::l_zone(&region, &barriers, c.0, radius);
-            c.1 = l.unsigned_area();
-            (c, l)
-        })
-        .collect();
-    // Priority, then the smallest L-zone (equal within 1e-6 of the face:
-    // rounding must not reorder a turned copy), then the proposing edge
-    // and the order of its proposals.
-    let grain = 1e-6 * area.max(1e-300);
-    let key = |c: &Proposal| {
-        (
-            c.2,
-            (c.1 / grain).round() as i64,
-            part.edge(c.4).step_id,
-            c.5,
-        )
-    };
-    candidates.sort_by_key(|(c, _)| key(c));
+    let candidates = ranked_candidates(part, &loops, &region, &barriers, radius);
     let to_3d = |r: [f64; 2]| -> [f64; 3] { (frame.x * r[0] + frame.y * r[1]).into() };
     let mut out = PlanarFaceAccess {
         face: face.step_id,
@@ -290,9 +253,75 @@ fn face_access(
         out.note = Some("closed face: every edge rises, no way in along its plane".into());
         return out;
     }
+    g_zone_into(&mut out, &region, candidates, frame, options);
+    out
+}
+
+/// The candidate directions of a face, each once (within 1°), with its
+/// L-zone, in the order the G-zone takes them.
+fn ranked_candidates(
+    part: &thinwall_brep::Part,
+    loops: &[Vec<SketchEdge>],
+    region: &MultiPolygon<f64>,
+    barriers: &[Barrier],
+    radius: f64,
+) -> Vec<(Proposal, MultiPolygon<f64>)> {
+    let area = region.unsigned_area();
+    // One direction once (within 1°), with its best priority, then the
+    // proposing edge's STEP id: neither face nor edge order decides which
+    // stays.
+    let mut proposals = candidates(loops, region);
+    proposals.sort_by_key(|c| (c.2, part.edge(c.4).step_id, c.5));
+    let same = 1.0f64.to_radians().cos();
+    let mut kept: Vec<Proposal> = Vec::with_capacity(proposals.len());
+    for c in proposals {
+        if !kept
+            .iter()
+            .any(|k| k.0[0] * c.0[0] + k.0[1] * c.0[1] > same)
+        {
+            kept.push(c);
+        }
+    }
+    // Each candidate's L-zone once: its area orders the candidates, and
+    // the G-zone intersects the zones themselves.
+    let mut candidates: Vec<(Proposal, MultiPolygon<f64>)> = kept
+        .into_iter()
+        .map(|mut c| {
+            let l = zones::l_zone(region, barriers, c.0, radius);
+            c.1 = l.unsigned_area();
+            (c, l)
+        })
+        .collect();
+    // Priority, then the smallest L-zone (equal within 1e-6 of the face:
+    // rounding must not reorder a turned copy), then the proposing edge
+    // and the order of its proposals.
+    let grain = 1e-6 * area.max(1e-300);
+    let key = |c: &Proposal| {
+        (
+            c.2,
+            (c.1 / grain).round() as i64,
+            part.edge(c.4).step_id,
+            c.5,
+        )
+    };
+    candidates.sort_by_key(|(c, _)| key(c));
+    candidates
+}
+
+/// The G-zone of a face that is not closed: the candidates' L-zones taken
+/// in order to the threshold (Harik & Ris), its area, rings and visibility.
+fn g_zone_into(
+    out: &mut PlanarFaceAccess,
+    region: &MultiPolygon<f64>,
+    candidates: Vec<(Proposal, MultiPolygon<f64>)>,
+    frame: &Frame,
+    options: &FlankOptions,
+) {
+    let area = out.area_mm2;
+    let to_3d = |r: [f64; 2]| -> [f64; 3] { (frame.x * r[0] + frame.y * r[1]).into() };
     let dirs: Vec<[f64; 2]> = candidates.iter().map(|(c, _)| c.0).collect();
     let l_zones: Vec<MultiPolygon<f64>> = candidates.into_iter().map(|(_, l)| l).collect();
-    let (g, steps) = zones::g_zone(&region, &l_zones, options.threshold);
+    let (g, steps) = zones::g_zone(region, &l_zones, options.threshold);
     out.used = steps
         .iter()
         .zip(&dirs)
@@ -321,7 +350,6 @@ fn face_access(
         0.0
     };
     out.advisable = out.visibility >= options.threshold;
-    out
 }
 
 /// The face's loops as edges in the sketch, each with its sharpness.
@@ -519,44 +547,20 @@ fn obstacles(
     let Some(rect) = region.bounding_rect() else {
         return Vec::new();
     };
-    let (lo, hi) = (rect.min(), rect.max());
-    let eps = 1e-6 * a.bounding_box().diagonal().max(1.0);
-    let near = |p: [f64; 2]| {
-        p[0] >= lo.x - reach && p[0] <= hi.x + reach && p[1] >= lo.y - reach && p[1] <= hi.y + reach
+    let slab = Slab {
+        frame,
+        lo: rect.min(),
+        hi: rect.max(),
+        eps: 1e-6 * a.bounding_box().diagonal().max(1.0),
+        reach,
     };
     let height = |p: &Point3| frame.to_local(p).z;
     let mut out = Vec::new();
-    // A face whose box lies wholly below the slab, above it or beside the
-    // face's reach cannot give an obstacle.
-    let may_reach = |(lo3, hi3): &([f64; 3], [f64; 3])| {
-        if lo3[0] > hi3[0] {
-            return false;
-        }
-        let (mut l, mut h) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for c in 0..8 {
-            let p = Point3::new(
-                if c & 1 == 0 { lo3[0] } else { hi3[0] },
-                if c & 2 == 0 { lo3[1] } else { hi3[1] },
-                if c & 4 == 0 { lo3[2] } else { hi3[2] },
-            );
-            let q = frame.to_local(&p);
-            for (k, v) in [q.x, q.y, q.z].into_iter().enumerate() {
-                l[k] = l[k].min(v);
-                h[k] = h[k].max(v);
-            }
-        }
-        h[2] > eps
-            && l[2] <= reach
-            && h[0] >= lo.x - reach
-            && l[0] <= hi.x + reach
-            && h[1] >= lo.y - reach
-            && l[1] <= hi.y + reach
-    };
     for fm in mesh
         .faces
         .iter()
         .zip(boxes)
-        .filter(|(fm, b)| fm.face != f && may_reach(b))
+        .filter(|(fm, b)| fm.face != f && slab.may_reach(b))
         .map(|(fm, _)| fm)
     {
         // The face's triangles in the slab, grouped where they share a
@@ -568,42 +572,15 @@ fn obstacles(
             .enumerate()
             .filter_map(|(k, t)| {
                 let tri = t.map(|i| mesh.points[i as usize]);
-                let pts: Vec<[f64; 2]> = clip_to_slab(&tri, &height, eps, reach)
+                let pts: Vec<[f64; 2]> = clip_to_slab(&tri, &height, slab.eps, reach)
                     .iter()
                     .map(|p| to_sketch(frame, p))
-                    .filter(|&s| near(s))
+                    .filter(|&s| slab.near(s))
                     .collect();
                 (!pts.is_empty()).then_some((k, pts))
             })
             .collect();
-        let mut group: Vec<usize> = (0..kept.len()).collect();
-        fn root(g: &mut [usize], mut i: usize) -> usize {
-            while g[i] != i {
-                g[i] = g[g[i]];
-                i = g[i];
-            }
-            i
-        }
-        let mut by_point: std::collections::HashMap<u32, usize> = std::collections::HashMap::new();
-        for (j, (k, _)) in kept.iter().enumerate() {
-            for &p in &fm.triangles[*k] {
-                if let Some(&other) = by_point.get(&p) {
-                    let (a, b) = (root(&mut group, j), root(&mut group, other));
-                    group[a] = b;
-                } else {
-                    by_point.insert(p, j);
-                }
-            }
-        }
-        let mut pieces: std::collections::BTreeMap<usize, Vec<Point<f64>>> = Default::default();
-        for (j, (_, pts)) in kept.iter().enumerate() {
-            let r = root(&mut group, j);
-            pieces
-                .entry(r)
-                .or_default()
-                .extend(pts.iter().map(|p| Point::new(p[0], p[1])));
-        }
-        for pts in pieces.into_values() {
+        for pts in pieces_sharing_points(&fm.triangles, &kept).into_values() {
             let hull = MultiPoint::from(pts).convex_hull();
             let points: Vec<[f64; 2]> = hull.exterior().points().map(|p| [p.x(), p.y()]).collect();
             if !points.is_empty() {
@@ -612,6 +589,88 @@ fn obstacles(
         }
     }
     out
+}
+
+/// The tool's slab over a face: above its plane (beyond `eps`) up to
+/// `reach`, within `reach` of its box (`lo`, `hi`) in the sketch.
+struct Slab<'a> {
+    frame: &'a Frame,
+    lo: geo::Coord<f64>,
+    hi: geo::Coord<f64>,
+    eps: f64,
+    reach: f64,
+}
+
+impl Slab<'_> {
+    /// A sketch point within reach of the face's box.
+    fn near(&self, p: [f64; 2]) -> bool {
+        let (lo, hi, reach) = (self.lo, self.hi, self.reach);
+        p[0] >= lo.x - reach && p[0] <= hi.x + reach && p[1] >= lo.y - reach && p[1] <= hi.y + reach
+    }
+
+    /// A face whose box lies wholly below the slab, above it or beside the
+    /// face's reach cannot give an obstacle.
+    fn may_reach(&self, (lo3, hi3): &([f64; 3], [f64; 3])) -> bool {
+        if lo3[0] > hi3[0] {
+            return false;
+        }
+        let (mut l, mut h) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for c in 0..8 {
+            let p = Point3::new(
+                if c & 1 == 0 { lo3[0] } else { hi3[0] },
+                if c & 2 == 0 { lo3[1] } else { hi3[1] },
+                if c & 4 == 0 { lo3[2] } else { hi3[2] },
+            );
+            let q = self.frame.to_local(&p);
+            for (k, v) in [q.x, q.y, q.z].into_iter().enumerate() {
+                l[k] = l[k].min(v);
+                h[k] = h[k].max(v);
+            }
+        }
+        let (lo, hi, reach) = (self.lo, self.hi, self.reach);
+        h[2] > self.eps
+            && l[2] <= reach
+            && h[0] >= lo.x - reach
+            && l[0] <= hi.x + reach
+            && h[1] >= lo.y - reach
+            && l[1] <= hi.y + reach
+    }
+}
+
+/// The kept triangles' sketch points grouped where the triangles share a
+/// mesh point (union–find over `kept`), keyed by each group's root.
+fn pieces_sharing_points(
+    triangles: &[[u32; 3]],
+    kept: &[(usize, Vec<[f64; 2]>)],
+) -> std::collections::BTreeMap<usize, Vec<Point<f64>>> {
+    let mut group: Vec<usize> = (0..kept.len()).collect();
+    fn root(g: &mut [usize], mut i: usize) -> usize {
+        while g[i] != i {
+            g[i] = g[g[i]];
+            i = g[i];
+        }
+        i
+    }
+    let mut by_point: std::collections::HashMap<u32, usize> = std::collections::HashMap::new();
+    for (j, (k, _)) in kept.iter().enumerate() {
+        for &p in &triangles[*k] {
+            if let Some(&other) = by_point.get(&p) {
+                let (a, b) = (root(&mut group, j), root(&mut group, other));
+                group[a] = b;
+            } else {
+                by_point.insert(p, j);
+            }
+        }
+    }
+    let mut pieces: std::collections::BTreeMap<usize, Vec<Point<f64>>> = Default::default();
+    for (j, (_, pts)) in kept.iter().enumerate() {
+        let r = root(&mut group, j);
+        pieces
+            .entry(r)
+            .or_default()
+            .extend(pts.iter().map(|p| Point::new(p[0], p[1])));
+    }
+    pieces
 }
 
 /// A triangle's part between heights `lo` and `hi` (exclusive of the face's

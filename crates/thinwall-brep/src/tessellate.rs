@@ -510,7 +510,54 @@ fn triangulate(
             wrapping.push(ring);
         }
     }
-    // Where a band or a cap is cut open: (ring, corner the cut starts at).
+    let cut = close_wrapping(face, chart, wrapping, &mut rings, points)?;
+    if let Some(period) = chart.periodic() {
+        align_turns(&mut rings, period, 0);
+    }
+    if let Some(period) = chart.periodic_v() {
+        align_turns(&mut rings, period, 1);
+    }
+    let grid = Grid::of(chart, &rings, deviation);
+    if let Some(g) = &grid {
+        g.split_poles(&mut rings);
+        if let Some((r, k)) = cut {
+            g.split_cut(chart, &mut rings[r], k, points);
+        }
+    }
+    snap(&mut rings);
+    let steiner = grid.as_ref().map_or_else(Vec::new, |g| g.points(&rings));
+    let stretch = grid.as_ref().map_or(1.0, Grid::stretch);
+    let tris = cdt(&rings, &steiner, stretch)?;
+    // Interior points become points of the mesh.
+    let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
+    for uv in &steiner {
+        ids.push(points.len() as u32);
+        points.push(lift(chart, *uv));
+    }
+    let mut out: Vec<[u32; 3]> = tris
+        .iter()
+        .map(|t| {
+            t.map(|c| match c {
+                Corner::Boundary(i) => i,
+                Corner::Steiner(j) => ids[j],
+            })
+        })
+        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+        .collect();
+    orient_outward(face, points, &mut out);
+    Ok(out)
+}
+
+/// The loops that wrap around the surface closed into one ring pushed on
+/// `rings`: a cap to its pole, or the band between two. Returns where the
+/// ring is cut open: (ring, corner the cut starts at).
+fn close_wrapping(
+    face: &Face,
+    chart: &Chart,
+    mut wrapping: Vec<Ring>,
+    rings: &mut Vec<Ring>,
+    points: &mut Vec<Point3>,
+) -> Result<Option<(usize, usize)>, String> {
     let mut cut = None;
     match wrapping.len() {
         0 => {}
@@ -555,43 +602,14 @@ fn triangulate(
         }
         n => return Err(format!("{n} loop(s) wrap around the surface")),
     }
-    if let Some(period) = chart.periodic() {
-        align_turns(&mut rings, period, 0);
-    }
-    if let Some(period) = chart.periodic_v() {
-        align_turns(&mut rings, period, 1);
-    }
-    let grid = Grid::of(chart, &rings, deviation);
-    if let Some(g) = &grid {
-        g.split_poles(&mut rings);
-        if let Some((r, k)) = cut {
-            g.split_cut(chart, &mut rings[r], k, points);
-        }
-    }
-    snap(&mut rings);
-    let steiner = grid.as_ref().map_or_else(Vec::new, |g| g.points(&rings));
-    let stretch = grid.as_ref().map_or(1.0, Grid::stretch);
-    let tris = cdt(&rings, &steiner, stretch)?;
-    // Interior points become points of the mesh.
-    let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
-    for uv in &steiner {
-        ids.push(points.len() as u32);
-        points.push(lift(chart, *uv));
-    }
-    let mut out: Vec<[u32; 3]> = tris
-        .iter()
-        .map(|t| {
-            t.map(|c| match c {
-                Corner::Boundary(i) => i,
-                Corner::Steiner(j) => ids[j],
-            })
-        })
-        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
-        .collect();
-    // The triangles all run one way in the parameter plane; which way is
-    // out of the material is decided once for the face, by their 3-D
-    // normals against the face's weighted by area (a sliver at a pole
-    // has no reliable normal of its own).
+    Ok(cut)
+}
+
+/// The triangles all run one way in the parameter plane; which way is out
+/// of the material is decided once for the face, by their 3-D normals
+/// against the face's weighted by area (a sliver at a pole has no reliable
+/// normal of its own).
+fn orient_outward(face: &Face, points: &[Point3], out: &mut [[u32; 3]]) {
     let agreement: f64 = out
         .iter()
         .map(|t| {
@@ -603,11 +621,10 @@ fn triangulate(
         })
         .sum();
     if agreement < 0.0 {
-        for t in &mut out {
+        for t in out.iter_mut() {
             t.swap(1, 2);
         }
     }
-    Ok(out)
 }
 
 /// A loop in the parameter plane, angles unrolled continuously; with the
@@ -641,66 +658,86 @@ fn map_loop(
         .unwrap_or(0);
     let ids: Vec<u32> = ids[start..].iter().chain(&ids[..start]).copied().collect();
     for &i in &ids {
-        let p = points[i as usize];
-        let uv = match chart {
-            Chart::Plane { frame } => {
-                let l = frame.to_local(&p);
-                [l.x, l.y]
-            }
-            Chart::Revolved { frame, scale, .. } => {
-                let l = frame.to_local(&p);
-                let mut a = l.y.atan2(l.x) * scale;
-                if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
-                    let period = TAU * scale;
-                    a += ((prev[0] - a) / period).round() * period;
-                }
-                if l.x.hypot(l.y) < APEX_GAP * extent {
-                    // A cone's apex: no angle of its own (set below).
-                    a = f64::NAN;
-                }
-                [a, l.z]
-            }
-            Chart::Sphere { frame, radius } => {
-                let l = frame.to_local(&p);
-                let mut a = l.y.atan2(l.x) * radius;
-                if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
-                    let period = TAU * radius;
-                    a += ((prev[0] - a) / period).round() * period;
-                }
-                let lat = (l.z / radius).clamp(-1.0, 1.0).asin() * radius;
-                if l.x.hypot(l.y) < APEX_GAP * radius {
-                    // A pole: no longitude of its own (set below).
-                    a = f64::NAN;
-                }
-                [a, lat]
-            }
-            Chart::Torus {
-                frame,
-                major,
-                minor,
-            } => {
-                let l = frame.to_local(&p);
-                let mut a = l.y.atan2(l.x) * major;
-                let mut b = l.z.atan2(l.x.hypot(l.y) - major) * minor;
-                if let Some(&(prev, _)) = ring.last() {
-                    let (pa, pb) = (TAU * major, TAU * minor);
-                    a += ((prev[0] - a) / pa).round() * pa;
-                    b += ((prev[1] - b) / pb).round() * pb;
-                }
-                [a, b]
-            }
-            Chart::Freeform { nurbs } => {
-                let (u, v, d) = nurbs.invert(&p, *hint);
-                if !(d.is_finite() && u.is_finite() && v.is_finite()) {
-                    return Err("a boundary point could not be mapped onto the surface".into());
-                }
-                *hint = Some((u, v));
-                [u, v]
-            }
-        };
+        let uv = chart_uv(chart, &points[i as usize], &ring, extent, hint)?;
         ring.push((uv, i));
     }
     let ring = at_poles(ring);
+    let turns = loop_turns(chart, &ring)?;
+    Ok((ring, turns))
+}
+
+/// A boundary point in the chart's parameter plane, its angles unrolled
+/// next to the ring's last corners (`extent`: the loop's largest distance
+/// from a revolved surface's axis, for the apex test).
+fn chart_uv(
+    chart: &Chart,
+    p: &Point3,
+    ring: &Ring,
+    extent: f64,
+    hint: &mut Option<(f64, f64)>,
+) -> Result<[f64; 2], String> {
+    let p = *p;
+    Ok(match chart {
+        Chart::Plane { frame } => {
+            let l = frame.to_local(&p);
+            [l.x, l.y]
+        }
+        Chart::Revolved { frame, scale, .. } => {
+            let l = frame.to_local(&p);
+            let mut a = l.y.atan2(l.x) * scale;
+            if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
+                let period = TAU * scale;
+                a += ((prev[0] - a) / period).round() * period;
+            }
+            if l.x.hypot(l.y) < APEX_GAP * extent {
+                // A cone's apex: no angle of its own (set below).
+                a = f64::NAN;
+            }
+            [a, l.z]
+        }
+        Chart::Sphere { frame, radius } => {
+            let l = frame.to_local(&p);
+            let mut a = l.y.atan2(l.x) * radius;
+            if let Some(&(prev, _)) = ring.iter().rev().find(|c| c.0[0].is_finite()) {
+                let period = TAU * radius;
+                a += ((prev[0] - a) / period).round() * period;
+            }
+            let lat = (l.z / radius).clamp(-1.0, 1.0).asin() * radius;
+            if l.x.hypot(l.y) < APEX_GAP * radius {
+                // A pole: no longitude of its own (set below).
+                a = f64::NAN;
+            }
+            [a, lat]
+        }
+        Chart::Torus {
+            frame,
+            major,
+            minor,
+        } => {
+            let l = frame.to_local(&p);
+            let mut a = l.y.atan2(l.x) * major;
+            let mut b = l.z.atan2(l.x.hypot(l.y) - major) * minor;
+            if let Some(&(prev, _)) = ring.last() {
+                let (pa, pb) = (TAU * major, TAU * minor);
+                a += ((prev[0] - a) / pa).round() * pa;
+                b += ((prev[1] - b) / pb).round() * pb;
+            }
+            [a, b]
+        }
+        Chart::Freeform { nurbs } => {
+            let (u, v, d) = nurbs.invert(&p, *hint);
+            if !(d.is_finite() && u.is_finite() && v.is_finite()) {
+                return Err("a boundary point could not be mapped onto the surface".into());
+            }
+            *hint = Some((u, v));
+            [u, v]
+        }
+    })
+}
+
+/// How many times a closed ring of the chart turns around its periodic
+/// direction; an error where it goes around a torus's tube.
+fn loop_turns(chart: &Chart, ring: &Ring) -> Result<i32, String> {
     if let (Some(period), Some(first), Some(last)) = (chart.periodic_v(), ring.first(), ring.last())
     {
         let closing = first.0[1] + ((last.0[1] - first.0[1]) / period).round() * period;
@@ -717,7 +754,7 @@ fn map_loop(
         }
         _ => 0,
     };
-    Ok((ring, turns))
+    Ok(turns)
 }
 
 /// A pole has no longitude: it stands on the pole's line twice, at the

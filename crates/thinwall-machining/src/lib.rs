@@ -258,7 +258,6 @@ fn cut_features(
     left: &[bool],
 ) -> Vec<MachiningFeature> {
     let part = a.part();
-    let tol = a.tol().feature;
     let is_left = |f: FaceId| left[f.index()];
     let mut out: Vec<MachiningFeature> = Vec::new();
     // Blends: chains of tangent curved faces.
@@ -331,6 +330,20 @@ fn cut_features(
         .face_ids()
         .filter(|f| (is_left(*f) && !taken.contains(f)) || connectors.contains(f))
         .collect();
+    let groups = depression_groups(a, &rest, &connectors);
+    out.extend(depressions(a, block, on_block, groups, &pocket_islands));
+    out
+}
+
+/// The faces `rest` in concave-connected groups, joined also through the
+/// `connectors` (concave blends and inside bevels, left out of the groups),
+/// coaxial concave cylinders and round ends with the walls they run into.
+fn depression_groups(
+    a: &PartAnalysis,
+    rest: &[FaceId],
+    connectors: &BTreeSet<FaceId>,
+) -> Vec<Vec<FaceId>> {
+    let tol = a.tol().feature;
     let joined = |f: FaceId, g: FaceId, adj: &thinwall_graph::Adjacency| {
         adj.convexity == Convexity::Concave
             || (adj.convexity == Convexity::Smooth
@@ -343,15 +356,26 @@ fn cut_features(
                 && (a.concave_cylinder(f).is_some() && a.planar(g).is_some()
                     || a.concave_cylinder(g).is_some() && a.planar(f).is_some()))
     };
-    let groups: Vec<Vec<FaceId>> = a
-        .components(&rest, joined)
+    a.components(rest, joined)
         .into_iter()
         .map(|mut g| {
             g.retain(|f| !connectors.contains(f));
             g
         })
         .filter(|g| !g.is_empty())
-        .collect();
+        .collect()
+}
+
+/// One machining feature per group (pieces another cut split joined): a
+/// lone planar face, or a depression typed without its pocket's islands.
+fn depressions(
+    a: &PartAnalysis,
+    block: &Stock,
+    on_block: &[Option<usize>],
+    groups: Vec<Vec<FaceId>>,
+    pocket_islands: &BTreeSet<FaceId>,
+) -> Vec<MachiningFeature> {
+    let mut out = Vec::new();
     for group in fragments::join_pieces(a, groups) {
         let touched: BTreeSet<usize> = group
             .iter()
@@ -367,7 +391,7 @@ fn cut_features(
             block,
             &group,
             &touched,
-            &pocket_islands,
+            pocket_islands,
         ));
     }
     out

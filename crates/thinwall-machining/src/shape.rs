@@ -344,7 +344,23 @@ impl<'g> GroupShape<'g> {
     /// Groups with concave cylinders: holes, O-rings, circular slots,
     /// steps and pocket ends.
     fn curved_typing(&self, a: &PartAnalysis) -> Typed {
-        use MachiningKind::*;
+        let k = self.curved_facts(a);
+        if k.core && k.floor {
+            typed(
+                MachiningKind::Groove,
+                false,
+                Profile::Circular,
+                Some(Catalog::ORing),
+            )
+        } else if k.walls.is_empty() {
+            self.wallless_typing(a, &k)
+        } else {
+            self.walled_typing(&k)
+        }
+    }
+
+    /// What the typing of a group with concave cylinders reads.
+    fn curved_facts(&self, a: &PartAnalysis) -> CurvedFacts {
         let first = self.cylinders[0];
         let tol = crate::axis_tol(a);
         let normal_along = |f: FaceId, across: bool| {
@@ -385,23 +401,45 @@ impl<'g> GroupShape<'g> {
                 adj.convexity == Convexity::Smooth && a.concave_cylinder(g).is_some()
             })
         });
-        let half = halves > 0;
         // Quarter circles, one of which a chamfer or another cut may have
         // trimmed.
         let quarters = sweeps.iter().all(|&s| s < QUARTER_DEG + QUARTER_SLACK_DEG)
             && sweeps
                 .iter()
                 .any(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG);
-        let typed = |kind, through, profile, catalog| Typed {
-            kind,
-            through,
-            profile,
-            catalog,
-        };
+        CurvedFacts {
+            floor,
+            walls,
+            core,
+            sweeps,
+            round_sweep,
+            ends,
+            halves,
+            tangent_wall,
+            quarters,
+        }
+    }
+
+    /// A half circle through the part (one plane beside it at most: where
+    /// material beyond the edge closed its open side lower down).
+    fn half_through_slot(k: &CurvedFacts) -> Option<Typed> {
+        (k.walls.len() <= 1 && !k.floor && k.halves > 0 && k.sweeps.len() == 1).then(|| {
+            typed(
+                MachiningKind::Slot,
+                true,
+                Profile::Circular,
+                Some(Catalog::CircularThroughSlot),
+            )
+        })
+    }
+
+    /// Concave cylinders with no wall square to their axis: holes, slots
+    /// and steps.
+    fn wallless_typing(&self, a: &PartAnalysis, k: &CurvedFacts) -> Typed {
         use Catalog as C;
-        if core && floor {
-            typed(Groove, false, Profile::Circular, Some(C::ORing))
-        } else if walls.is_empty() && round_sweep >= FULL_SWEEP_DEG {
+        use MachiningKind::*;
+        let (floor, half) = (k.floor, k.halves > 0);
+        if k.round_sweep >= FULL_SWEEP_DEG {
             let (kind, through, profile) = hole_typing(a, self.group, &self.cylinders);
             let name = match (through, profile) {
                 (true, Profile::Circular) => Some(C::ThroughHole),
@@ -409,28 +447,38 @@ impl<'g> GroupShape<'g> {
                 _ => None,
             };
             typed(kind, through, profile, name)
-        } else if walls.is_empty() && self.crossing_holes_piece(a, round_sweep) {
+        } else if self.crossing_holes_piece(a, k.round_sweep) {
             let name = if floor { C::BlindHole } else { C::ThroughHole };
             typed(Hole, !floor, Profile::Circular, Some(name))
-        } else if walls.len() <= 1 && !floor && half && sweeps.len() == 1 {
-            // A half circle through the part (one plane beside it: where
-            // material beyond the edge closed its open side lower down).
-            typed(Slot, true, Profile::Circular, Some(C::CircularThroughSlot))
-        } else if walls.is_empty() && !floor && self.touched.is_empty() {
+        } else if let Some(t) = Self::half_through_slot(k) {
+            t
+        } else if !floor && self.touched.is_empty() {
             // Both ends cut away by other features and no floor: what is
             // left of a hole through the part (a slot through it opens
             // onto the block).
             typed(Hole, true, Profile::Circular, Some(C::ThroughHole))
-        } else if walls.is_empty() && !floor && !half && self.corner_only() {
+        } else if !floor && !half && self.corner_only() {
             // A quarter circle meeting block planes square to each other
             // only (the top and a corner's two sides), its floor cut away
             // by another feature: a step round a corner.
             typed(Step, false, Profile::Circular, Some(C::CircularBlindStep))
-        } else if walls.is_empty() && !floor {
+        } else if !floor {
             typed(Slot, true, Profile::Circular, None)
-        } else if walls.is_empty() {
+        } else {
             let name = (!half).then_some(C::CircularBlindStep);
             typed(Step, false, Profile::Circular, name)
+        }
+    }
+
+    /// Concave cylinders beside walls square to their axis: slots, steps
+    /// and pockets with round ends.
+    fn walled_typing(&self, k: &CurvedFacts) -> Typed {
+        use Catalog as C;
+        use MachiningKind::*;
+        let (floor, halves, ends) = (k.floor, k.halves, &k.ends);
+        let (walls, tangent_wall, quarters) = (&k.walls, k.tangent_wall, k.quarters);
+        if let Some(t) = Self::half_through_slot(k) {
+            t
         } else if !floor && walls.len() == 1 && tangent_wall && quarters {
             // Quarter circles either side of one face they run into, their
             // axes along it: the same slot lying on its side.
@@ -767,6 +815,37 @@ fn hole_typing(
         Profile::Circular
     };
     (MachiningKind::Hole, !bottom, profile)
+}
+
+/// What the typing of a group with concave cylinders reads.
+struct CurvedFacts {
+    /// A face square to the first cylinder's axis.
+    floor: bool,
+    /// Faces along the axis (planar walls).
+    walls: Vec<FaceId>,
+    /// A convex cylinder coaxial with the first (an O-ring's core).
+    core: bool,
+    /// Every concave cylinder's sweep, degrees.
+    sweeps: Vec<f64>,
+    /// The sweep of the cylinders coaxial with the first, degrees.
+    round_sweep: f64,
+    /// The sweeps of the round ends, degrees.
+    ends: Vec<f64>,
+    /// Round ends of at least half a circle.
+    halves: usize,
+    /// A wall meets a concave cylinder tangentially.
+    tangent_wall: bool,
+    /// Every cylinder a quarter circle at most, one of them a quarter.
+    quarters: bool,
+}
+
+fn typed(kind: MachiningKind, through: bool, profile: Profile, catalog: Option<Catalog>) -> Typed {
+    Typed {
+        kind,
+        through,
+        profile,
+        catalog,
+    }
 }
 
 #[cfg(test)]

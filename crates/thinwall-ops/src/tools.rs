@@ -210,13 +210,6 @@ impl ToolLibrary {
 
 /// Check one entry; the error says what is wrong.
 fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
-    let positive = |v: f64, key: &str| -> Result<f64, String> {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err(format!("`{key}` must be a positive number, got {v}"))
-        }
-    };
     if raw.name.trim().is_empty() {
         return Err("empty name".to_string());
     }
@@ -246,52 +239,90 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
     mill_only(raw.finish_axial_depth_mm, "finish_axial_depth_mm")?;
     mill_only(raw.full_cut_axial_depth_mm, "full_cut_axial_depth_mm")?;
     let (corner, a_p, a_e) = match raw.kind {
-        ToolKind::FlatEndMill => {
-            if raw.point_angle_deg.is_some() {
-                return Err("`point_angle_deg` is for drills, not end mills".to_string());
-            }
-            let corner = raw.corner_radius.unwrap_or(0.0);
-            if !(corner.is_finite() && (0.0..=d / 2.0).contains(&corner)) {
-                return Err(format!(
-                    "`corner_radius` must lie within 0..{} (half the diameter), got {corner}",
-                    d / 2.0
-                ));
-            }
-            let a_p = positive(
-                raw.axial_depth_mm
-                    .ok_or("`axial_depth_mm` is missing (an end mill needs it)")?,
-                "axial_depth_mm",
-            )?;
-            if a_p > cutting {
-                return Err(format!(
-                    "`axial_depth_mm` ({a_p}) exceeds `cutting_length` ({cutting})"
-                ));
-            }
-            let a_e = positive(
-                raw.radial_depth_mm
-                    .ok_or("`radial_depth_mm` is missing (an end mill needs it)")?,
-                "radial_depth_mm",
-            )?;
-            if a_e > d {
-                return Err(format!(
-                    "`radial_depth_mm` ({a_e}) exceeds the diameter ({d})"
-                ));
-            }
-            (corner, a_p, a_e)
-        }
-        ToolKind::Drill => {
-            let angle = raw
-                .point_angle_deg
-                .ok_or("`point_angle_deg` is missing (a drill needs it)")?;
-            if !(angle.is_finite() && angle > 0.0 && angle < 180.0) {
-                return Err(format!(
-                    "`point_angle_deg` must lie strictly between 0 and 180, got {angle}"
-                ));
-            }
-            (0.0, cutting, d)
-        }
+        ToolKind::FlatEndMill => end_mill_cut(&raw, d, cutting)?,
+        ToolKind::Drill => drill_cut(&raw, d, cutting)?,
     };
-    // Optional finishing data, each within its roughing counterpart.
+    let (finish_a_e, finish_a_p, full_a_p) = finishing(&raw, d, a_p, a_e)?;
+    Ok(CuttingTool {
+        name: raw.name,
+        kind: raw.kind,
+        diameter_mm: d,
+        corner_radius_mm: corner,
+        cutting_length_mm: cutting,
+        stick_out_mm: stick_out,
+        teeth: raw.teeth,
+        cutting_speed_m_min: vc,
+        feed_per_tooth_mm: fz,
+        axial_depth_mm: a_p,
+        radial_depth_mm: a_e,
+        finish_radial_depth_mm: finish_a_e,
+        finish_axial_depth_mm: finish_a_p,
+        full_cut_axial_depth_mm: full_a_p,
+        point_angle_deg: raw.point_angle_deg,
+        line,
+    })
+}
+
+/// `v` if it is a finite positive number.
+fn positive(v: f64, key: &str) -> Result<f64, String> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("`{key}` must be a positive number, got {v}"))
+    }
+}
+
+/// An end mill's corner radius, axial and radial depth of cut, mm.
+fn end_mill_cut(raw: &RawTool, d: f64, cutting: f64) -> Result<(f64, f64, f64), String> {
+    if raw.point_angle_deg.is_some() {
+        return Err("`point_angle_deg` is for drills, not end mills".to_string());
+    }
+    let corner = raw.corner_radius.unwrap_or(0.0);
+    if !(corner.is_finite() && (0.0..=d / 2.0).contains(&corner)) {
+        return Err(format!(
+            "`corner_radius` must lie within 0..{} (half the diameter), got {corner}",
+            d / 2.0
+        ));
+    }
+    let a_p = positive(
+        raw.axial_depth_mm
+            .ok_or("`axial_depth_mm` is missing (an end mill needs it)")?,
+        "axial_depth_mm",
+    )?;
+    if a_p > cutting {
+        return Err(format!(
+            "`axial_depth_mm` ({a_p}) exceeds `cutting_length` ({cutting})"
+        ));
+    }
+    let a_e = positive(
+        raw.radial_depth_mm
+            .ok_or("`radial_depth_mm` is missing (an end mill needs it)")?,
+        "radial_depth_mm",
+    )?;
+    if a_e > d {
+        return Err(format!(
+            "`radial_depth_mm` ({a_e}) exceeds the diameter ({d})"
+        ));
+    }
+    Ok((corner, a_p, a_e))
+}
+
+/// A drill's cut: no corner radius, its cutting length deep, its diameter wide.
+fn drill_cut(raw: &RawTool, d: f64, cutting: f64) -> Result<(f64, f64, f64), String> {
+    let angle = raw
+        .point_angle_deg
+        .ok_or("`point_angle_deg` is missing (a drill needs it)")?;
+    if !(angle.is_finite() && angle > 0.0 && angle < 180.0) {
+        return Err(format!(
+            "`point_angle_deg` must lie strictly between 0 and 180, got {angle}"
+        ));
+    }
+    Ok((0.0, cutting, d))
+}
+
+/// Optional finishing data, each within its roughing counterpart: the
+/// finishing radial and axial depths and the full-cut axial depth, mm.
+fn finishing(raw: &RawTool, d: f64, a_p: f64, a_e: f64) -> Result<(f64, f64, f64), String> {
     let within = |v: Option<f64>, key: &str, default: f64, max: f64, of: &str| {
         let v = v.unwrap_or(default.min(max));
         let v = positive(v, key)?;
@@ -321,24 +352,7 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
         a_p,
         "`axial_depth_mm`",
     )?;
-    Ok(CuttingTool {
-        name: raw.name,
-        kind: raw.kind,
-        diameter_mm: d,
-        corner_radius_mm: corner,
-        cutting_length_mm: cutting,
-        stick_out_mm: stick_out,
-        teeth: raw.teeth,
-        cutting_speed_m_min: vc,
-        feed_per_tooth_mm: fz,
-        axial_depth_mm: a_p,
-        radial_depth_mm: a_e,
-        finish_radial_depth_mm: finish_a_e,
-        finish_axial_depth_mm: finish_a_p,
-        full_cut_axial_depth_mm: full_a_p,
-        point_angle_deg: raw.point_angle_deg,
-        line,
-    })
+    Ok((finish_a_e, finish_a_p, full_a_p))
 }
 
 #[cfg(test)]

@@ -358,13 +358,11 @@ pub fn relations(
     features: &[RemovalFeature],
     log: &mut Vec<Adaptation>,
 ) -> Vec<LayerConstraint> {
-    let up = out.setup.up_in_part();
     let mut rel = Vec::new();
     for w in walls {
         let Some(g) = geometry(out, w.id) else {
             continue;
         };
-        let axis = Axis::of(g, w.sizes.wall.height);
         // The wall's layers that remain (a vanished one removes nothing
         // that needs ordering).
         let mine: Vec<&Layer> = layers
@@ -374,35 +372,70 @@ pub fn relations(
         if mine.is_empty() {
             continue;
         }
-        let owned = |id: FeatureId| -> Vec<&VolumeId> {
-            features
-                .iter()
-                .filter(|f| f.owner == Some(id))
-                .map(|f| &f.id)
-                .collect()
+        let wall = InSequence {
+            faces,
+            out,
+            w,
+            axis: Axis::of(g, w.sizes.wall.height),
+            mine,
+            features,
         };
-        for c in on_wall(out, w.id, StiffnessKind::Cutout) {
-            let Some(bottom) = c.height.map(|d| axis.height - d) else {
+        wall.cutouts(&mut rel, log);
+        wall.holes(shapes.get(&w.id).and_then(|s| s.align_at), &mut rel, log);
+        wall.chamfers(&mut rel, log);
+    }
+    rel
+}
+
+/// One wall's remaining layers, with what the relations of the details on
+/// it read.
+struct InSequence<'a> {
+    faces: &'a Faces<'a>,
+    out: &'a Outcome,
+    w: &'a WallPlan,
+    axis: Axis,
+    mine: Vec<&'a Layer>,
+    features: &'a [RemovalFeature],
+}
+
+impl InSequence<'_> {
+    /// The removal features a detail owns.
+    fn owned(&self, id: FeatureId) -> Vec<&VolumeId> {
+        self.features
+            .iter()
+            .filter(|f| f.owner == Some(id))
+            .map(|f| &f.id)
+            .collect()
+    }
+
+    /// A cut-out after the first layer reaching down to its bottom.
+    fn cutouts(&self, rel: &mut Vec<LayerConstraint>, log: &mut Vec<Adaptation>) {
+        for c in on_wall(self.out, self.w.id, StiffnessKind::Cutout) {
+            let Some(bottom) = c.height.map(|d| self.axis.height - d) else {
                 continue;
             };
             // The first layer (in step order: the large one where it
             // remains) reaching down to its bottom.
-            let Some(after) = mine
+            let Some(after) = self
+                .mine
                 .iter()
                 .find(|l| l.from_foot[0] <= bottom + thinwall_geom::tolerance::SAME_LENGTH_MM)
             else {
                 continue;
             };
-            for f in owned(c.id) {
+            for f in self.owned(c.id) {
                 rel.push(LayerConstraint {
                     before: after.id.clone(),
                     after: f.clone(),
-                    why: format!("{} inserted into {}'s step approach (§4.1.3)", c.id, w.id),
+                    why: format!(
+                        "{} inserted into {}'s step approach (§4.1.3)",
+                        c.id, self.w.id
+                    ),
                 });
             }
-            if !owned(c.id).is_empty() {
+            if !self.owned(c.id).is_empty() {
                 log.push(Adaptation {
-                    wall: w.id,
+                    wall: self.w.id,
                     by: c.id,
                     rule: AdaptRule::CutoutInSequence,
                     change: format!(
@@ -412,31 +445,37 @@ pub fn relations(
                 });
             }
         }
-        let line = shapes.get(&w.id).and_then(|s| s.align_at);
-        for h in on_wall(out, w.id, StiffnessKind::Hole) {
-            let Some((bottom, _)) = faces.heights(h, &axis) else {
+    }
+
+    /// A hole once the layers above where it is exposed are out, before
+    /// the first layer below on each side.
+    fn holes(&self, line: Option<f64>, rel: &mut Vec<LayerConstraint>, log: &mut Vec<Adaptation>) {
+        for h in on_wall(self.out, self.w.id, StiffnessKind::Hole) {
+            let Some((bottom, _)) = self.faces.heights(h, &self.axis) else {
                 continue;
             };
             let tol = thinwall_geom::tolerance::SAME_LENGTH_MM;
             // The line's height along up, where it crosses the hole.
             let line_z = line.map(|a| {
-                (axis.origin + axis.height_dir * (axis.foot + a))
+                (self.axis.origin + self.axis.height_dir * (self.axis.foot + a))
                     .coords
-                    .dot(&up)
+                    .dot(&self.out.setup.up_in_part())
             });
-            for f in features.iter().filter(|f| f.owner == Some(h.id)) {
+            for f in self.features.iter().filter(|f| f.owner == Some(h.id)) {
                 // Exposed once the layers reaching below this are out: a
                 // large hole's part above the line once those above it are,
                 // the rest once those down to its bottom are; a hole
                 // through a web once the web's layers are.
                 let upper = line_z.is_some_and(|z| f.z_range[0] >= z - tol);
                 let exposed = match (h.large, line) {
-                    _ if w.kind == StiffnessKind::Web => f64::NEG_INFINITY,
+                    _ if self.w.kind == StiffnessKind::Web => f64::NEG_INFINITY,
                     (Some(true), Some(line)) if upper => line,
                     _ => bottom,
                 };
-                let (above, below): (Vec<&&Layer>, Vec<&&Layer>) =
-                    mine.iter().partition(|l| l.from_foot[1] > exposed + tol);
+                let (above, below): (Vec<&&Layer>, Vec<&&Layer>) = self
+                    .mine
+                    .iter()
+                    .partition(|l| l.from_foot[1] > exposed + tol);
                 let firsts_below: Vec<&&Layer> = [0, 1]
                     .iter()
                     .filter_map(|&s| below.iter().find(|l| l.side == s).copied())
@@ -465,7 +504,7 @@ pub fn relations(
                     .collect::<Vec<_>>()
                     .join(" and ");
                 log.push(Adaptation {
-                    wall: w.id,
+                    wall: self.w.id,
                     by: h.id,
                     rule: AdaptRule::HoleInSequence,
                     change: format!(
@@ -485,24 +524,29 @@ pub fn relations(
                 });
             }
         }
-        for c in on_wall(out, w.id, StiffnessKind::Chamfer) {
-            let feats = owned(c.id);
+    }
+
+    /// A large chamfer before all the wall's layers, a small one after the
+    /// top layer on each side.
+    fn chamfers(&self, rel: &mut Vec<LayerConstraint>, log: &mut Vec<Adaptation>) {
+        for c in on_wall(self.out, self.w.id, StiffnessKind::Chamfer) {
+            let feats = self.owned(c.id);
             if feats.is_empty() {
                 continue;
             }
-            let large = c.width.is_some_and(|x| x > w.sizes.h);
+            let large = c.width.is_some_and(|x| x > self.w.sizes.h);
             let tops: Vec<&&Layer> = [0, 1]
                 .iter()
-                .filter_map(|&s| mine.iter().find(|l| l.side == s))
+                .filter_map(|&s| self.mine.iter().find(|l| l.side == s))
                 .collect();
             for f in &feats {
                 if large {
                     rel.push(LayerConstraint {
                         before: (*f).clone(),
-                        after: mine[0].id.clone(),
+                        after: self.mine[0].id.clone(),
                         why: format!(
                             "{} is large: before all of {}'s layers (§4.1.3)",
-                            c.id, w.id
+                            c.id, self.w.id
                         ),
                     });
                 } else {
@@ -516,17 +560,16 @@ pub fn relations(
                 }
             }
             log.push(Adaptation {
-                wall: w.id,
+                wall: self.w.id,
                 by: c.id,
                 rule: AdaptRule::Chamfer,
                 change: match large {
-                    true => format!("{} (large) before all of {}'s layers", c.id, w.id),
+                    true => format!("{} (large) before all of {}'s layers", c.id, self.w.id),
                     false => format!("{} after the top layer on each side", c.id),
                 },
             });
         }
     }
-    rel
 }
 
 /// The shortest piece of a wall (its extent along its length) left

@@ -59,40 +59,10 @@ pub fn classify_features(
         .enumerate()
         .map(|(i, id)| (id.as_str(), i))
         .collect();
-    // Every solid that can be written, as a volume.
-    let mut volumes: Vec<Volume> = Vec::new();
-    let mut owner: Vec<(usize, usize)> = Vec::new();
-    let mut boxes: Vec<[f64; 6]> = Vec::new();
-    // Why a feature's solid could not be read back, by feature.
-    let mut unreadable: Vec<Option<String>> = vec![None; features.len()];
-    for (fi, f) in features.iter().enumerate() {
-        for (si, s) in f.solids.iter().enumerate() {
-            let name = format!("{}#{}", f.id, si + 1);
-            let Some(solid) = crate::volumes::feature_solid(frame, s) else {
-                continue;
-            };
-            let text = crate::volumes::solids_step(&[solid], &name);
-            let part = match thinwall_step::read_bytes(text.as_bytes(), &name) {
-                Ok((part, _)) => part,
-                Err(e) => {
-                    unreadable[fi] = Some(format!("its solid {name} could not be read back: {e}"));
-                    continue;
-                }
-            };
-            volumes.push(Volume {
-                name,
-                part,
-                current: None,
-                up: f
-                    .access
-                    .map(|a| thinwall_geom::Vector3::new(a[0], a[1], a[2])),
-            });
-            owner.push((fi, si));
-            boxes.push(solid_box(s));
-        }
-    }
+    let solids = Solids::read(frame, features);
     let tol = 1e-6 * a.bounding_box().diagonal().max(1.0);
-    let rank: Vec<usize> = owner
+    let rank: Vec<usize> = solids
+        .owner
         .iter()
         .map(|&(fi, _)| {
             order
@@ -101,38 +71,10 @@ pub fn classify_features(
                 .unwrap_or(usize::MAX)
         })
         .collect();
-    // Sweep along x: pairs whose boxes touch, the earlier one first.
-    let mut by_x: Vec<usize> = (0..volumes.len()).collect();
-    by_x.sort_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
-    let mut before = Vec::new();
-    for (k, &i) in by_x.iter().enumerate() {
-        for &j in &by_x[k + 1..] {
-            if boxes[j][0] > boxes[i][3] + tol {
-                break;
-            }
-            if owner[i].0 == owner[j].0 || !touch(&boxes[i], &boxes[j], tol) {
-                continue;
-            }
-            match rank[i].cmp(&rank[j]) {
-                std::cmp::Ordering::Less => before.push((i, j)),
-                std::cmp::Ordering::Greater => before.push((j, i)),
-                std::cmp::Ordering::Equal => {}
-            }
-        }
-    }
-    // A feature's solids are removed together.
-    let mut together = Vec::new();
-    for i in 0..owner.len() {
-        // A feature's solids come one after another.
-        for j in (i + 1..owner.len()).take_while(|&j| owner[j].0 == owner[i].0) {
-            if touch(&boxes[i], &boxes[j], tol) {
-                together.push((i, j));
-            }
-        }
-    }
+    let (before, together) = solids.pairs(&rank, tol);
     let result = classify(&Request {
         part: a,
-        volumes: &volumes,
+        volumes: &solids.volumes,
         before: &before,
         together: &together,
         priority: vec![],
@@ -147,43 +89,147 @@ pub fn classify_features(
             return;
         }
     };
-    for (fi, f) in features.iter_mut().enumerate() {
-        let mine: Vec<(usize, &thinwall_classify::Classification)> = classes
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| owner[*k].0 == fi)
-            .map(|(k, c)| (owner[k].1, c))
-            .collect();
-        // The largest solid; between solids of equal volume (up to the
-        // sampling of curved edges) the type first by name, so every pose
-        // agrees.
-        let Some(&(largest, c)) = mine.iter().max_by(|x, y| {
-            let (vx, vy) = (f.solids[x.0].volume_mm3, f.solids[y.0].volume_mm3);
-            if (vx - vy).abs() <= thinwall_geom::tolerance::EQUAL_VOLUME * vx.abs().max(vy.abs()) {
-                y.1.kind.name().cmp(x.1.kind.name())
-            } else {
-                vx.total_cmp(&vy)
+    solids.assign(features, &classes);
+}
+
+/// Pairs of indices into [`Solids`]' volumes.
+type Pairs = Vec<(usize, usize)>;
+
+/// The features' solids that could be written, as volumes, each with its
+/// feature and solid index and its box.
+struct Solids {
+    volumes: Vec<Volume>,
+    owner: Vec<(usize, usize)>,
+    boxes: Vec<[f64; 6]>,
+    /// Why a feature's solid could not be read back, by feature.
+    unreadable: Vec<Option<String>>,
+}
+
+impl Solids {
+    fn read(frame: &[[f64; 3]; 4], features: &[RemovalFeature]) -> Self {
+        let mut volumes: Vec<Volume> = Vec::new();
+        let mut owner: Vec<(usize, usize)> = Vec::new();
+        let mut boxes: Vec<[f64; 6]> = Vec::new();
+        let mut unreadable: Vec<Option<String>> = vec![None; features.len()];
+        for (fi, f) in features.iter().enumerate() {
+            for (si, s) in f.solids.iter().enumerate() {
+                let name = format!("{}#{}", f.id, si + 1);
+                let Some(solid) = crate::volumes::feature_solid(frame, s) else {
+                    continue;
+                };
+                let text = crate::volumes::solids_step(&[solid], &name);
+                let part = match thinwall_step::read_bytes(text.as_bytes(), &name) {
+                    Ok((part, _)) => part,
+                    Err(e) => {
+                        unreadable[fi] =
+                            Some(format!("its solid {name} could not be read back: {e}"));
+                        continue;
+                    }
+                };
+                volumes.push(Volume {
+                    name,
+                    part,
+                    current: None,
+                    up: f
+                        .access
+                        .map(|a| thinwall_geom::Vector3::new(a[0], a[1], a[2])),
+                });
+                owner.push((fi, si));
+                boxes.push(solid_box(s));
             }
-        }) else {
-            f.classification = Some(unknown(unreadable[fi].as_deref().unwrap_or(
-                "its solids are bounded by a cylinder or a cone: not classified yet",
-            )));
-            continue;
-        };
-        let mut types: Vec<VolumeType> = mine
-            .iter()
-            .filter(|(si, _)| *si != largest)
-            .map(|(_, o)| o.kind)
-            .filter(|k| *k != c.kind)
-            .collect();
-        types.sort_by_key(|k| k.name());
-        types.dedup();
-        f.classification = Some(FeatureType {
-            kind: c.kind,
-            product_adjacency: c.product_adjacency,
-            types,
-            reason: c.reason.clone(),
-        });
+        }
+        Self {
+            volumes,
+            owner,
+            boxes,
+            unreadable,
+        }
+    }
+
+    /// Pairs of solids whose boxes touch: of different features, the
+    /// earlier (by `rank`) first; of one feature, removed together.
+    fn pairs(&self, rank: &[usize], tol: f64) -> (Pairs, Pairs) {
+        let (boxes, owner) = (&self.boxes, &self.owner);
+        // Sweep along x: pairs whose boxes touch, the earlier one first.
+        let mut by_x: Vec<usize> = (0..self.volumes.len()).collect();
+        by_x.sort_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
+        let mut before = Vec::new();
+        for (k, &i) in by_x.iter().enumerate() {
+            for &j in &by_x[k + 1..] {
+                if boxes[j][0] > boxes[i][3] + tol {
+                    break;
+                }
+                if owner[i].0 == owner[j].0 || !touch(&boxes[i], &boxes[j], tol) {
+                    continue;
+                }
+                match rank[i].cmp(&rank[j]) {
+                    std::cmp::Ordering::Less => before.push((i, j)),
+                    std::cmp::Ordering::Greater => before.push((j, i)),
+                    std::cmp::Ordering::Equal => {}
+                }
+            }
+        }
+        // A feature's solids are removed together.
+        let mut together = Vec::new();
+        for i in 0..owner.len() {
+            // A feature's solids come one after another.
+            for j in (i + 1..owner.len()).take_while(|&j| owner[j].0 == owner[i].0) {
+                if touch(&boxes[i], &boxes[j], tol) {
+                    together.push((i, j));
+                }
+            }
+        }
+        (before, together)
+    }
+
+    /// Each feature's type: its largest solid's, with the other types its
+    /// solids have.
+    fn assign(
+        &self,
+        features: &mut [RemovalFeature],
+        classes: &[thinwall_classify::Classification],
+    ) {
+        let (owner, unreadable) = (&self.owner, &self.unreadable);
+        for (fi, f) in features.iter_mut().enumerate() {
+            let mine: Vec<(usize, &thinwall_classify::Classification)> = classes
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| owner[*k].0 == fi)
+                .map(|(k, c)| (owner[k].1, c))
+                .collect();
+            // The largest solid; between solids of equal volume (up to the
+            // sampling of curved edges) the type first by name, so every pose
+            // agrees.
+            let Some(&(largest, c)) = mine.iter().max_by(|x, y| {
+                let (vx, vy) = (f.solids[x.0].volume_mm3, f.solids[y.0].volume_mm3);
+                if (vx - vy).abs()
+                    <= thinwall_geom::tolerance::EQUAL_VOLUME * vx.abs().max(vy.abs())
+                {
+                    y.1.kind.name().cmp(x.1.kind.name())
+                } else {
+                    vx.total_cmp(&vy)
+                }
+            }) else {
+                f.classification = Some(unknown(unreadable[fi].as_deref().unwrap_or(
+                    "its solids are bounded by a cylinder or a cone: not classified yet",
+                )));
+                continue;
+            };
+            let mut types: Vec<VolumeType> = mine
+                .iter()
+                .filter(|(si, _)| *si != largest)
+                .map(|(_, o)| o.kind)
+                .filter(|k| *k != c.kind)
+                .collect();
+            types.sort_by_key(|k| k.name());
+            types.dedup();
+            f.classification = Some(FeatureType {
+                kind: c.kind,
+                product_adjacency: c.product_adjacency,
+                types,
+                reason: c.reason.clone(),
+            });
+        }
     }
 }
 

@@ -292,33 +292,24 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
     }
     p.validate()?;
     let cut = p.cut_height_mm;
-    let round_height = |v: f64| (((v + SAME_LENGTH_MM) / cut).floor() * cut).max(cut);
-    let width = |steps: u32| p.finishing_width_mm + f64::from(steps) * p.width_step();
-    let mut trace = Vec::new();
-    let mut log = |b: f64, h: f64, big_h: f64, action: &str| {
-        let d = deflection(w, p, b, h, big_h);
-        trace.push(Step {
-            b,
-            h,
-            big_h,
-            deflection_mm: d,
-            action: action.to_string(),
-        });
-        d
+    let mut search = Search {
+        w,
+        p,
+        trace: Vec::new(),
     };
     // Not thin: cut in one go (no support), the wall stays within the limit.
-    let whole = round_height(w.height).min(w.height);
+    let whole = search.round_height(w.height).min(w.height);
     // The bare wall with the force at its top (as the recognizer's
     // thinness): within the limit, it needs no step approach.
-    if log(0.0, cut, cut, "bare wall, force at its top") <= p.allowed_deflection_mm {
+    if search.log(0.0, cut, cut, "bare wall, force at its top") <= p.allowed_deflection_mm {
         let note = "not thin: one feature over its height, no step approach".to_string();
-        return Ok(finish(w, p, 0.0, whole, whole, false, note, trace));
+        return Ok(finish(w, p, 0.0, whole, whole, false, note, search.trace));
     }
-    let mut steps = p.initial_width_steps.max(1);
+    let steps = p.initial_width_steps.max(1);
     // The bare top above one cut bends whatever the support below: if
     // that alone exceeds the limit, no width helps.
     if deflection(w, p, UNBOUNDED_SUPPORT_MM, cut, cut) > p.allowed_deflection_mm {
-        log(
+        search.log(
             UNBOUNDED_SUPPORT_MM,
             cut,
             cut,
@@ -328,71 +319,142 @@ pub fn size_wall(w: &WallDimensions, p: &SizingParameters) -> Result<Sizes, Sizi
             "no sizes keep the deflection within {} mm: even one {cut} mm cut on a rigid support bends more; the wall needs other measures (a lower force, a stiffer set-up)",
             p.allowed_deflection_mm
         );
-        return Ok(finish(w, p, width(steps), cut, cut, true, note, trace));
+        return Ok(finish(
+            w,
+            p,
+            search.width(steps),
+            cut,
+            cut,
+            true,
+            note,
+            search.trace,
+        ));
     }
-    let initial_h = round_height(f64::from(p.initial_cuts) * cut).min(round_height(w.height));
-    // H: the initial whole multiple of h, within the wall.
-    let reset_big = |h: f64| (p.initial_height_ratio.floor() * h).min(w.height).max(h);
-    let mut h = initial_h;
-    let mut big_h = reset_big(h);
-    let mut d = log(width(steps), h, big_h, "initial: rules of thumb");
-    while d > p.allowed_deflection_mm {
-        if h > cut + SAME_LENGTH_MM {
-            h = round_height(h - cut);
-            big_h = reset_big(h);
-            d = log(
-                width(steps),
-                h,
-                big_h,
-                "too much deflection: h one cut less, H reset",
-            );
-        } else if steps < MAX_WIDTH_STEPS {
-            steps += 1;
-            d = log(
-                width(steps),
-                h,
-                big_h,
-                "h at one cut and still too much: B one step wider",
-            );
-        } else {
-            let note = format!(
-                "no sizes keep the deflection within {} mm (B up to {:.1} mm): the wall needs other measures",
-                p.allowed_deflection_mm,
-                width(steps)
-            );
-            return Ok(finish(w, p, width(steps), h, big_h, true, note, trace));
+    let (steps, h, big_h) = match search.fit(steps) {
+        Ok(found) => found,
+        Err(((steps, h, big_h), note)) => {
+            let b = search.width(steps);
+            return Ok(finish(w, p, b, h, big_h, true, note, search.trace));
         }
-    }
-    // Grow H by h within the limit, the wall and the tall-wall ratio.
-    let cap = if w.height > 4.0 * h + SAME_LENGTH_MM {
-        p.tall_wall_max_ratio * h
-    } else {
-        f64::INFINITY
     };
-    while big_h + h <= w.height + SAME_LENGTH_MM && big_h + h <= cap + SAME_LENGTH_MM {
-        let next = log(width(steps), h, big_h + h, "within the limit: H one h more");
-        if next > p.allowed_deflection_mm {
-            trace.last_mut().expect("just logged").action =
-                "H one h more exceeds the limit: keep the last".to_string();
-            break;
-        }
-        big_h += h;
-    }
-    if big_h + h <= w.height + SAME_LENGTH_MM && big_h + h > cap + SAME_LENGTH_MM {
-        let d = deflection(w, p, width(steps), h, big_h + h);
-        trace.push(Step {
-            b: width(steps),
-            h,
-            big_h: big_h + h,
-            deflection_mm: d,
-            action: format!(
-                "H one h more passes the ratio cap {}·h of walls higher than 4·h (Fokker test 10): keep the last",
-                p.tall_wall_max_ratio
-            ),
-        });
-    }
+    let big_h = search.grow(steps, h, big_h);
     let note = "thin: step approach".to_string();
-    Ok(finish(w, p, width(steps), h, big_h, true, note, trace))
+    let b = search.width(steps);
+    Ok(finish(w, p, b, h, big_h, true, note, search.trace))
+}
+
+/// Width steps, h and H of a search, mm.
+type Fit = (u32, f64, f64);
+
+/// The search for a wall's sizes, with its trace.
+struct Search<'a> {
+    w: &'a WallDimensions,
+    p: &'a SizingParameters,
+    trace: Vec<Step>,
+}
+
+impl Search<'_> {
+    /// The deflection at (B, h, H), logged with why it was tried, mm.
+    fn log(&mut self, b: f64, h: f64, big_h: f64, action: &str) -> f64 {
+        let d = deflection(self.w, self.p, b, h, big_h);
+        self.trace.push(Step {
+            b,
+            h,
+            big_h,
+            deflection_mm: d,
+            action: action.to_string(),
+        });
+        d
+    }
+
+    /// B after `steps` width steps, mm.
+    fn width(&self, steps: u32) -> f64 {
+        self.p.finishing_width_mm + f64::from(steps) * self.p.width_step()
+    }
+
+    /// A height down to whole cuts (one at least), mm.
+    fn round_height(&self, v: f64) -> f64 {
+        let cut = self.p.cut_height_mm;
+        (((v + SAME_LENGTH_MM) / cut).floor() * cut).max(cut)
+    }
+
+    /// From the rules of thumb, h one cut less (H reset) while too much,
+    /// then B one step wider: (steps, h, H) within the limit, or with the
+    /// note why none is.
+    fn fit(&mut self, mut steps: u32) -> Result<Fit, (Fit, String)> {
+        let (w, p) = (self.w, self.p);
+        let cut = p.cut_height_mm;
+        let initial_h = self
+            .round_height(f64::from(p.initial_cuts) * cut)
+            .min(self.round_height(w.height));
+        // H: the initial whole multiple of h, within the wall.
+        let reset_big = |h: f64| (p.initial_height_ratio.floor() * h).min(w.height).max(h);
+        let mut h = initial_h;
+        let mut big_h = reset_big(h);
+        let mut d = self.log(self.width(steps), h, big_h, "initial: rules of thumb");
+        while d > p.allowed_deflection_mm {
+            if h > cut + SAME_LENGTH_MM {
+                h = self.round_height(h - cut);
+                big_h = reset_big(h);
+                d = self.log(
+                    self.width(steps),
+                    h,
+                    big_h,
+                    "too much deflection: h one cut less, H reset",
+                );
+            } else if steps < MAX_WIDTH_STEPS {
+                steps += 1;
+                d = self.log(
+                    self.width(steps),
+                    h,
+                    big_h,
+                    "h at one cut and still too much: B one step wider",
+                );
+            } else {
+                let note = format!(
+                    "no sizes keep the deflection within {} mm (B up to {:.1} mm): the wall needs other measures",
+                    p.allowed_deflection_mm,
+                    self.width(steps)
+                );
+                return Err(((steps, h, big_h), note));
+            }
+        }
+        Ok((steps, h, big_h))
+    }
+
+    /// Grow H by h within the limit, the wall and the tall-wall ratio.
+    fn grow(&mut self, steps: u32, h: f64, mut big_h: f64) -> f64 {
+        let (w, p) = (self.w, self.p);
+        let b = self.width(steps);
+        let cap = if w.height > 4.0 * h + SAME_LENGTH_MM {
+            p.tall_wall_max_ratio * h
+        } else {
+            f64::INFINITY
+        };
+        while big_h + h <= w.height + SAME_LENGTH_MM && big_h + h <= cap + SAME_LENGTH_MM {
+            let next = self.log(b, h, big_h + h, "within the limit: H one h more");
+            if next > p.allowed_deflection_mm {
+                self.trace.last_mut().expect("just logged").action =
+                    "H one h more exceeds the limit: keep the last".to_string();
+                break;
+            }
+            big_h += h;
+        }
+        if big_h + h <= w.height + SAME_LENGTH_MM && big_h + h > cap + SAME_LENGTH_MM {
+            let d = deflection(w, p, b, h, big_h + h);
+            self.trace.push(Step {
+                b,
+                h,
+                big_h: big_h + h,
+                deflection_mm: d,
+                action: format!(
+                    "H one h more passes the ratio cap {}·h of walls higher than 4·h (Fokker test 10): keep the last",
+                    p.tall_wall_max_ratio
+                ),
+            });
+        }
+        big_h
+    }
 }
 
 #[allow(clippy::too_many_arguments)]

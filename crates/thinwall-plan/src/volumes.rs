@@ -66,7 +66,6 @@ fn to_world(frame: &[[f64; 3]; 4], x: f64, y: f64, z: f64) -> Point3 {
 /// rectangle.
 pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Option<Solid> {
     use thinwall_removal::pieces::Height;
-    use truck_modeling::Wire;
     let (o, a) = match (&s.lower, &s.upper) {
         (Height::Cylinder { o, a, .. }, _) | (_, Height::Cylinder { o, a, .. }) => (*o, *a),
         _ => return None,
@@ -74,41 +73,7 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Opt
     if s.rings.len() != 1 {
         return None;
     }
-    // (u, s): across and along the axis.
-    let us = |p: &[f64; 2]| {
-        let (dx, dy) = (p[0] - o[0], p[1] - o[1]);
-        (-dx * a[1] + dy * a[0], dx * a[0] + dy * a[1])
-    };
-    let pts: Vec<(f64, f64)> = s.rings[0].iter().map(us).collect();
-    let (u0, u1, s0, s1) = pts.iter().fold(
-        (
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-        ),
-        |m, p| (m.0.min(p.0), m.1.max(p.0), m.2.min(p.1), m.3.max(p.1)),
-    );
-    let size = (u1 - u0).max(s1 - s0);
-    let tol = 1e-7 * size.max(1.0);
-    let on_side = |p: &(f64, f64)| {
-        (p.0 - u0).abs() < tol
-            || (p.0 - u1).abs() < tol
-            || (p.1 - s0).abs() < tol
-            || (p.1 - s1).abs() < tol
-    };
-    let rect = (u1 - u0) * (s1 - s0);
-    let area: f64 = {
-        let mut sum = 0.0;
-        for i in 0..pts.len() {
-            let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
-            sum += p.0 * q.1 - q.0 * p.1;
-        }
-        0.5 * sum.abs()
-    };
-    if !pts.iter().all(on_side) || (area - rect).abs() > 1e-9 * rect.max(1.0) {
-        return None;
-    }
+    let r = AxisRect::of(&s.rings[0], o, a)?;
     // A plane bound must be level along the axis.
     for h in [&s.lower, &s.upper] {
         if let Height::Plane { gx, gy, .. } = h {
@@ -117,6 +82,84 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Opt
             }
         }
     }
+    let face = profile_face(frame, s, o, a, &r)?;
+    let d = frame_vector(frame, a[0] * (r.s1 - r.s0), a[1] * (r.s1 - r.s0));
+    Some(builder::tsweep(&face, d))
+}
+
+/// A region that is a rectangle in (u, s), across and along a horizontal
+/// axis through `o` along `a`: its sides, size and tolerance, mm.
+struct AxisRect {
+    u0: f64,
+    u1: f64,
+    s0: f64,
+    s1: f64,
+    size: f64,
+    tol: f64,
+}
+
+impl AxisRect {
+    /// `None` where the ring is not such a rectangle.
+    fn of(ring: &[[f64; 2]], o: [f64; 3], a: [f64; 2]) -> Option<Self> {
+        // (u, s): across and along the axis.
+        let us = |p: &[f64; 2]| {
+            let (dx, dy) = (p[0] - o[0], p[1] - o[1]);
+            (-dx * a[1] + dy * a[0], dx * a[0] + dy * a[1])
+        };
+        let pts: Vec<(f64, f64)> = ring.iter().map(us).collect();
+        let (u0, u1, s0, s1) = pts.iter().fold(
+            (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            ),
+            |m, p| (m.0.min(p.0), m.1.max(p.0), m.2.min(p.1), m.3.max(p.1)),
+        );
+        let size = (u1 - u0).max(s1 - s0);
+        let tol = 1e-7 * size.max(1.0);
+        let on_side = |p: &(f64, f64)| {
+            (p.0 - u0).abs() < tol
+                || (p.0 - u1).abs() < tol
+                || (p.1 - s0).abs() < tol
+                || (p.1 - s1).abs() < tol
+        };
+        let rect = (u1 - u0) * (s1 - s0);
+        let area: f64 = {
+            let mut sum = 0.0;
+            for i in 0..pts.len() {
+                let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+                sum += p.0 * q.1 - q.0 * p.1;
+            }
+            0.5 * sum.abs()
+        };
+        if !pts.iter().all(on_side) || (area - rect).abs() > 1e-9 * rect.max(1.0) {
+            return None;
+        }
+        Some(Self {
+            u0,
+            u1,
+            s0,
+            s1,
+            size,
+            tol,
+        })
+    }
+}
+
+/// The profile of a swept solid square to its axis, at s = s0: arcs where
+/// a bound is the cylinder, lines where it is a plane, and the vertical
+/// sides where the bounds do not meet.
+fn profile_face(
+    frame: &[[f64; 3]; 4],
+    s: &crate::types::FeatureSolid,
+    o: [f64; 3],
+    a: [f64; 2],
+    r: &AxisRect,
+) -> Option<truck_modeling::Face> {
+    use thinwall_removal::pieces::Height;
+    use truck_modeling::Wire;
+    let (size, tol, s0) = (r.size, r.tol, r.s0);
     // An end within the sliver width of the cylinder's silhouette is on it:
     // there the height is a square root, and the arrangement's rounding of
     // 1e-8 in u would stand a wall of microns between the two halves.
@@ -133,7 +176,7 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Opt
         true => radius.copysign(u),
         false => u,
     };
-    let (u0, u1) = (snap(u0), snap(u1));
+    let (u0, u1) = (snap(r.u0), snap(r.u1));
     // Frame coordinates of a profile point at (u, z), at s = s0.
     let at = |u: f64, z: f64| {
         let (x, y) = (o[0] + a[0] * s0 - a[1] * u, o[1] + a[1] * s0 + a[0] * u);
@@ -176,9 +219,7 @@ pub fn swept_solid(frame: &[[f64; 3]; 4], s: &crate::types::FeatureSolid) -> Opt
         edges.push(builder::line(&v_u0, &v_l0));
     }
     let wire: Wire = edges.into();
-    let face = builder::try_attach_plane(&[wire]).ok()?;
-    let d = frame_vector(frame, a[0] * (s1 - s0), a[1] * (s1 - s0));
-    Some(builder::tsweep(&face, d))
+    builder::try_attach_plane(&[wire]).ok()
 }
 
 /// A vector of the removal frame's xy plane in world coordinates.

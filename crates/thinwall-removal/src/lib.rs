@@ -170,6 +170,162 @@ pub fn frame_of(a: &PartAnalysis, up: Vector3) -> (Frame, [f64; 3], [f64; 3]) {
     (frame, [xlo, ylo, zlo], [xhi, yhi, zhi])
 }
 
+/// The rectangle the arrangement starts from: the block stock's
+/// footprint, or the pieces' box padded by 1e-3 of the part's size.
+fn footprint<'a>(
+    stock: &StockShape,
+    pieces: impl Iterator<Item = &'a Piece>,
+    size: f64,
+) -> Rect<f64> {
+    if let StockShape::Block { lo, hi } = stock {
+        return Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] });
+    }
+    let mut r = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in pieces {
+        r = [
+            r[0].min(p.bbox.min().x),
+            r[1].min(p.bbox.min().y),
+            r[2].max(p.bbox.max().x),
+            r[3].max(p.bbox.max().y),
+        ];
+    }
+    let pad = 1e-3 * size;
+    Rect::new(
+        Coord {
+            x: r[0] - pad,
+            y: r[1] - pad,
+        },
+        Coord {
+            x: r[2] + pad,
+            y: r[3] + pad,
+        },
+    )
+}
+
+/// The regions the arrangement cuts along: the pieces' projections (part
+/// first, then stock), then the bands.
+fn covers<'a>(
+    pieces: impl Iterator<Item = &'a Piece>,
+    bands: &'a [MultiPolygon<f64>],
+) -> Vec<Cover<'a>> {
+    let mut covers: Vec<Cover> = pieces
+        .map(|p| Cover {
+            region: &p.region,
+            bbox: p.bbox,
+        })
+        .collect();
+    for b in bands {
+        let bbox = geo::BoundingRect::bounding_rect(b).unwrap_or(Rect::new(
+            Coord { x: 0.0, y: 0.0 },
+            Coord { x: 0.0, y: 0.0 },
+        ));
+        covers.push(Cover { region: b, bbox });
+    }
+    covers
+}
+
+/// The vertical columns over the cells: the pieces a cell's covers index
+/// (part, then stock solid, then bands).
+struct Columns<'a> {
+    part: &'a [Piece],
+    stock_pieces: &'a [Piece],
+    stock: &'a StockShape<'a>,
+    size: f64,
+}
+
+/// What one column holds.
+struct Column {
+    blocks: Vec<Block>,
+    /// The cell's area where part material lies outside the stock, mm².
+    missing: f64,
+    /// Removal left out because the cell is a sliver, mm³.
+    sliver_volume: f64,
+}
+
+impl Columns<'_> {
+    /// The bands a cell lies in.
+    fn bands_of(&self, c: &cells::Cell) -> Vec<usize> {
+        let first_band = self.part.len() + self.stock_pieces.len();
+        c.covers
+            .iter()
+            .filter(|&&k| k >= first_band)
+            .map(|&k| k - first_band)
+            .collect()
+    }
+
+    /// The intervals of part material and of stock along the column.
+    fn intervals(&self, c: &cells::Cell) -> (Vec<(End, End)>, Vec<(End, End)>) {
+        let (np, ns) = (self.part.len(), self.stock_pieces.len());
+        let pt = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
+        let at = |pc: &Piece| pc.height.at(pt.x(), pt.y());
+        let part_cross: Vec<(f64, Facing, Bound)> = c
+            .covers
+            .iter()
+            .filter(|&&k| k < np)
+            .map(|&k| (at(&self.part[k]), self.part[k].facing, Bound::Part(k)))
+            .collect();
+        let stock_cross: Vec<(f64, Facing, Bound)> = match self.stock {
+            StockShape::Block { lo, hi } => vec![
+                (lo[2], Facing::Down, Bound::Flat(lo[2])),
+                (hi[2], Facing::Up, Bound::Flat(hi[2])),
+            ],
+            StockShape::Solid(_) => c
+                .covers
+                .iter()
+                .filter(|&&k| k >= np && k < np + ns)
+                .map(|&k| {
+                    let piece = &self.stock_pieces[k - np];
+                    (at(piece), piece.facing, Bound::Stock(k - np))
+                })
+                .collect(),
+        };
+        (intervals(part_cross), intervals(stock_cross))
+    }
+
+    /// The blocks over cell `ci`: stock intervals minus part intervals.
+    fn blocks_over(&self, ci: usize, c: &cells::Cell) -> Column {
+        let (solid, stock_iv) = self.intervals(c);
+        let mut column = Column {
+            blocks: vec![],
+            missing: 0.0,
+            sliver_volume: 0.0,
+        };
+        // Part material outside the stock: the stock is too small.
+        for (lo, hi) in &solid {
+            let inside: f64 = stock_iv
+                .iter()
+                .map(|(a, b)| (hi.0.min(b.0) - lo.0.max(a.0)).max(0.0))
+                .sum();
+            if hi.0 - lo.0 - inside > 1e-6 * self.size {
+                column.missing += c.area;
+            }
+        }
+        let top = stock_iv.last().map(|iv| iv.1 .0);
+        let sliver = mean_width(&c.poly) < SLIVER_WIDTH * self.size;
+        for (lo, hi) in subtract(&stock_iv, &solid) {
+            let vol = |b: &Bound| flux::flux(&b.height(self.part, self.stock_pieces), &c.poly);
+            let volume = vol(&hi.1) - vol(&lo.1);
+            if sliver {
+                column.sliver_volume += volume;
+                continue;
+            }
+            column.blocks.push(Block {
+                cell: ci,
+                lower: lo.1,
+                upper: hi.1,
+                reachable: Some(hi.0) == top,
+                volume,
+            });
+        }
+        column
+    }
+}
+
 /// A bound as an exact key (within one column, where a cut height is the
 /// same number on both sides of it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -214,131 +370,24 @@ impl Removal {
             StockShape::Solid(s) => pieces::pieces(s, &frame)?,
             StockShape::Block { .. } => vec![],
         };
-        let start = match stock {
-            StockShape::Block { lo, hi } => {
-                Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] })
-            }
-            StockShape::Solid(_) => {
-                let mut r = [
-                    f64::INFINITY,
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                    f64::NEG_INFINITY,
-                ];
-                for p in part_pieces.iter().chain(&stock_pieces) {
-                    r = [
-                        r[0].min(p.bbox.min().x),
-                        r[1].min(p.bbox.min().y),
-                        r[2].max(p.bbox.max().x),
-                        r[3].max(p.bbox.max().y),
-                    ];
-                }
-                let pad = 1e-3 * size;
-                Rect::new(
-                    Coord {
-                        x: r[0] - pad,
-                        y: r[1] - pad,
-                    },
-                    Coord {
-                        x: r[2] + pad,
-                        y: r[3] + pad,
-                    },
-                )
-            }
-        };
-        let band_boxes: Vec<Rect<f64>> = bands
-            .iter()
-            .map(|b| {
-                geo::BoundingRect::bounding_rect(b).unwrap_or(Rect::new(
-                    Coord { x: 0.0, y: 0.0 },
-                    Coord { x: 0.0, y: 0.0 },
-                ))
-            })
-            .collect();
-        let mut covers: Vec<Cover> = Vec::new();
-        for p in part_pieces.iter().chain(&stock_pieces) {
-            covers.push(Cover {
-                region: &p.region,
-                bbox: p.bbox,
-            });
-        }
-        for (b, bb) in bands.iter().zip(&band_boxes) {
-            covers.push(Cover {
-                region: b,
-                bbox: *bb,
-            });
-        }
+        let start = footprint(stock, part_pieces.iter().chain(&stock_pieces), size);
+        let covers = covers(part_pieces.iter().chain(&stock_pieces), bands);
         let min_area = (1e-7 * size).powi(2);
         let cells = arrange(start.to_polygon(), &covers, min_area);
-        let np = part_pieces.len();
-        let ns = stock_pieces.len();
-        let mut cell_bands = Vec::with_capacity(cells.len());
+        let columns = Columns {
+            part: &part_pieces,
+            stock_pieces: &stock_pieces,
+            stock,
+            size,
+        };
+        let cell_bands = cells.iter().map(|c| columns.bands_of(c)).collect();
         let mut blocks = Vec::new();
-        let mut missing = 0.0;
-        let mut sliver_volume = 0.0;
+        let (mut missing, mut sliver_volume) = (0.0, 0.0);
         for (ci, c) in cells.iter().enumerate() {
-            cell_bands.push(
-                c.covers
-                    .iter()
-                    .filter(|&&k| k >= np + ns)
-                    .map(|&k| k - np - ns)
-                    .collect(),
-            );
-            let pt = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
-            let at = |pc: &Piece| pc.height.at(pt.x(), pt.y());
-            let part_cross: Vec<(f64, Facing, Bound)> = c
-                .covers
-                .iter()
-                .filter(|&&k| k < np)
-                .map(|&k| (at(&part_pieces[k]), part_pieces[k].facing, Bound::Part(k)))
-                .collect();
-            let stock_cross: Vec<(f64, Facing, Bound)> = match stock {
-                StockShape::Block { lo, hi } => vec![
-                    (lo[2], Facing::Down, Bound::Flat(lo[2])),
-                    (hi[2], Facing::Up, Bound::Flat(hi[2])),
-                ],
-                StockShape::Solid(_) => c
-                    .covers
-                    .iter()
-                    .filter(|&&k| k >= np && k < np + ns)
-                    .map(|&k| {
-                        (
-                            at(&stock_pieces[k - np]),
-                            stock_pieces[k - np].facing,
-                            Bound::Stock(k - np),
-                        )
-                    })
-                    .collect(),
-            };
-            let solid = intervals(part_cross);
-            let stock_iv = intervals(stock_cross);
-            // Part material outside the stock: the stock is too small.
-            for (lo, hi) in &solid {
-                let inside: f64 = stock_iv
-                    .iter()
-                    .map(|(a, b)| (hi.0.min(b.0) - lo.0.max(a.0)).max(0.0))
-                    .sum();
-                if hi.0 - lo.0 - inside > 1e-6 * size {
-                    missing += c.area;
-                }
-            }
-            let top = stock_iv.last().map(|iv| iv.1 .0);
-            let sliver = mean_width(&c.poly) < SLIVER_WIDTH * size;
-            for (lo, hi) in subtract(&stock_iv, &solid) {
-                let vol = |b: &Bound| flux::flux(&b.height(&part_pieces, &stock_pieces), &c.poly);
-                let volume = vol(&hi.1) - vol(&lo.1);
-                if sliver {
-                    sliver_volume += volume;
-                    continue;
-                }
-                blocks.push(Block {
-                    cell: ci,
-                    lower: lo.1,
-                    upper: hi.1,
-                    reachable: Some(hi.0) == top,
-                    volume,
-                });
-            }
+            let column = columns.blocks_over(ci, c);
+            missing += column.missing;
+            sliver_volume += column.sliver_volume;
+            blocks.extend(column.blocks);
         }
         if missing > min_area.max(1e-6 * size * size) {
             return Err(RemovalError::StockTooSmall { area_mm2: missing });

@@ -414,7 +414,7 @@ fn cylinder_pieces(
     r: f64,
     sense: f64,
 ) -> Result<Vec<Piece>, RemovalError> {
-    use std::f64::consts::{PI, TAU};
+    use std::f64::consts::PI;
     let o = frame.to_local(&cf.origin);
     let a3 = frame.vector_to_local(&cf.z);
     let a = [a3.x, a3.y];
@@ -428,10 +428,62 @@ fn cylinder_pieces(
         let u = dx * b[0] + dy * b[1];
         (dz.atan2(u), s)
     };
-    let loops = face_loop_points(part, f);
+    let (wrapped, open) = unrolled_loops(&face_loop_points(part, f), to_ts);
+    let region = match wrapped.len() {
+        0 => open_region(&open),
+        2 => tube_region(&wrapped, &open),
+        _ => {
+            return Err(unsupported(
+                part,
+                f,
+                "a cylinder whose loops wind around it other than as a tube",
+            ))
+        }
+    };
+    // Facing up where sense·sin θ > 0 (the outward normal is sense·radial).
+    let (slo, shi) = s_range(&region);
+    let mut out = Vec::new();
+    for (half, sign) in [(0.0, 1.0), (PI, -1.0)] {
+        let part_region = region.intersection(&half_turns(half, slo, shi));
+        if part_region.0.is_empty() {
+            continue;
+        }
+        let planar = map_region(&part_region, |t: f64, s: f64| {
+            let u = r * t.cos();
+            (o.x + a[0] * s + b[0] * u, o.y + a[1] * s + b[1] * u)
+        });
+        let facing = if sense * sign > 0.0 {
+            Facing::Up
+        } else {
+            Facing::Down
+        };
+        out.extend(finish(
+            f,
+            part.face(f).step_id,
+            facing,
+            planar,
+            Height::Cylinder {
+                o: [o.x, o.y, o.z],
+                a,
+                r,
+                sign,
+            },
+        ));
+    }
+    Ok(out)
+}
+
+/// A loop's points as (θ, s) unrolled without jumps, split into the loops
+/// that wind once around the axis and those that do not.
+type Unrolled = Vec<Vec<(f64, f64)>>;
+fn unrolled_loops(
+    loops: &[Vec<Point3>],
+    to_ts: impl Fn(&Point3) -> (f64, f64),
+) -> (Unrolled, Unrolled) {
+    use std::f64::consts::{PI, TAU};
     let mut wrapped = Vec::new();
     let mut open = Vec::new();
-    for lp in &loops {
+    for lp in loops {
         let mut pts: Vec<(f64, f64)> = Vec::with_capacity(lp.len());
         for p in lp {
             let (mut t, s) = to_ts(p);
@@ -452,130 +504,110 @@ fn cylinder_pieces(
             open.push(pts);
         }
     }
-    let region = match wrapped.len() {
-        0 => {
-            // Shift every loop next to the first one's mean angle.
-            let mean = |p: &Vec<(f64, f64)>| p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
-            let m0 = open.first().map(mean).unwrap_or(0.0);
-            let rings = open
-                .iter()
-                .map(|p| {
-                    let k = ((m0 - mean(p)) / TAU).round() * TAU;
-                    ring(p.iter().map(|q| (q.0 + k, q.1)))
-                })
-                .collect();
-            polygon_of_rings(rings)
-        }
-        2 => {
-            // A tube: the strip between the two wrapping loops, over one turn.
-            let band = |p: &Vec<(f64, f64)>| {
-                let mut q: Vec<(f64, f64)> =
-                    p.iter().map(|&(t, s)| (t.rem_euclid(TAU), s)).collect();
-                q.sort_by(|x, y| x.0.total_cmp(&y.0));
-                q
-            };
-            let (l0, l1) = (band(&wrapped[0]), band(&wrapped[1]));
-            let edge = |q: &Vec<(f64, f64)>, t: f64| {
-                // s at the seam by the nearest samples on either side.
-                let (first, last) = (q[0], q[q.len() - 1]);
-                let span = first.0 + TAU - last.0;
-                let w = if span > 0.0 { (t - last.0) / span } else { 0.5 };
-                last.1 + (first.1 - last.1) * w
-            };
-            let mut pts = vec![(0.0, edge(&l0, TAU))];
-            pts.extend(l0.iter().copied());
-            pts.push((TAU, edge(&l0, TAU)));
-            pts.push((TAU, edge(&l1, TAU)));
-            pts.extend(l1.iter().rev().copied());
-            pts.push((0.0, edge(&l1, TAU)));
-            let mut region = polygon_of_rings(vec![ring(pts.into_iter())]);
-            for p in &open {
-                let mean = p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
-                let k = ((PI - mean) / TAU).round() * TAU;
-                let hole = MultiPolygon::new(vec![Polygon::new(
-                    ring(p.iter().map(|q| (q.0 + k, q.1))),
-                    vec![],
-                )]);
-                region = region.difference(&hole);
-            }
-            region
-        }
-        _ => {
-            return Err(unsupported(
-                part,
-                f,
-                "a cylinder whose loops wind around it other than as a tube",
-            ))
-        }
+    (wrapped, open)
+}
+
+/// The (θ, s) region of loops none of which winds around: every loop
+/// shifted next to the first one's mean angle.
+fn open_region(open: &[Vec<(f64, f64)>]) -> MultiPolygon<f64> {
+    use std::f64::consts::TAU;
+    let mean = |p: &Vec<(f64, f64)>| p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
+    let m0 = open.first().map(mean).unwrap_or(0.0);
+    let rings = open
+        .iter()
+        .map(|p| {
+            let k = ((m0 - mean(p)) / TAU).round() * TAU;
+            ring(p.iter().map(|q| (q.0 + k, q.1)))
+        })
+        .collect();
+    polygon_of_rings(rings)
+}
+
+/// A tube: the strip between the two wrapping loops over one turn, less
+/// the loops that do not wind around (holes in it).
+fn tube_region(wrapped: &[Vec<(f64, f64)>], open: &[Vec<(f64, f64)>]) -> MultiPolygon<f64> {
+    use std::f64::consts::{PI, TAU};
+    let band = |p: &Vec<(f64, f64)>| {
+        let mut q: Vec<(f64, f64)> = p.iter().map(|&(t, s)| (t.rem_euclid(TAU), s)).collect();
+        q.sort_by(|x, y| x.0.total_cmp(&y.0));
+        q
     };
-    // Facing up where sense·sin θ > 0 (the outward normal is sense·radial).
-    let (slo, shi) = s_range(&region);
-    let mut out = Vec::new();
-    for (half, sign) in [(0.0, 1.0), (PI, -1.0)] {
-        let mut clip = MultiPolygon::new(vec![]);
-        for k in -2..=2 {
-            let t0 = half + TAU * k as f64;
-            clip.0.push(
-                Rect::new(
-                    Coord {
-                        x: t0,
-                        y: slo - 1.0,
-                    },
-                    Coord {
-                        x: t0 + PI,
-                        y: shi + 1.0,
-                    },
-                )
-                .to_polygon(),
-            );
-        }
-        let part_region = region.intersection(&clip);
-        if part_region.0.is_empty() {
-            continue;
-        }
-        let map = |t: f64, s: f64| {
-            let (u, _v) = (r * t.cos(), r * t.sin());
-            (o.x + a[0] * s + b[0] * u, o.y + a[1] * s + b[1] * u)
-        };
-        let planar: MultiPolygon<f64> = MultiPolygon::new(
-            part_region
-                .0
-                .iter()
-                .map(|p| {
-                    let m = |ls: &LineString<f64>| {
-                        LineString::new(
-                            ls.0.iter()
-                                .map(|c| {
-                                    let (x, y) = map(c.x, c.y);
-                                    Coord { x, y }
-                                })
-                                .collect(),
-                        )
-                    };
-                    Polygon::new(m(p.exterior()), p.interiors().iter().map(m).collect())
-                        .orient(geo::orient::Direction::Default)
+    let (l0, l1) = (band(&wrapped[0]), band(&wrapped[1]));
+    let edge = |q: &Vec<(f64, f64)>, t: f64| {
+        // s at the seam by the nearest samples on either side.
+        let (first, last) = (q[0], q[q.len() - 1]);
+        let span = first.0 + TAU - last.0;
+        let w = if span > 0.0 { (t - last.0) / span } else { 0.5 };
+        last.1 + (first.1 - last.1) * w
+    };
+    let mut pts = vec![(0.0, edge(&l0, TAU))];
+    pts.extend(l0.iter().copied());
+    pts.push((TAU, edge(&l0, TAU)));
+    pts.push((TAU, edge(&l1, TAU)));
+    pts.extend(l1.iter().rev().copied());
+    pts.push((0.0, edge(&l1, TAU)));
+    let mut region = polygon_of_rings(vec![ring(pts.into_iter())]);
+    for p in open {
+        let mean = p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
+        let k = ((PI - mean) / TAU).round() * TAU;
+        let hole = MultiPolygon::new(vec![Polygon::new(
+            ring(p.iter().map(|q| (q.0 + k, q.1))),
+            vec![],
+        )]);
+        region = region.difference(&hole);
+    }
+    region
+}
+
+/// The half turns θ ∈ [half + 2πk, half + 2πk + π] for k in −2..=2, over
+/// s ∈ [slo − 1, shi + 1].
+fn half_turns(half: f64, slo: f64, shi: f64) -> MultiPolygon<f64> {
+    use std::f64::consts::{PI, TAU};
+    let mut clip = MultiPolygon::new(vec![]);
+    for k in -2..=2 {
+        let t0 = half + TAU * k as f64;
+        clip.0.push(
+            Rect::new(
+                Coord {
+                    x: t0,
+                    y: slo - 1.0,
+                },
+                Coord {
+                    x: t0 + PI,
+                    y: shi + 1.0,
+                },
+            )
+            .to_polygon(),
+        );
+    }
+    clip
+}
+
+/// A (θ, s) region mapped onto the plane by `map`, oriented.
+fn map_region(
+    region: &MultiPolygon<f64>,
+    map: impl Fn(f64, f64) -> (f64, f64),
+) -> MultiPolygon<f64> {
+    let m = |ls: &LineString<f64>| {
+        LineString::new(
+            ls.0.iter()
+                .map(|c| {
+                    let (x, y) = map(c.x, c.y);
+                    Coord { x, y }
                 })
                 .collect(),
-        );
-        let facing = if sense * sign > 0.0 {
-            Facing::Up
-        } else {
-            Facing::Down
-        };
-        out.extend(finish(
-            f,
-            part.face(f).step_id,
-            facing,
-            planar,
-            Height::Cylinder {
-                o: [o.x, o.y, o.z],
-                a,
-                r,
-                sign,
-            },
-        ));
-    }
-    Ok(out)
+        )
+    };
+    MultiPolygon::new(
+        region
+            .0
+            .iter()
+            .map(|p| {
+                Polygon::new(m(p.exterior()), p.interiors().iter().map(m).collect())
+                    .orient(geo::orient::Direction::Default)
+            })
+            .collect(),
+    )
 }
 
 /// The signed step from `d` to the nearest equivalent angle in (−π, π].

@@ -95,43 +95,7 @@ impl OperationsReport {
             "min"
         );
         for o in &r.operations {
-            let after = if o.after.is_empty() {
-                "-".to_string()
-            } else {
-                o.after
-                    .iter()
-                    .map(|a| a.to_string())
-                    .collect::<Vec<_>>()
-                    .join(",")
-            };
-            let regions = o.regions.map_or(String::from("-"), |g| {
-                format!(
-                    "{:.0}/{:.0}/{:.0}",
-                    g.boundary_mm2, g.full_cut_mm2, g.roughing_mm2
-                )
-            });
-            let layers = match (o.passes.first(), o.passes.last(), o.drill) {
-                (Some(a), Some(b), _) if a.layer == b.layer => format!("{}", a.layer + 1),
-                (Some(a), Some(b), _) => format!("{}-{}", a.layer + 1, b.layer + 1),
-                (_, _, Some(kind)) => kind.name().to_string(),
-                _ => "-".to_string(),
-            };
-            let _ = writeln!(
-                s,
-                "{:>4}  {:<11} {:<8} {:>6.1}  {:<7} {:>7}  {:>8.2}..{:<8.2} {:>12.1}  {:>26}  {:>13.0}  {:>8.2}  {after}",
-                o.step,
-                o.stage.name(),
-                o.tool,
-                o.diameter_mm,
-                o.feature.as_deref().unwrap_or("-"),
-                layers,
-                o.z_top_mm,
-                o.z_bottom_mm,
-                o.area_mm2,
-                regions,
-                o.volume_mm3,
-                o.time_min
-            );
+            operation_line(&mut s, o);
         }
         let small: usize = r
             .layers
@@ -168,4 +132,45 @@ impl OperationsReport {
         let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
         s
     }
+}
+
+/// One operation's row of the sheet.
+fn operation_line(s: &mut String, o: &thinwall_ops::operations::Operation) {
+    let after = if o.after.is_empty() {
+        "-".to_string()
+    } else {
+        o.after
+            .iter()
+            .map(|a| a.to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let regions = o.regions.map_or(String::from("-"), |g| {
+        format!(
+            "{:.0}/{:.0}/{:.0}",
+            g.boundary_mm2, g.full_cut_mm2, g.roughing_mm2
+        )
+    });
+    let layers = match (o.passes.first(), o.passes.last(), o.drill) {
+        (Some(a), Some(b), _) if a.layer == b.layer => format!("{}", a.layer + 1),
+        (Some(a), Some(b), _) => format!("{}-{}", a.layer + 1, b.layer + 1),
+        (_, _, Some(kind)) => kind.name().to_string(),
+        _ => "-".to_string(),
+    };
+    let _ = writeln!(
+            s,
+            "{:>4}  {:<11} {:<8} {:>6.1}  {:<7} {:>7}  {:>8.2}..{:<8.2} {:>12.1}  {:>26}  {:>13.0}  {:>8.2}  {after}",
+            o.step,
+            o.stage.name(),
+            o.tool,
+            o.diameter_mm,
+            o.feature.as_deref().unwrap_or("-"),
+            layers,
+            o.z_top_mm,
+            o.z_bottom_mm,
+            o.area_mm2,
+            regions,
+            o.volume_mm3,
+            o.time_min
+        );
 }

@@ -267,63 +267,14 @@ pub fn draw(
     title: &str,
     width: f64,
 ) -> String {
-    let (e1, e2, up) = view_axes(a);
-    // Looking down along −(e1 + e2 + up): the box's iso view.
-    let view = -(e1 + e2 + up).normalize();
-    let right = up.cross(&view).try_normalize(1e-12).unwrap_or(e1);
-    let screen_up = view.cross(&right);
-    let to_screen = |p: &Point3| [p.coords.dot(&right), -p.coords.dot(&screen_up)];
-    let light = (-view + up * 0.6 + right * 0.3).normalize();
+    let iso = Iso::of(a);
     let size = a.part().bounding_box().diagonal().max(1e-9);
-    let piece = 0.05 * size;
-    let mut items: Vec<(f64, String)> = Vec::new();
-    for layer in layers {
-        let mesh = layer.mesh;
-        for (fm, c) in mesh.faces.iter().zip(&layer.colours) {
-            let pieces = fm.triangles.iter().flat_map(|t| {
-                // Small pieces: far-to-near drawing orders large faces badly.
-                small_pieces(t.map(|i| mesh.points[i as usize]), piece)
-            });
-            for [p, q, r] in pieces {
-                let n = (q - p).cross(&(r - p));
-                let Some(n) = n.try_normalize(1e-300) else {
-                    continue;
-                };
-                if n.dot(&view) >= 0.0 {
-                    continue; // turned away
-                }
-                let shade = 0.45 + 0.55 * n.dot(&light).abs();
-                let fill = c.map(|x| (x as f64 * shade).round().min(255.0) as u8);
-                // Seen from above, a floor is never in front of the wall
-                // standing on it where the two overlap on the picture:
-                // floors go back half a piece, so those behind a wall stay
-                // behind it.
-                let floor = if n.dot(&up) > 0.5 { 0.5 * piece } else { 0.0 };
-                let depth = (p.coords + q.coords + r.coords).dot(&view) / 3.0 + floor;
-                let [a, b, cc] = [to_screen(&p), to_screen(&q), to_screen(&r)];
-                let hex = crate::palette::hex(fill);
-                // Opaque pieces get a hairline of their own colour to close
-                // the seams; see-through ones none (it would draw the mesh).
-                let style = if layer.opacity < 1.0 {
-                    format!("fill-opacity=\"{:.2}\" stroke=\"none\"", layer.opacity)
-                } else {
-                    format!("stroke=\"{hex}\" stroke-width=\"0.4\"")
-                };
-                items.push((
-                    depth,
-                    format!(
-                        "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{hex}\" {style}/>",
-                        a[0], a[1], b[0], b[1], cc[0], cc[1]
-                    ),
-                ));
-            }
-        }
-    }
+    let mut items = iso.pieces(layers, 0.05 * size);
     // Far first.
     items.sort_by(|x, y| y.0.total_cmp(&x.0));
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in layers.iter().flat_map(|l| &l.mesh.points) {
-        let s = to_screen(p);
+        let s = iso.to_screen(p);
         for k in 0..2 {
             lo[k] = lo[k].min(s[k]);
             hi[k] = hi[k].max(s[k]);
@@ -349,10 +300,99 @@ pub fn draw(
         s.push('\n');
     }
     s.push_str("</g>\n");
-    // Labels, on top, in picture pixels.
+    write_labels(&mut s, &iso, labels, lo, scale);
+    write_legend(&mut s, legend, width);
+    s.push_str("</g>\n</svg>\n");
+    s
+}
+
+/// The isometric view: looking down along −(e1 + e2 + up) of the set-up's
+/// stock axes, with the light.
+struct Iso {
+    view: Vector3,
+    right: Vector3,
+    screen_up: Vector3,
+    up: Vector3,
+    light: Vector3,
+}
+
+impl Iso {
+    fn of(a: &PartAnalysis) -> Self {
+        let (e1, e2, up) = view_axes(a);
+        let view = -(e1 + e2 + up).normalize();
+        let right = up.cross(&view).try_normalize(1e-12).unwrap_or(e1);
+        let screen_up = view.cross(&right);
+        let light = (-view + up * 0.6 + right * 0.3).normalize();
+        Self {
+            view,
+            right,
+            screen_up,
+            up,
+            light,
+        }
+    }
+
+    fn to_screen(&self, p: &Point3) -> [f64; 2] {
+        [p.coords.dot(&self.right), -p.coords.dot(&self.screen_up)]
+    }
+
+    /// Every triangle facing the eye, cut in pieces of about `piece` mm,
+    /// as (depth, SVG polygon).
+    fn pieces(&self, layers: &[Layer], piece: f64) -> Vec<(f64, String)> {
+        let (view, up, light) = (self.view, self.up, self.light);
+        let to_screen = |p: &Point3| self.to_screen(p);
+        let mut items: Vec<(f64, String)> = Vec::new();
+        for layer in layers {
+            let mesh = layer.mesh;
+            for (fm, c) in mesh.faces.iter().zip(&layer.colours) {
+                let pieces = fm.triangles.iter().flat_map(|t| {
+                    // Small pieces: far-to-near drawing orders large faces badly.
+                    small_pieces(t.map(|i| mesh.points[i as usize]), piece)
+                });
+                for [p, q, r] in pieces {
+                    let n = (q - p).cross(&(r - p));
+                    let Some(n) = n.try_normalize(1e-300) else {
+                        continue;
+                    };
+                    if n.dot(&view) >= 0.0 {
+                        continue; // turned away
+                    }
+                    let shade = 0.45 + 0.55 * n.dot(&light).abs();
+                    let fill = c.map(|x| (x as f64 * shade).round().min(255.0) as u8);
+                    // Seen from above, a floor is never in front of the wall
+                    // standing on it where the two overlap on the picture:
+                    // floors go back half a piece, so those behind a wall stay
+                    // behind it.
+                    let floor = if n.dot(&up) > 0.5 { 0.5 * piece } else { 0.0 };
+                    let depth = (p.coords + q.coords + r.coords).dot(&view) / 3.0 + floor;
+                    let [a, b, cc] = [to_screen(&p), to_screen(&q), to_screen(&r)];
+                    let hex = crate::palette::hex(fill);
+                    // Opaque pieces get a hairline of their own colour to close
+                    // the seams; see-through ones none (it would draw the mesh).
+                    let style = if layer.opacity < 1.0 {
+                        format!("fill-opacity=\"{:.2}\" stroke=\"none\"", layer.opacity)
+                    } else {
+                        format!("stroke=\"{hex}\" stroke-width=\"0.4\"")
+                    };
+                    items.push((
+                    depth,
+                    format!(
+                        "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{hex}\" {style}/>",
+                        a[0], a[1], b[0], b[1], cc[0], cc[1]
+                    ),
+                ));
+                }
+            }
+        }
+        items
+    }
+}
+
+/// The labels, on top, in picture pixels.
+fn write_labels(s: &mut String, iso: &Iso, labels: &[Label], lo: [f64; 2], scale: f64) {
     let _ = writeln!(s, "<g font-family=\"sans-serif\" font-size=\"12\" font-weight=\"bold\" text-anchor=\"middle\">");
     for l in labels {
-        let p = to_screen(&l.at);
+        let p = iso.to_screen(&l.at);
         let (x, y) = (20.0 + (p[0] - lo[0]) * scale, 20.0 + (p[1] - lo[1]) * scale);
         let w = 8.0 + 7.0 * l.text.chars().count() as f64;
         let _ = writeln!(
@@ -365,7 +405,10 @@ pub fn draw(
         );
     }
     s.push_str("</g>\n");
-    // Legend.
+}
+
+/// The legend, at the right; its group is closed by the caller.
+fn write_legend(s: &mut String, legend: &[Key], width: f64) {
     let x0 = width - 190.0;
     let _ = writeln!(s, "<g font-family=\"sans-serif\" font-size=\"13\">");
     for (k, key) in legend.iter().enumerate() {
@@ -380,8 +423,6 @@ pub fn draw(
             escape(&key.text)
         );
     }
-    s.push_str("</g>\n</svg>\n");
-    s
 }
 
 /// The set-up's stock axes across up and up itself: the frame pictures

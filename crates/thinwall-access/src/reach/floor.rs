@@ -12,7 +12,7 @@
 pub use super::disk::{disk, grown};
 use super::obstacle::Obstacle;
 use super::scene::{clip_tagged, Scene};
-use super::{Ctx, Judged};
+use super::{xy_bounds, Ctx, Judged};
 use geo::Rect;
 use geo::{Area, BoundingRect, Coord, MultiPolygon};
 use std::collections::BTreeMap;
@@ -32,76 +32,9 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
     let Some(rect) = region.bounding_rect() else {
         return Judged::default();
     };
-    let tool = &ctx.tool;
-    let r = 0.5 * tool.diameter;
-    let big = 0.5 * tool.holder_diameter;
-    let corners: Vec<[f64; 3]> = region
-        .iter()
-        .flat_map(|p| p.exterior().coords().copied().collect::<Vec<_>>())
-        .map(|c| scene.local(&frame.to_world(&Vector3::new(c.x, c.y, 0.0))))
-        .collect();
-    let h = corners
-        .iter()
-        .map(|c| c[2])
-        .fold(f64::NEG_INFINITY, f64::max);
-    let reach = r + big;
-    let lo = [
-        corners.iter().map(|c| c[0]).fold(f64::INFINITY, f64::min) - reach,
-        corners.iter().map(|c| c[1]).fold(f64::INFINITY, f64::min) - reach,
-    ];
-    let hi = [
-        corners
-            .iter()
-            .map(|c| c[0])
-            .fold(f64::NEG_INFINITY, f64::max)
-            + reach,
-        corners
-            .iter()
-            .map(|c| c[1])
-            .fold(f64::NEG_INFINITY, f64::max)
-            + reach,
-    ];
-    let to_face = |p: [f64; 2]| -> [f64; 2] {
-        let w = scene.frame.to_world(&Vector3::new(p[0], p[1], h));
-        let l = frame.to_local(&w);
-        [l.x, l.y]
-    };
-    let (small_disk, holder_disk) = (disk(r), disk(big));
-    // Tessellated material touches within its own tolerance.
-    let slack = ctx.touch_tessellated();
-    let (small_tess, holder_tess) = (disk((r - slack).max(0.0)), disk((big - slack).max(0.0)));
-    let mut obstacles: BTreeMap<(u32, bool), Obstacle> = BTreeMap::new();
-    let top = h + tool.cutting_length;
-    for k in scene.near(lo, hi, h + ctx.touch) {
-        let t = &scene.tris[k as usize];
-        if t.face == own {
-            continue;
-        }
-        for (holder, a, b) in [
-            (false, h + ctx.touch, top),
-            (true, top + ctx.touch, f64::INFINITY),
-        ] {
-            let clipped = clip_tagged(&t.p, a, b);
-            if !clipped.is_empty() {
-                obstacles
-                    .entry((t.face, holder))
-                    .or_default()
-                    .push(t, clipped, to_face);
-            }
-        }
-    }
-    let groups: Vec<((u32, bool), MultiPolygon<f64>)> = obstacles
-        .into_iter()
-        .map(|((face, holder), ob)| {
-            let d = match (holder, ob.tessellated) {
-                (false, false) => &small_disk,
-                (false, true) => &small_tess,
-                (true, false) => &holder_disk,
-                (true, true) => &holder_tess,
-            };
-            ((face, holder), ob.grown(d))
-        })
-        .collect();
+    let r = 0.5 * ctx.tool.diameter;
+    let small_disk = disk(r);
+    let groups = grown_obstacles(ctx, scene, &frame, &region, own);
     let stopped = union_all(groups.iter().map(|(_, g)| g.clone()).collect());
     let margin = 1.01 * r + 1e-6;
     let frame_box = Rect::new(
@@ -135,6 +68,72 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
             .collect();
     }
     out
+}
+
+/// The material above the floor (`frame`: the floor's plane) grown by the
+/// cutter's disk within the cutting length and by the holder's above it,
+/// per face of the part and holder flag, in the floor's plane.
+fn grown_obstacles(
+    ctx: &Ctx,
+    scene: &Scene,
+    frame: &Frame,
+    region: &MultiPolygon<f64>,
+    own: u32,
+) -> Vec<((u32, bool), MultiPolygon<f64>)> {
+    let tool = &ctx.tool;
+    let r = 0.5 * tool.diameter;
+    let big = 0.5 * tool.holder_diameter;
+    let corners: Vec<[f64; 3]> = region
+        .iter()
+        .flat_map(|p| p.exterior().coords().copied().collect::<Vec<_>>())
+        .map(|c| scene.local(&frame.to_world(&Vector3::new(c.x, c.y, 0.0))))
+        .collect();
+    let h = corners
+        .iter()
+        .map(|c| c[2])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let (lo, hi) = xy_bounds(&corners, r + big);
+    let to_face = |p: [f64; 2]| -> [f64; 2] {
+        let w = scene.frame.to_world(&Vector3::new(p[0], p[1], h));
+        let l = frame.to_local(&w);
+        [l.x, l.y]
+    };
+    let (small_disk, holder_disk) = (disk(r), disk(big));
+    // Tessellated material touches within its own tolerance.
+    let slack = ctx.touch_tessellated();
+    let (small_tess, holder_tess) = (disk((r - slack).max(0.0)), disk((big - slack).max(0.0)));
+    let mut obstacles: BTreeMap<(u32, bool), Obstacle> = BTreeMap::new();
+    let top = h + tool.cutting_length;
+    for k in scene.near(lo, hi, h + ctx.touch) {
+        let t = &scene.tris[k as usize];
+        if t.face == own {
+            continue;
+        }
+        for (holder, a, b) in [
+            (false, h + ctx.touch, top),
+            (true, top + ctx.touch, f64::INFINITY),
+        ] {
+            let clipped = clip_tagged(&t.p, a, b);
+            if !clipped.is_empty() {
+                obstacles
+                    .entry((t.face, holder))
+                    .or_default()
+                    .push(t, clipped, to_face);
+            }
+        }
+    }
+    obstacles
+        .into_iter()
+        .map(|((face, holder), ob)| {
+            let d = match (holder, ob.tessellated) {
+                (false, false) => &small_disk,
+                (false, true) => &small_tess,
+                (true, false) => &holder_disk,
+                (true, true) => &holder_tess,
+            };
+            ((face, holder), ob.grown(d))
+        })
+        .collect()
 }
 
 /// The positions `free` grown by `disk`: the points the tool's end covers

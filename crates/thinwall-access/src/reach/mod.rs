@@ -254,6 +254,23 @@ impl Judged {
     }
 }
 
+/// The box in the scene's plane around points (x, y of each), grown by
+/// `pad` on every side, mm.
+fn xy_bounds(points: &[[f64; 3]], pad: f64) -> ([f64; 2], [f64; 2]) {
+    let fold =
+        |i: usize, init: f64, f: fn(f64, f64) -> f64| points.iter().map(|c| c[i]).fold(init, f);
+    (
+        [
+            fold(0, f64::INFINITY, f64::min) - pad,
+            fold(1, f64::INFINITY, f64::min) - pad,
+        ],
+        [
+            fold(0, f64::NEG_INFINITY, f64::max) + pad,
+            fold(1, f64::NEG_INFINITY, f64::max) + pad,
+        ],
+    )
+}
+
 /// Settings shared by the judgements of one run.
 pub struct Ctx {
     pub tool: Tool,
@@ -479,6 +496,35 @@ pub(crate) fn sampled_outline(mesh: &Mesh, own: u32) -> Vec<Vec<[f64; 3]>> {
         .collect()
 }
 
+/// Who stops the tool on a face (face of the part, cutter or holder) and
+/// how much of the face's `area` each leaves unreachable, most first.
+fn blockers_of(part: &thinwall_brep::Part, mesh: &Mesh, j: &Judged, area: f64) -> Vec<Blocker> {
+    let mut blocked_by: Vec<Blocker> = j
+        .blockers
+        .iter()
+        .map(|(&(mf, holder), &mm2)| {
+            let g = part.face(mesh.faces[mf as usize].face);
+            Blocker {
+                face: g.step_id,
+                body: g.body.0,
+                by: if holder {
+                    ToolPart::Holder
+                } else {
+                    ToolPart::Cutter
+                },
+                unreachable_mm2: (mm2 * area / j.area.max(1e-300)).min((1.0 - j.fraction()) * area),
+            }
+        })
+        .collect();
+    blocked_by.sort_by(|x, y| {
+        y.unreachable_mm2
+            .total_cmp(&x.unreachable_mm2)
+            .then(x.face.cmp(&y.face))
+            .then(x.by.cmp(&y.by))
+    });
+    blocked_by
+}
+
 fn face_reach(
     a: &PartAnalysis,
     mesh: &Mesh,
@@ -523,29 +569,7 @@ fn face_reach(
     let axis = scenes[best].frame.z;
     let area = a.props(f).area;
     let fraction = j.fraction();
-    let mut blocked_by: Vec<Blocker> = j
-        .blockers
-        .iter()
-        .map(|(&(mf, holder), &mm2)| {
-            let g = part.face(mesh.faces[mf as usize].face);
-            Blocker {
-                face: g.step_id,
-                body: g.body.0,
-                by: if holder {
-                    ToolPart::Holder
-                } else {
-                    ToolPart::Cutter
-                },
-                unreachable_mm2: (mm2 * area / j.area.max(1e-300)).min((1.0 - j.fraction()) * area),
-            }
-        })
-        .collect();
-    blocked_by.sort_by(|x, y| {
-        y.unreachable_mm2
-            .total_cmp(&x.unreachable_mm2)
-            .then(x.face.cmp(&y.face))
-            .then(x.by.cmp(&y.by))
-    });
+    let blocked_by = blockers_of(part, mesh, j, area);
     let narrow = bore::limit(a, &scenes[best], f).filter(|&d| bore::too_wide(ctx, d));
     let note = if let Some(d) = narrow {
         Some(format!(

@@ -11,7 +11,7 @@
 
 use super::interval::{intersect, length, merge, subtract, Span};
 use super::scene::{blocked, Block};
-use super::{Ctx, Judged};
+use super::{xy_bounds, Ctx, Judged};
 use geo::{Area, BoundingRect, MultiPolygon};
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
@@ -40,89 +40,22 @@ pub fn judge_within(
     own: u32,
     lost_share: f64,
 ) -> Judged {
-    let axis = scene.frame.z;
-    let n = pf.normal();
-    let e = axis.cross(&n).normalize();
-    let y = n.cross(&e);
-    let level: Vector3 = (n - axis * n.dot(&axis)).normalize();
-    let rise = y.dot(&axis);
-    let frame = Frame {
-        origin: pf.frame.origin,
-        x: e,
-        y,
-        z: n,
-    };
-    let region = pf.polygon_in(&frame);
+    let side = SideFrame::new(ctx, scene, pf);
+    let region = pf.polygon_in(&side.frame);
     let mut out = Judged::default();
     let Some(rect) = region.bounding_rect() else {
         return out;
     };
     let budget = lost_share * region.unsigned_area();
-    let tool = &ctx.tool;
-    let r = 0.5 * tool.diameter;
-    let reach = r + 0.5 * tool.holder_diameter;
-    let z0 = scene.local(&frame.origin)[2];
     let (v0, v1) = (rect.min().y, rect.max().y);
-    // The triangles that may stop the tool anywhere on the face.
-    let corners = [
-        (rect.min().x, v0),
-        (rect.max().x, v0),
-        (rect.max().x, v1),
-        (rect.min().x, v1),
-    ]
-    .map(|(u, v)| {
-        let p = frame.to_world(&Vector3::new(u, v, 0.0)) + level * r;
-        scene.local(&p)
-    });
-    let lo = [
-        corners.iter().map(|c| c[0]).fold(f64::INFINITY, f64::min) - reach,
-        corners.iter().map(|c| c[1]).fold(f64::INFINITY, f64::min) - reach,
-    ];
-    let hi = [
-        corners
-            .iter()
-            .map(|c| c[0])
-            .fold(f64::NEG_INFINITY, f64::max)
-            + reach,
-        corners
-            .iter()
-            .map(|c| c[1])
-            .fold(f64::NEG_INFINITY, f64::max)
-            + reach,
-    ];
-    let zmin = z0 + v0 * rise + ctx.touch;
-    let mut cands = scene.near(lo, hi, zmin);
-    cands.retain(|&k| scene.tris[k as usize].face != own);
-    let e_local = scene.local_vector(&e);
-    let e2 = [e_local[0], e_local[1]];
-    let norm = e2[0].hypot(e2[1]);
-    let e2 = [e2[0] / norm, e2[1] / norm];
-    // Keep the triangles within the holder's radius of the tool's line at
-    // some height of the face (a corner's offset from the line changes
-    // linearly with the height: the two ends bound it).
-    let ends =
-        [v0, v1].map(|v| scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r)));
-    let big = 0.5 * tool.holder_diameter;
-    cands.retain(|&k| {
-        let t = &scene.tris[k as usize];
-        let offs = ends.iter().flat_map(|q| {
-            t.p.iter()
-                .map(move |p| e2[0] * (p[1] - q[1]) - e2[1] * (p[0] - q[0]))
-        });
-        let (lo, hi) = offs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| {
-            (a.min(d), b.max(d))
-        });
-        lo < big && hi > -big
-    });
-    // Highest first: a line skips the triangles below its tip at once.
-    cands.sort_by(|&x, &y| scene.top(y).total_cmp(&scene.top(x)).then(x.cmp(&y)));
+    let cands = side.candidates(ctx, scene, own, &rect);
     let bands = bands(
         &region,
         scene,
         &cands,
-        z0,
-        rise,
-        tool.cutting_length,
+        side.z0,
+        side.rise,
+        ctx.tool.cutting_length,
         (v0, v1),
     );
     let mut blocks: Vec<Block> = Vec::new();
@@ -140,37 +73,18 @@ pub fn judge_within(
             if face.is_empty() {
                 continue;
             }
-            let p = scene.local(&(frame.to_world(&Vector3::new(0.0, v, 0.0)) + level * r));
-            // Only the triangles reaching above the tip (highest first).
-            let above = cands.partition_point(|&k| scene.top(k) > p[2] + ctx.touch);
-            blocks.clear();
-            blocked(
-                scene,
-                &cands[..above],
-                p,
-                e2,
-                tool,
-                (ctx.touch, ctx.touch_tessellated()),
-                &mut blocks,
-            );
-            let stop = merge(blocks.iter().map(|b| b.span).collect());
-            let weight = wt * half;
-            out.area += weight * length(&face);
-            out.reached += weight * length(&subtract(&face, &stop));
-            for b in &blocks {
-                let lost = length(&intersect(&face, &[b.span]));
-                if lost > 0.0 {
-                    *out.blockers
-                        .entry((b.tri_face(scene), b.holder))
-                        .or_default() += weight * lost;
-                }
-            }
+            let line = Line {
+                face: &face,
+                v,
+                weight: wt * half,
+            };
+            let stop = side.integrate(ctx, scene, &cands, &line, &mut blocks, &mut out);
             if k == 1 {
                 for (ua, ub) in intersect(&face, &stop) {
                     out.unreachable.push(
                         [(ua, va), (ub, va), (ub, vb), (ua, vb)]
                             .iter()
-                            .map(|&(u, v)| frame.to_world(&Vector3::new(u, v, 0.0)).into())
+                            .map(|&(u, v)| side.frame.to_world(&Vector3::new(u, v, 0.0)).into())
                             .collect(),
                     );
                 }
@@ -178,6 +92,141 @@ pub fn judge_within(
         }
     }
     out
+}
+
+/// A planar face seen from the side: its frame (x level along the face,
+/// z its normal), the level normal the tool's axis sits out along, how the
+/// face rises with its `v`, and the level direction in the scene.
+struct SideFrame {
+    frame: Frame,
+    level: Vector3,
+    rise: f64,
+    /// The frame's x in the scene's plane, unit.
+    e2: [f64; 2],
+    /// The tool's radius, mm.
+    r: f64,
+    /// The frame's origin's height in the scene, mm.
+    z0: f64,
+}
+
+/// One level line of the face: its spans, its `v` and its quadrature weight.
+struct Line<'a> {
+    face: &'a [Span],
+    v: f64,
+    weight: f64,
+}
+
+impl SideFrame {
+    fn new(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace) -> Self {
+        let axis = scene.frame.z;
+        let n = pf.normal();
+        let e = axis.cross(&n).normalize();
+        let y = n.cross(&e);
+        let frame = Frame {
+            origin: pf.frame.origin,
+            x: e,
+            y,
+            z: n,
+        };
+        let e_local = scene.local_vector(&e);
+        let norm = e_local[0].hypot(e_local[1]);
+        Self {
+            level: (n - axis * n.dot(&axis)).normalize(),
+            rise: y.dot(&axis),
+            e2: [e_local[0] / norm, e_local[1] / norm],
+            r: 0.5 * ctx.tool.diameter,
+            z0: scene.local(&frame.origin)[2],
+            frame,
+        }
+    }
+
+    /// The tool's tip touching the face at (`u`, `v`), in the scene.
+    fn tip(&self, scene: &super::scene::Scene, u: f64, v: f64) -> [f64; 3] {
+        scene.local(&(self.frame.to_world(&Vector3::new(u, v, 0.0)) + self.level * self.r))
+    }
+
+    /// The triangles that may stop the tool anywhere on the face (within
+    /// the holder's radius of the tool's line at some height of it),
+    /// highest first.
+    fn candidates(
+        &self,
+        ctx: &Ctx,
+        scene: &super::scene::Scene,
+        own: u32,
+        rect: &geo::Rect<f64>,
+    ) -> Vec<u32> {
+        let tool = &ctx.tool;
+        let reach = self.r + 0.5 * tool.holder_diameter;
+        let (v0, v1) = (rect.min().y, rect.max().y);
+        let corners = [
+            (rect.min().x, v0),
+            (rect.max().x, v0),
+            (rect.max().x, v1),
+            (rect.min().x, v1),
+        ]
+        .map(|(u, v)| self.tip(scene, u, v));
+        let (lo, hi) = xy_bounds(&corners, reach);
+        let zmin = self.z0 + v0 * self.rise + ctx.touch;
+        let mut cands = scene.near(lo, hi, zmin);
+        cands.retain(|&k| scene.tris[k as usize].face != own);
+        // A corner's offset from the line changes linearly with the
+        // height: the two ends bound it.
+        let ends = [v0, v1].map(|v| self.tip(scene, 0.0, v));
+        let big = 0.5 * tool.holder_diameter;
+        let e2 = self.e2;
+        cands.retain(|&k| {
+            let t = &scene.tris[k as usize];
+            let offs = ends.iter().flat_map(|q| {
+                t.p.iter()
+                    .map(move |p| e2[0] * (p[1] - q[1]) - e2[1] * (p[0] - q[0]))
+            });
+            let (lo, hi) = offs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| {
+                (a.min(d), b.max(d))
+            });
+            lo < big && hi > -big
+        });
+        // Highest first: a line skips the triangles below its tip at once.
+        cands.sort_by(|&x, &y| scene.top(y).total_cmp(&scene.top(x)).then(x.cmp(&y)));
+        cands
+    }
+
+    /// Add one level line's area, reached area and blockers to `out`;
+    /// returns where the tool is stopped along it.
+    fn integrate(
+        &self,
+        ctx: &Ctx,
+        scene: &super::scene::Scene,
+        cands: &[u32],
+        line: &Line,
+        blocks: &mut Vec<Block>,
+        out: &mut Judged,
+    ) -> Vec<Span> {
+        let p = self.tip(scene, 0.0, line.v);
+        // Only the triangles reaching above the tip (highest first).
+        let above = cands.partition_point(|&k| scene.top(k) > p[2] + ctx.touch);
+        blocks.clear();
+        blocked(
+            scene,
+            &cands[..above],
+            p,
+            self.e2,
+            &ctx.tool,
+            (ctx.touch, ctx.touch_tessellated()),
+            blocks,
+        );
+        let stop = merge(blocks.iter().map(|b| b.span).collect());
+        out.area += line.weight * length(line.face);
+        out.reached += line.weight * length(&subtract(line.face, &stop));
+        for b in blocks.iter() {
+            let lost = length(&intersect(line.face, &[b.span]));
+            if lost > 0.0 {
+                *out.blockers
+                    .entry((b.tri_face(scene), b.holder))
+                    .or_default() += line.weight * lost;
+            }
+        }
+        stop
+    }
 }
 
 impl Block {
