@@ -275,7 +275,7 @@ fn long_functions(text: &str) -> Vec<(usize, String, usize)> {
     while i < lines.len() {
         let line = lines[i];
         let indent = line.len() - line.trim_start().len();
-        let words: Vec<&str> = line.trim_start().split_whitespace().collect();
+        let words: Vec<&str> = line.split_whitespace().collect();
         let at = words.iter().position(|w| *w == "fn");
         let is_fn = at.is_some_and(|k| {
             words[..k].iter().all(|w| {

@@ -153,7 +153,8 @@ fn plan_page_draws_every_machining_feature_in_order() {
         &a,
         &out,
         &thinwall_plan::RuleSet::default_rules(),
-    );
+    )
+    .expect("a plan");
     let page = html::plan_page("plan", &a, &report, &plan);
     assert_self_contained(&page);
     let data = html::data_of(&page).unwrap();

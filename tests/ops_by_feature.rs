@@ -37,7 +37,7 @@ fn operations_keep_every_relation_of_the_plan() {
             Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
         );
         let outcome = thinwall_pipeline::run_on(&a, &request).unwrap();
-        let plan = thinwall_plan::plan(&what, &a, &outcome, &rules);
+        let plan = thinwall_plan::plan(&what, &a, &outcome, &rules).expect("a plan");
         if plan.removal.unavailable.is_some() {
             continue;
         }

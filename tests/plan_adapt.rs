@@ -277,3 +277,22 @@ fn a_chamfer_is_a_feature_of_its_own() {
         assert!(position(&p, &top.id) < position(&p, &d[0].id));
     }
 }
+
+/// A sizing parameter out of range is a typed plan error naming the wall
+/// (recognition settings are checked before any run, so only a caller
+/// handing the planner an edited outcome meets it), never a silently
+/// unsized wall.
+#[test]
+fn a_sizing_parameter_out_of_range_is_a_plan_error() {
+    let text = std::fs::read_to_string(common::root().join(PART)).unwrap();
+    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
+    let req = thinwall_pipeline::Request::default();
+    let a = thinwall_analysis::PartAnalysis::new(&part, req.setup.clone());
+    let mut out = thinwall_pipeline::run_on(&a, &req).unwrap();
+    out.request.config.thinness.allowed_deflection_mm = 0.0;
+    let e = thinwall_plan::plan("part.step", &a, &out, &RuleSet::default_rules()).unwrap_err();
+    assert_eq!(e.code(), "sizing.parameter");
+    let thinwall_plan::PlanError::Sizing { wall, .. } = &e;
+    assert!(wall.to_string().starts_with('R'), "{e}");
+    assert!(e.to_string().contains("allowed_deflection_mm"), "{e}");
+}

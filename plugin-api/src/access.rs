@@ -57,11 +57,12 @@ pub unsafe extern "C" fn tw_access(
         request.walls = o.request.clone();
         request.walls.reach_tool = None;
         request.walls.allow_open = true;
-        let study = p.study(o.request.parallel);
-        let accessed = thinwall_study::access(&study, &request).map_err(study_failure)?;
-        Ok(tw_access_result {
-            report: accessed.report,
-        })
+        let report = p
+            .with_study(o.request.parallel, |study| {
+                thinwall_study::access(study, &request).map(|r| r.report)
+            })
+            .map_err(study_failure)?;
+        Ok(tw_access_result { report })
     })
 }
 

@@ -63,10 +63,11 @@ pub unsafe extern "C" fn tw_classify(
             volumes: vols,
             before: pairs,
         };
-        let study = p.study(o.request.parallel);
-        let report = thinwall_study::classify(&study, request)
-            .map_err(study_failure)?
-            .report;
+        let report = p
+            .with_study(o.request.parallel, |study| {
+                thinwall_study::classify(study, request).map(|r| r.report)
+            })
+            .map_err(study_failure)?;
         let types = report
             .volumes
             .iter()

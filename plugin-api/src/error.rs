@@ -185,7 +185,7 @@ pub(crate) fn cstring(s: &str) -> CString {
     CString::new(s.replace('\0', "")).unwrap_or_default()
 }
 
-/// The status of a read error, by its kind.
+/// The status of a read error, by its kind (every variant named).
 fn read_status(e: &thinwall_step::StepError) -> tw_status {
     use thinwall_step::StepError as E;
     match e {
@@ -199,7 +199,7 @@ fn read_status(e: &thinwall_step::StepError) -> tw_status {
         | E::BadNumber { .. }
         | E::TooManyInstances { .. } => tw_status::TW_ERR_INVALID_PART,
         E::BudgetExceeded { .. } => tw_status::TW_ERR_BUDGET_EXCEEDED,
-        _ => tw_status::TW_ERR_INTERNAL,
+        E::Internal { .. } => tw_status::TW_ERR_INTERNAL,
     }
 }
 
@@ -217,7 +217,8 @@ fn pipeline_status(e: &thinwall_pipeline::PipelineError) -> tw_status {
     }
 }
 
-/// The status of a classification error, by its kind.
+/// The status of a classification error, by its kind (every variant
+/// named, as for recognition).
 fn classify_status(e: &thinwall_classify::ClassifyError) -> tw_status {
     use thinwall_classify::ClassifyError as E;
     match e {
@@ -227,7 +228,6 @@ fn classify_status(e: &thinwall_classify::ClassifyError) -> tw_status {
         E::MultiBody { .. } | E::Duplicate { .. } | E::PartAsVolume { .. } | E::Overlap { .. } => {
             tw_status::TW_ERR_INVALID_ARGUMENT
         }
-        _ => tw_status::TW_ERR_INTERNAL,
     }
 }
 
@@ -242,7 +242,7 @@ pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
         S::Read(r) => read_status(r),
         S::Setup(_) => tw_status::TW_ERR_INVALID_SETUP,
         S::Request(p) | S::Recognition { source: p, .. } => pipeline_status(p),
-        S::Rules(_) | S::Tools(_) => tw_status::TW_ERR_INVALID_CONFIG,
+        S::Rules(_) | S::Tools(_) | S::Plan(_) => tw_status::TW_ERR_INVALID_CONFIG,
         S::Operations(O::NoEndMill { .. }) => tw_status::TW_ERR_INVALID_CONFIG,
         S::Operations(O::Removal(_) | O::NoPlan(_)) => tw_status::TW_ERR_UNSUPPORTED,
         S::Classify(c) => classify_status(c),

@@ -77,10 +77,11 @@ pub unsafe extern "C" fn tw_operations(
         request.tools = library(tools_toml)?;
         // 0 asks for the largest end mill's depth.
         request.axial_depth = (axial_depth != 0.0).then_some(axial_depth);
-        let study = p.study(o.request.parallel);
-        let report = thinwall_study::operations(&study, &request)
-            .map_err(study_failure)?
-            .report;
+        let report = p
+            .with_study(o.request.parallel, |study| {
+                thinwall_study::operations(study, &request).map(|r| r.report)
+            })
+            .map_err(study_failure)?;
         let tools = report
             .setup
             .operations

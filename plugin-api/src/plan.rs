@@ -119,13 +119,15 @@ pub unsafe extern "C" fn tw_plan(
                 .map_err(|e| (tw_status::TW_ERR_INVALID_CONFIG, e.to_string()))?
         };
         let o = options_or_default(opt);
-        let study = p.study(o.request.parallel);
         let request = thinwall_study::PlanRequest {
             recognize: o.request.clone(),
             rules,
         };
-        let planned = thinwall_study::plan(&study, &request).map_err(study_failure)?;
-        let plan = planned.plan;
+        let plan = p
+            .with_study(o.request.parallel, |study| {
+                thinwall_study::plan(study, &request).map(|planned| planned.plan)
+            })
+            .map_err(study_failure)?;
         let pairs = plan
             .sequence
             .iter()

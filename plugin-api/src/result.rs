@@ -42,10 +42,11 @@ pub unsafe extern "C" fn tw_recognize(
     construct("tw_recognize", out, || {
         let p = part_ref(part)?;
         let o = options_or_default(opt);
-        let study = p.study(o.request.parallel);
-        let report = thinwall_study::recognize(&study, &o.request)
-            .map_err(study_failure)?
-            .report;
+        let report = p
+            .with_study(o.request.parallel, |study| {
+                thinwall_study::recognize(study, &o.request).map(|r| r.report)
+            })
+            .map_err(study_failure)?;
         let feats = &report.stiffness_features;
         let ids = feats
             .iter()

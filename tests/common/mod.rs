@@ -71,7 +71,7 @@ pub fn plan_text(
     };
     let a = thinwall_analysis::PartAnalysis::new(&part, req.setup.clone());
     let out = thinwall_pipeline::run_on(&a, &req).unwrap();
-    let p = thinwall_plan::plan("part.step", &a, &out, rules);
+    let p = thinwall_plan::plan("part.step", &a, &out, rules).expect("a plan");
     drop(a);
     (part, p)
 }

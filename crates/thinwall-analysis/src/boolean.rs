@@ -1,8 +1,17 @@
-//! Booleans of 2-D regions through i_overlay 9 directly, not geo's
-//! `BooleanOps`: geo 0.33 pins i_overlay 4.5, whose hole binding panics
-//! (an index out of bounds) on some unions the reach layer makes, e.g.
+//! Booleans of 2-D regions, and which engine serves which job (the one
+//! place that says so; regions are geo `MultiPolygon`s everywhere):
+//!
+//! | engine | serves |
+//! |---|---|
+//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`) | reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
+//! | geo's `BooleanOps` (i_overlay 4.5 inside geo 0.33) | face regions from loops (`polygon.rs`), wall overlaps of the recognizers (`walls.rs`, `curved.rs`, `offset.rs`), the removal's pieces, cells and cuts (`thinwall-removal`), flank-milling zones (`thinwall-access/src/zones.rs`), the order of operations (`thinwall-ops/src/order.rs`): few operands, made by our own code, whose outputs the snapshots pin |
+//!
+//! Why two: geo 0.33 pins i_overlay 4.5, whose hole binding panics (an
+//! index out of bounds) on some unions the reach layer makes, e.g.
 //! slivers folded on themselves from NIST FTC 10 and STC 06
-//! (docs/ARCHITECTURE.md). The regions stay geo `MultiPolygon`s.
+//! (docs/ARCHITECTURE.md's ledger). Moving a job from geo's to this
+//! module is a change of output at rounding level, to be made with a
+//! snapshot comparison.
 //!
 //! Each operand must be a valid region (its polygons apart, holes inside
 //! their outline): the even-odd rule then fills it whatever the rings'

@@ -151,22 +151,33 @@ impl PlanarFace {
 
 /// Loops projected into a frame's xy plane as a (valid, oriented) polygon.
 pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
-    let ring = |pts: &Vec<Point3>| {
-        let mut cs: Vec<Coord<f64>> = pts
-            .iter()
-            .map(|p| {
-                let l = frame.to_local(p);
-                Coord { x: l.x, y: l.y }
-            })
-            .collect();
-        cs.push(cs[0]);
+    map_loops(loops, |p| {
+        let l = frame.to_local(p);
+        Coord { x: l.x, y: l.y }
+    })
+}
+
+/// A face's loops mapped into a plane (a projection, a surface's parameter
+/// plane, a development) as one region: the one home of loops → region.
+/// One outer loop is the region with its inner loops as holes; several are
+/// joined and the inner loops cut out. Points are mapped in loop order,
+/// outer loops first (`map` may carry a hint from point to point).
+pub fn map_loops(
+    loops: &FaceLoops,
+    mut map: impl FnMut(&Point3) -> Coord<f64>,
+) -> MultiPolygon<f64> {
+    let mut ring = |pts: &Vec<Point3>| {
+        let mut cs: Vec<Coord<f64>> = pts.iter().map(&mut map).collect();
+        if let Some(&first) = cs.first() {
+            cs.push(first);
+        }
         LineString::new(cs)
     };
-    let interiors: Vec<LineString<f64>> = loops.inner.iter().map(ring).collect();
     if loops.outer.len() == 1 {
         // The common case: one boundary with holes, built directly.
-        let poly =
-            Polygon::new(ring(&loops.outer[0]), interiors).orient(geo::orient::Direction::Default);
+        let outer = ring(&loops.outer[0]);
+        let interiors: Vec<LineString<f64>> = loops.inner.iter().map(&mut ring).collect();
+        let poly = Polygon::new(outer, interiors).orient(geo::orient::Direction::Default);
         return MultiPolygon::new(vec![poly]);
     }
     let mut result = MultiPolygon::new(vec![]);
@@ -178,11 +189,12 @@ pub fn project_loops(loops: &FaceLoops, frame: &Frame) -> MultiPolygon<f64> {
             result.union(&poly)
         };
     }
-    if !interiors.is_empty() && !result.0.is_empty() {
+    if !loops.inner.is_empty() && !result.0.is_empty() {
         let holes = MultiPolygon::new(
-            interiors
-                .into_iter()
-                .map(|r| Polygon::new(r, vec![]))
+            loops
+                .inner
+                .iter()
+                .map(|r| Polygon::new(ring(r), vec![]))
                 .collect(),
         );
         result = result.difference(&holes);

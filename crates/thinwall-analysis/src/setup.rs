@@ -7,7 +7,6 @@ use thiserror::Error;
 
 /// A set-up that cannot be used.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum SetupError {
     #[error("up direction {0:?} has no length")]
     ZeroUp([f64; 3]),

@@ -59,7 +59,6 @@ pub struct Request<'a> {
 
 /// A request that cannot be served.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum ClassifyError {
     #[error("sequence {before} before {after} names volumes outside 0..{count}")]
     Sequence {

@@ -48,7 +48,6 @@ pub fn crossing(a: FeatureId, b: FeatureId) -> Connection {
 
 /// Why a connection structure is not a forest with symmetric crossings.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum StructureError {
     #[error("{0} is its own base")]
     OwnBase(FeatureId),

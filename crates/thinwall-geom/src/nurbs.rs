@@ -32,7 +32,6 @@ pub struct NurbsSurface {
 
 /// Why a NURBS definition was refused.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[non_exhaustive]
 pub enum NurbsError {
     #[error("degree {0} outside 1..={MAX_DEGREE}")]
     Degree(usize),

@@ -35,7 +35,6 @@ pub struct Options<'s> {
 
 /// Why machining features could not be found with these options.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum MachiningError {
     #[error("stock offset must be a finite length of 0 mm or more, got {0}")]
     BadOffset(f64),

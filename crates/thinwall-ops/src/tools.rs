@@ -116,7 +116,6 @@ pub struct ToolLibrary {
 
 /// A tool file that cannot be used.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum ToolsError {
     /// Not TOML, or a key the file may not have (the message names the
     /// line and column).

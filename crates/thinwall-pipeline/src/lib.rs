@@ -65,6 +65,20 @@ pub struct MachiningRequest {
     pub stock_file: Option<String>,
 }
 
+impl MachiningRequest {
+    /// The stock this request describes: the one place a request becomes
+    /// a [`thinwall_machining::StockSpec`] (recognition and the plan read it).
+    pub fn stock_spec(&self) -> thinwall_machining::StockSpec<'_> {
+        match &self.stock {
+            Some(solid) => thinwall_machining::StockSpec::Solid(solid),
+            None if self.stock_offset != 0.0 => {
+                thinwall_machining::StockSpec::Offset(self.stock_offset)
+            }
+            None => thinwall_machining::StockSpec::Block,
+        }
+    }
+}
+
 impl Request {
     /// Every rule about the request's values: usable recognition settings,
     /// a usable set-up, a reach tool that is a tool, a stock allowance of
@@ -301,13 +315,7 @@ fn machining_options(req: &Request) -> thinwall_machining::Options<'_> {
     thinwall_machining::Options {
         up: req.machining.in_setup.then(|| req.setup.up_in_part()),
         tilt_limit_deg: tilt,
-        stock: match &req.machining.stock {
-            Some(solid) => thinwall_machining::StockSpec::Solid(solid),
-            None if req.machining.stock_offset != 0.0 => {
-                thinwall_machining::StockSpec::Offset(req.machining.stock_offset)
-            }
-            None => thinwall_machining::StockSpec::Block,
-        },
+        stock: req.machining.stock_spec(),
     }
 }
 

@@ -101,40 +101,78 @@ pub fn sizing_parameters(milling: Milling, cfg: &thinwall_recognize::Config) -> 
     p
 }
 
-/// Sizes for every thin wall with a length, thickness and height.
-fn wall_plans(out: &Outcome) -> Vec<WallPlan> {
-    out.recognition
+/// Why a plan cannot be made (a removal that cannot be decomposed is not
+/// one: the plan says so in its `removal` and keeps the rest).
+#[derive(Clone, Debug, thiserror::Error, PartialEq)]
+pub enum PlanError {
+    /// The sizing parameters the recognition settings give (force, Young's
+    /// modulus, allowed deflection, preferred tool) are out of range.
+    #[error("sizing wall {wall}: {source} (from the recognition settings)")]
+    Sizing {
+        wall: thinwall_analysis::FeatureId,
+        source: SizingError,
+    },
+}
+
+impl PlanError {
+    pub fn code(&self) -> String {
+        match self {
+            PlanError::Sizing { source, .. } => source.code().to_string(),
+        }
+    }
+}
+
+/// Sizes for every thin wall with a length, thickness and height. A wall
+/// the recognizer gave no positive size has nothing to size and is left
+/// out; parameters out of range are an error.
+fn wall_plans(out: &Outcome) -> Result<Vec<WallPlan>, PlanError> {
+    let mut plans = Vec::new();
+    for f in out
+        .recognition
         .features
         .iter()
         .filter(|f| f.kind.is_wall() && f.thin == Some(true))
-        .filter_map(|f| {
-            let w = WallDimensions {
-                length: f.length?,
-                thickness: f.thickness?,
-                height: f.height?,
-            };
-            let milling = if f.kind == StiffnessKind::Web {
-                Milling::Face
-            } else {
-                Milling::Peripheral
-            };
-            let sizes = size_wall(&w, &sizing_parameters(milling, &out.request.config)).ok()?;
-            Some(WallPlan {
-                id: f.id,
-                kind: f.kind,
-                sizes,
-            })
-        })
-        .collect()
+    {
+        let (Some(length), Some(thickness), Some(height)) = (f.length, f.thickness, f.height)
+        else {
+            continue;
+        };
+        let w = WallDimensions {
+            length,
+            thickness,
+            height,
+        };
+        let milling = if f.kind == StiffnessKind::Web {
+            Milling::Face
+        } else {
+            Milling::Peripheral
+        };
+        let sizes = match size_wall(&w, &sizing_parameters(milling, &out.request.config)) {
+            Ok(sizes) => sizes,
+            Err(SizingError::Dimension { .. }) => continue,
+            Err(source) => return Err(PlanError::Sizing { wall: f.id, source }),
+        };
+        plans.push(WallPlan {
+            id: f.id,
+            kind: f.kind,
+            sizes,
+        });
+    }
+    Ok(plans)
 }
 
 /// Plan the pipeline's outcome on the analysed part with `rules` (`out`
 /// is the recognition of `analysis`'s part in its set-up).
-pub fn plan(file: &str, analysis: &PartAnalysis, out: &Outcome, rules: &RuleSet) -> Plan {
+pub fn plan(
+    file: &str,
+    analysis: &PartAnalysis,
+    out: &Outcome,
+    rules: &RuleSet,
+) -> Result<Plan, PlanError> {
     let part = analysis.part();
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
-    let mut walls = wall_plans(out);
+    let mut walls = wall_plans(out)?;
     let faces = adapt::Faces::new(part);
     let (shapes, mut adaptations) = adapt::shapes(&faces, out, &scene, &mut walls);
     let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
@@ -155,7 +193,7 @@ pub fn plan(file: &str, analysis: &PartAnalysis, out: &Outcome, rules: &RuleSet)
     let relations: Vec<LayerConstraint> = layer_sequence.iter().cloned().chain(adapted).collect();
     let feature_sequence = feature_order::order(&machining_features, &relations);
     classified::classify_features(analysis, &frame, &mut machining_features, &feature_sequence);
-    Plan {
+    Ok(Plan {
         schema: PLAN_SCHEMA.to_string(),
         thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
         file: file.to_string(),
@@ -187,5 +225,5 @@ pub fn plan(file: &str, analysis: &PartAnalysis, out: &Outcome, rules: &RuleSet)
         feature_sequence,
         limits,
         queries: seq,
-    }
+    })
 }

@@ -130,7 +130,6 @@ pub struct RuleSet {
 
 /// A rule file that cannot be used.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum RulesError {
     #[error("{file}: {message}")]
     Toml { file: String, message: String },

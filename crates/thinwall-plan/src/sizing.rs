@@ -226,8 +226,7 @@ impl Sizes {
 }
 
 /// Sizes that cannot be computed.
-#[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
+#[derive(Clone, Debug, Error, PartialEq)]
 pub enum SizingError {
     #[error("wall {name} must be a positive length in mm, got {value}")]
     Dimension { name: &'static str, value: f64 },

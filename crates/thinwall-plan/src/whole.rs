@@ -22,24 +22,10 @@ pub fn removal_plan(
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
     let up = out.setup.up_in_part();
-    let (frame, mut lo, mut hi) = frame_of(a, up);
+    let (frame, lo, hi) = frame_of(a, up);
     let size = a.bounding_box().diagonal();
     let tol = a.tol().feature;
-    let m = &out.request.machining;
-    let (stock, name) = match &m.stock {
-        Some(s) => (StockShape::Solid(s), "solid".to_string()),
-        None if m.stock_offset > 0.0 => {
-            for k in 0..3 {
-                lo[k] -= m.stock_offset;
-                hi[k] += m.stock_offset;
-            }
-            (
-                StockShape::Block { lo, hi },
-                format!("block + {} mm", m.stock_offset),
-            )
-        }
-        None => (StockShape::Block { lo, hi }, "block".to_string()),
-    };
+    let (stock, name) = StockShape::of(out.request.machining.stock_spec(), lo, hi);
     let frame_out = [
         [frame.origin.x, frame.origin.y, frame.origin.z],
         [frame.x.x, frame.x.y, frame.x.z],

@@ -107,7 +107,6 @@ impl Default for Config {
 
 /// A configuration that cannot be used.
 #[derive(Debug, Error, PartialEq)]
-#[non_exhaustive]
 pub enum ConfigError {
     #[error("{file}: {message}")]
     Toml { file: String, message: String },

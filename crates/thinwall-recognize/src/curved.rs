@@ -24,7 +24,7 @@ use crate::config::Config;
 use geo::{Area, BooleanOps, BoundingRect, Centroid, Coord, LineString, MapCoords, MultiPolygon};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{PI, TAU};
-use thinwall_analysis::polygon::{face_loops, intersect, narrow_width, FaceLoops};
+use thinwall_analysis::polygon::{face_loops, intersect, map_loops, narrow_width, FaceLoops};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
 use thinwall_geom::{Frame, Point3, Surface, Vector3};
@@ -507,42 +507,11 @@ fn face_polygon(a: &PartAnalysis, f: FaceId, rev: &Revolution) -> Option<(f64, M
             MultiPolygon::new(vec![geo::Polygon::new(ring, vec![])]),
         ));
     }
-    let poly = loops_polygon(&loops, |p| {
+    let poly = map_loops(&loops, |p| {
         let (t, s, _) = rev.local(p);
         Coord { x: unwrap(t), y: s }
     });
     Some((off, poly))
-}
-
-/// A face's loops mapped into a plane as one polygon (outer loops joined,
-/// inner ones cut out).
-fn loops_polygon(loops: &FaceLoops, map: impl Fn(&Point3) -> Coord<f64>) -> MultiPolygon<f64> {
-    use geo::Orient;
-    let ring = |pts: &Vec<Point3>| {
-        let mut cs: Vec<Coord<f64>> = pts.iter().map(&map).collect();
-        cs.push(cs[0]);
-        LineString::new(cs)
-    };
-    let mut result = MultiPolygon::new(vec![]);
-    for o in &loops.outer {
-        let poly = geo::Polygon::new(ring(o), vec![]).orient(geo::orient::Direction::Default);
-        result = if result.0.is_empty() {
-            MultiPolygon::new(vec![poly])
-        } else {
-            result.union(&poly)
-        };
-    }
-    if !loops.inner.is_empty() && !result.0.is_empty() {
-        let holes = MultiPolygon::new(
-            loops
-                .inner
-                .iter()
-                .map(|r| geo::Polygon::new(ring(r), vec![]))
-                .collect(),
-        );
-        result = result.difference(&holes);
-    }
-    result
 }
 
 /// A polygon shifted by whole turns so it can overlap one near θ = 0.

@@ -21,8 +21,8 @@ pub use crate::wall::OffsetDevelopment;
 
 use crate::config::Config;
 use crate::wall::{CurvedWall, Development};
-use geo::{Area, BooleanOps, Contains, Coord, LineString, MultiPolygon};
-use thinwall_analysis::polygon::{face_loops, intersect, narrow_width};
+use geo::{Area, Contains, Coord, MultiPolygon};
+use thinwall_analysis::polygon::{face_loops, intersect, map_loops, narrow_width};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::FaceId;
 use thinwall_geom::surface::nurbs_normal;
@@ -100,31 +100,11 @@ impl FreeFace {
 fn parameter_outline(a: &PartAnalysis, f: FaceId, s: &NurbsSurface) -> Option<MultiPolygon<f64>> {
     let loops = face_loops(a.part(), f);
     let mut hint = None;
-    let mut ring = |pts: &Vec<Point3>| {
-        let mut cs: Vec<Coord<f64>> = pts
-            .iter()
-            .map(|p| {
-                let (u, v, _) = s.invert(p, hint);
-                hint = Some((u, v));
-                Coord { x: u, y: v }
-            })
-            .collect();
-        cs.push(cs[0]);
-        LineString::new(cs)
-    };
-    let mut out = MultiPolygon::new(vec![]);
-    for o in &loops.outer {
-        let p = geo::Polygon::new(ring(o), vec![]);
-        out = if out.0.is_empty() {
-            MultiPolygon::new(vec![p])
-        } else {
-            out.union(&p)
-        };
-    }
-    for i in &loops.inner {
-        let hole = MultiPolygon::new(vec![geo::Polygon::new(ring(i), vec![])]);
-        out = out.difference(&hole);
-    }
+    let out = map_loops(&loops, |p| {
+        let (u, v, _) = s.invert(p, hint);
+        hint = Some((u, v));
+        Coord { x: u, y: v }
+    });
     (out.unsigned_area() > 0.0).then_some(out)
 }
 
@@ -242,24 +222,10 @@ fn build(
 ) -> Option<crate::wall::Wall> {
     let dev = OffsetDevelopment::new(f.surface.clone(), f.sign, &f.uv, -0.5 * t)?;
     let develop_face = |face: FaceId| -> MultiPolygon<f64> {
-        let loops = face_loops(a.part(), face);
-        let ring = |pts: &Vec<Point3>| {
-            let mut cs: Vec<Coord<f64>> = pts
-                .iter()
-                .map(|p| {
-                    let (x, y, _) = dev.develop(p);
-                    Coord { x, y }
-                })
-                .collect();
-            cs.push(cs[0]);
-            LineString::new(cs)
-        };
-        let outer: Vec<geo::Polygon<f64>> = loops
-            .outer
-            .iter()
-            .map(|o| geo::Polygon::new(ring(o), loops.inner.iter().map(ring).collect()))
-            .collect();
-        MultiPolygon::new(outer)
+        map_loops(&face_loops(a.part(), face), |p| {
+            let (x, y, _) = dev.develop(p);
+            Coord { x, y }
+        })
     };
     let (p0, p1) = (develop_face(f.face), develop_face(g.face));
     let region = intersect(&p0, &p1);

@@ -61,6 +61,32 @@ pub enum StockShape<'a> {
     Solid(&'a Part),
 }
 
+impl<'a> StockShape<'a> {
+    /// The stock a spec describes in a removal frame where the part's
+    /// block is `lo`..`hi`, and its name for reports (`block`, `block + 2
+    /// mm`, `solid`).
+    pub fn of(
+        spec: thinwall_machining::StockSpec<'a>,
+        mut lo: [f64; 3],
+        mut hi: [f64; 3],
+    ) -> (Self, String) {
+        use thinwall_machining::StockSpec;
+        match spec {
+            StockSpec::Solid(s) => (StockShape::Solid(s), "solid".to_string()),
+            StockSpec::Offset(mm) if mm > 0.0 => {
+                for k in 0..3 {
+                    lo[k] -= mm;
+                    hi[k] += mm;
+                }
+                (StockShape::Block { lo, hi }, format!("block + {mm} mm"))
+            }
+            StockSpec::Offset(_) | StockSpec::Block => {
+                (StockShape::Block { lo, hi }, "block".to_string())
+            }
+        }
+    }
+}
+
 /// A block's lower or upper end.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Bound {
@@ -259,7 +285,7 @@ impl Columns<'_> {
     }
 
     /// The intervals of part material and of stock along the column.
-    fn intervals(&self, c: &cells::Cell) -> (Vec<(End, End)>, Vec<(End, End)>) {
+    fn intervals(&self, c: &cells::Cell) -> (Vec<Interval>, Vec<Interval>) {
         let (np, ns) = (self.part.len(), self.stock_pieces.len());
         let pt = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
         let at = |pc: &Piece| pc.height.at(pt.x(), pt.y());
@@ -580,6 +606,9 @@ pub fn signed_volume(pieces: &[Piece]) -> f64 {
 }
 
 type End = (f64, Bound);
+
+/// Material between two ends along a vertical line.
+type Interval = (End, End);
 
 /// Material intervals along a vertical line from the faces it crosses:
 /// entering through a face facing down, leaving through one facing up.

@@ -5,7 +5,6 @@ use thiserror::Error;
 
 /// Why a STEP file could not be read into a part.
 #[derive(Debug, Error)]
-#[non_exhaustive]
 pub enum StepError {
     #[error("{file}: cannot read file: {source}")]
     Io {

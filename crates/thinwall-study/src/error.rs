@@ -70,6 +70,9 @@ pub enum StudyError {
     Classify(#[from] thinwall_classify::ClassifyError),
     #[error(transparent)]
     Sizing(#[from] thinwall_plan::sizing::SizingError),
+    /// The plan cannot be made (its sizing parameters are out of range).
+    #[error("{code}: {0}", code = .0.code())]
+    Plan(#[from] thinwall_plan::PlanError),
     /// The work took longer than the study's time limit.
     #[error("{file}: {stage} did not finish within its time limit of {limit_seconds} s (a setting: --time-limit)")]
     BudgetExceeded {
@@ -111,7 +114,6 @@ impl StudyError {
         let setup = |e: &SE| match e {
             SE::ZeroUp(_) | SE::NotFiniteUp(_) => Some("up"),
             SE::TiltLimit(_) => Some("tilt_limit"),
-            _ => None,
         };
         match self {
             StudyError::Invalid { field, .. } => Some(field),
@@ -133,7 +135,8 @@ impl StudyError {
             | StudyError::Rules(_)
             | StudyError::Tools(_)
             | StudyError::Classify(_)
-            | StudyError::Sizing(_) => ErrorKind::Usage,
+            | StudyError::Sizing(_)
+            | StudyError::Plan(_) => ErrorKind::Usage,
             StudyError::Io { .. } => ErrorKind::Input,
             StudyError::Read(e) if e.code() == "internal" => ErrorKind::Internal,
             StudyError::Read(_) => ErrorKind::Input,
@@ -162,6 +165,7 @@ impl StudyError {
             StudyError::Operations(e) => format!("operations.{}", e.code()),
             StudyError::Classify(e) => format!("classify.{}", e.code()),
             StudyError::Sizing(_) => "sizing".to_string(),
+            StudyError::Plan(e) => format!("plan.{}", e.code()),
             StudyError::Panic { .. } => "panic".to_string(),
             StudyError::BudgetExceeded { .. } => "budget_exceeded".to_string(),
         }

@@ -112,11 +112,16 @@ impl AtSetup<'_> {
         name: &str,
         req: &Request,
         rules: &RuleSet,
-    ) -> Result<Arc<Plan>, PipelineError> {
+    ) -> Result<Arc<Plan>, StudyError> {
         let key = (self.as_run(req), rules.clone());
         self.plans.get_or_try(&key, || {
-            let outcome = self.outcome(req)?;
-            Ok(thinwall_plan::plan(name, &self.analysis, &outcome, rules))
+            let outcome = self
+                .outcome(req)
+                .map_err(|source| StudyError::Recognition {
+                    file: name.to_string(),
+                    source,
+                })?;
+            Ok(thinwall_plan::plan(name, &self.analysis, &outcome, rules)?)
         })
     }
 }

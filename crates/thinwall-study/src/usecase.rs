@@ -105,9 +105,7 @@ pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, Stu
         let outcome = at
             .outcome(&req.recognize)
             .map_err(|e| recognition(study, e))?;
-        let plan = at
-            .plan(study.name(), &req.recognize, &req.rules)
-            .map_err(|e| recognition(study, e))?;
+        let plan = at.plan(study.name(), &req.recognize, &req.rules)?;
         Ok(Planned { at, outcome, plan })
     })
 }
@@ -199,9 +197,7 @@ pub fn operations<'p>(
                 setup: req.setup.clone(),
                 ..Default::default()
             };
-            let plan = at
-                .plan(study.name(), &recognize, &RuleSet::default_rules())
-                .map_err(|e| recognition(study, e))?;
+            let plan = at.plan(study.name(), &recognize, &RuleSet::default_rules())?;
             thinwall_ops::setup::along_plan(
                 a,
                 &plan,
