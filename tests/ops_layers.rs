@@ -115,7 +115,7 @@ fn every_thin_walled_part_gets_levels_at_its_floors_and_exact_sections() {
             layers.last().map_or(0.0, |l| l.z_bottom_mm),
         );
         for p in &r.part_pieces {
-            if let (Facing::Up, Height::Plane { z0, gx, gy, .. }) = (p.facing, p.height) {
+            if let (Facing::Up, &Height::Plane { z0, gx, gy, .. }) = (p.facing, &p.height) {
                 if gx == 0.0 && gy == 0.0 && z0 > bottom + tol && z0 < top - tol {
                     assert!(
                         lv.iter()

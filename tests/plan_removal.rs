@@ -193,8 +193,9 @@ fn features_overlap_neither_each_other_nor_the_part() {
         let name = path.display().to_string();
         let (part, p) = plan_file(&path);
         let f = frame(&p);
-        let pcs = pieces(&part, &f).unwrap();
         let size = part.bounding_box().diagonal();
+        let deviation = thinwall_geom::tolerance::machining_deviation(size);
+        let pcs = pieces(&part, &f, deviation, &mut Default::default()).unwrap();
         let tol = 1e-7 * size;
         let solids: Vec<(&str, &FeatureSolid, MultiPolygon<f64>)> = p
             .machining_features

@@ -50,6 +50,7 @@ pub fn union_all(mut parts: Vec<MultiPolygon<f64>>) -> MultiPolygon<f64> {
         let mut next = Vec::with_capacity(parts.len().div_ceil(2));
         let mut it = parts.into_iter();
         while let Some(a) = it.next() {
+            crate::parallel::check_deadline();
             next.push(match it.next() {
                 Some(b) => union(&a, &b),
                 None => a,

@@ -389,6 +389,50 @@ impl Chart<'_> {
     }
 }
 
+/// One face's triangles with its boundary given: `edge_interior(e)` are
+/// the points of edge `e` strictly between its start and end vertices,
+/// start to end (a caller whose neighbouring pieces use those same points,
+/// as the removal's area-keeping samples do, gets no gap along the edge);
+/// the face's inside is triangulated to within `deviation` mm. The points
+/// (the part's vertices first) and the triangles, counter-clockwise seen
+/// from outside the material; or why the face cannot be triangulated.
+pub fn face_triangles(
+    part: &Part,
+    f: FaceId,
+    edge_interior: &dyn Fn(crate::EdgeId) -> Vec<Point3>,
+    deviation: f64,
+) -> Result<(Vec<Point3>, Vec<[u32; 3]>), String> {
+    let face = part.face(f);
+    let chart = Chart::of(&face.surface)
+        .ok_or_else(|| format!("{} faces are not tessellated yet", face.surface.kind_name()))?;
+    let mut points: Vec<Point3> = part.vertices.iter().map(|v| v.point).collect();
+    let mut edge_points: Vec<Vec<u32>> = vec![Vec::new(); part.edges.len()];
+    for &l in &face.loops {
+        for ce in &part.loop_(l).coedges {
+            let ids = &mut edge_points[ce.edge.index()];
+            if !ids.is_empty() {
+                continue; // a seam: both its uses share the points
+            }
+            let e = part.edge(ce.edge);
+            ids.push(e.start.0);
+            for p in edge_interior(ce.edge) {
+                ids.push(points.len() as u32);
+                points.push(p);
+            }
+            ids.push(e.end.0);
+        }
+    }
+    let triangles = triangulate(
+        part,
+        face,
+        &chart,
+        &edge_points,
+        deviation.max(1e-9),
+        &mut points,
+    )?;
+    Ok((points, triangles))
+}
+
 /// A face's triangles, or why it has none.
 fn face_mesh(
     part: &Part,

@@ -150,6 +150,20 @@ pub const EQUAL_VOLUME: f64 = 1e-6;
 /// cells are joined into solids.
 pub const SLIVER_WIDTH: f64 = 1e-6;
 
+/// The largest deviation of the triangles a face the removal cannot take
+/// exactly is meshed into (a tilted cylinder, a free-form face), mm: the
+/// finishing tolerance of Schuster's roughing (0.01 mm) halved.
+pub const MACHINING_DEVIATION_MM: f64 = 0.005;
+
+/// The same as a fraction of the part's size (a small part meshes finer).
+pub const MACHINING_DEVIATION_REL: f64 = 1e-5;
+
+/// The machining deviation for a part of size `size` (its bounding
+/// diagonal), mm: min(0.005 mm, 1e-5 × size).
+pub fn machining_deviation(size: f64) -> f64 {
+    MACHINING_DEVIATION_MM.min(MACHINING_DEVIATION_REL * size)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

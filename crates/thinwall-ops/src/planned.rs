@@ -46,8 +46,8 @@ fn solids(f: &RemovalFeature) -> Vec<Solid> {
             Some(Solid {
                 bbox: region.bounding_rect()?,
                 region,
-                lower: s.lower,
-                upper: s.upper,
+                lower: s.lower.clone(),
+                upper: s.upper.clone(),
             })
         })
         .collect()

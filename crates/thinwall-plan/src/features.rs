@@ -459,8 +459,8 @@ fn solids(r: &Removal, pieces: &[Piece]) -> Vec<FeatureSolid> {
             rings.extend(poly.interiors().iter().map(ring));
             out.push(FeatureSolid {
                 rings,
-                lower,
-                upper,
+                lower: lower.clone(),
+                upper: upper.clone(),
                 volume_mm3,
             });
         }

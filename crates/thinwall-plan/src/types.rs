@@ -309,6 +309,10 @@ pub struct RemovalSummary {
     /// Layers left out of the removal (not prisms along up), with why.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
+    /// Faces taken as triangles (tilted cylinders, cones and tori,
+    /// free-form faces): their area and the volume bound they imply.
+    #[serde(skip_serializing_if = "thinwall_removal::pieces::Meshed::is_empty")]
+    pub meshed: thinwall_removal::pieces::Meshed,
 }
 
 /// A `before` relation between two layers and why.

@@ -66,6 +66,7 @@ pub fn removal_plan(
     summary.part_volume_mm3 = r.part_volume;
     summary.removed_volume_mm3 = feats.iter().map(|f| f.volume_mm3).sum();
     summary.cells = r.cells.len();
+    summary.meshed = r.meshed.clone();
     (summary, feats, frame_out)
 }
 

@@ -10,6 +10,11 @@ use geo::{BooleanOps, BoundingRect, MultiPolygon, Polygon, Rect};
 pub struct Cover<'a> {
     pub region: &'a MultiPolygon<f64>,
     pub bbox: Rect<f64>,
+    /// Cut through `thinwall_analysis::boolean` (i_overlay 9) rather than
+    /// geo's booleans: for the many-cornered regions of meshed faces, on
+    /// which geo's i_overlay 4.5 panics (docs/ARCHITECTURE.md's ledger);
+    /// the exact pieces keep geo's, whose outputs the snapshots pin.
+    pub robust: bool,
 }
 
 /// One cell: a polygon and the covers over it (indices into the list
@@ -34,6 +39,9 @@ fn overlaps(a: &Rect<f64>, b: &Rect<f64>) -> bool {
 pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell> {
     let mut cells = vec![cell(start, vec![])];
     for (ci, c) in covers.iter().enumerate() {
+        // A long arrangement (thousands of meshed triangles) stops at the
+        // study's time limit.
+        thinwall_analysis::parallel::check_deadline();
         let mut next = Vec::with_capacity(cells.len() + 4);
         for cl in cells.drain(..) {
             if !overlaps(&cl.bbox, &c.bbox) {
@@ -41,13 +49,19 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
                 continue;
             }
             let me = MultiPolygon::new(vec![cl.poly.clone()]);
-            let inside = me.intersection(c.region);
+            let inside = match c.robust {
+                true => thinwall_analysis::boolean::intersection(&me, c.region),
+                false => me.intersection(c.region),
+            };
             let inside_area: f64 = inside.0.iter().map(area).sum();
             if inside_area <= min_area {
                 next.push(cl);
                 continue;
             }
-            let outside = me.difference(c.region);
+            let outside = match c.robust {
+                true => thinwall_analysis::boolean::difference(&me, c.region),
+                false => me.difference(c.region),
+            };
             let mut covered = cl.covers.clone();
             covered.push(ci);
             for p in inside.0 {

@@ -86,6 +86,7 @@ pub fn flux(h: &Height, p: &Polygon<f64>) -> f64 {
         }
         // ∫∫ ρ dA: the radial field with F(ρ) = ρ/3.
         Height::Cone { c, z0, k, .. } => z0 * area(p) + k * radial_flux(p, c, |rho| rho / 3.0),
+        Height::Facets { ref facets, .. } => facets.flux(p),
         Height::Revolved {
             c,
             zc,

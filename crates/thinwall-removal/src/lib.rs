@@ -16,6 +16,7 @@
 //! A block is reachable from up when nothing of the part lies above it.
 
 pub mod cells;
+pub mod facets;
 pub mod flux;
 pub mod outline;
 pub mod pieces;
@@ -132,6 +133,9 @@ pub struct Removal {
     pub sliver_volume: f64,
     /// The part's size (its bounding diagonal), mm: tolerances scale with it.
     pub size: f64,
+    /// The faces taken as triangles (not graphs of a kind the removal
+    /// takes exactly), and the volume bound that implies.
+    pub meshed: pieces::Meshed,
     /// Why the blocks do not add up to stock − part, if they do not (see
     /// [`Removal::checked`]).
     pub inconsistency: Option<RemovalError>,
@@ -239,10 +243,19 @@ fn covers<'a>(
     pieces: impl Iterator<Item = &'a Piece>,
     bands: &'a [MultiPolygon<f64>],
 ) -> Vec<Cover<'a>> {
+    let pieces: Vec<&Piece> = pieces.collect();
+    // With a meshed face among them, every cut goes through i_overlay 9:
+    // cells cut by a many-cornered region make geo's i_overlay 4.5 panic
+    // (the ledger); a removal of exact faces keeps geo's booleans.
+    let robust = pieces
+        .iter()
+        .any(|p| matches!(p.height, pieces::Height::Facets { .. }));
     let mut covers: Vec<Cover> = pieces
+        .iter()
         .map(|p| Cover {
             region: &p.region,
             bbox: p.bbox,
+            robust,
         })
         .collect();
     for b in bands {
@@ -250,7 +263,11 @@ fn covers<'a>(
             Coord { x: 0.0, y: 0.0 },
             Coord { x: 0.0, y: 0.0 },
         ));
-        covers.push(Cover { region: b, bbox });
+        covers.push(Cover {
+            region: b,
+            bbox,
+            robust,
+        });
     }
     covers
 }
@@ -375,8 +392,8 @@ impl Bound {
     fn height(&self, part: &[Piece], stock: &[Piece]) -> pieces::Height {
         match *self {
             Bound::Flat(z) => pieces::Height::plane(z, 0.0, 0.0),
-            Bound::Part(i) => part[i].height,
-            Bound::Stock(i) => stock[i].height,
+            Bound::Part(i) => part[i].height.clone(),
+            Bound::Stock(i) => stock[i].height.clone(),
         }
     }
 }
@@ -391,9 +408,11 @@ impl Removal {
         bands: &[MultiPolygon<f64>],
         size: f64,
     ) -> Result<Self, RemovalError> {
-        let part_pieces = pieces::pieces(part, &frame)?;
+        let deviation = thinwall_geom::tolerance::machining_deviation(size);
+        let mut meshed = pieces::Meshed::default();
+        let part_pieces = pieces::pieces(part, &frame, deviation, &mut meshed)?;
         let stock_pieces = match stock {
-            StockShape::Solid(s) => pieces::pieces(s, &frame)?,
+            StockShape::Solid(s) => pieces::pieces(s, &frame, deviation, &mut meshed)?,
             StockShape::Block { .. } => vec![],
         };
         let start = footprint(stock, part_pieces.iter().chain(&stock_pieces), size);
@@ -410,6 +429,7 @@ impl Removal {
         let mut blocks = Vec::new();
         let (mut missing, mut sliver_volume) = (0.0, 0.0);
         for (ci, c) in cells.iter().enumerate() {
+            thinwall_analysis::parallel::check_deadline();
             let column = columns.blocks_over(ci, c);
             missing += column.missing;
             sliver_volume += column.sliver_volume;
@@ -443,6 +463,7 @@ impl Removal {
         };
         Ok(Self {
             size,
+            meshed,
             vertical_grid,
             sliver_volume,
             vertical,

@@ -36,7 +36,7 @@ pub enum Facing {
 /// a value built on the stack is then initialised all through, which
 /// valgrind needs to follow optimised code that reads the payload before
 /// it branches on the variant.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Height {
     /// `z = z0 + gx·x + gy·y`.
@@ -75,6 +75,14 @@ pub enum Height {
         #[serde(skip)]
         pad: [f64; 1],
     },
+    /// Triangles of a face no other variant takes (a tilted cylinder, a
+    /// free-form face), all facing one way: piecewise linear.
+    Facets {
+        #[serde(serialize_with = "crate::facets::shared")]
+        facets: std::sync::Arc<crate::facets::Facets>,
+        #[serde(skip)]
+        pad: [f64; 6],
+    },
 }
 
 /// A graph piece of one face.
@@ -90,13 +98,185 @@ pub struct Piece {
     pub z_range: [f64; 2],
 }
 
-/// Every graph piece of `part` in `frame` (z = up).
-pub fn pieces(part: &Part, frame: &Frame) -> Result<Vec<Piece>, RemovalError> {
+/// Every graph piece of `part` in `frame` (z = up): exact where the face
+/// is a graph [`face_pieces`] takes, else its triangles at `deviation`
+/// ([`facet_pieces`]), each recorded in `meshed`.
+pub fn pieces(
+    part: &Part,
+    frame: &Frame,
+    deviation: f64,
+    meshed: &mut Meshed,
+) -> Result<Vec<Piece>, RemovalError> {
     let mut out = Vec::new();
     for f in part.face_ids() {
-        out.extend(face_pieces(part, f, frame)?);
+        match face_pieces(part, f, frame) {
+            Ok(p) => out.extend(p),
+            Err(RemovalError::UnsupportedFace { step_id, reason }) => {
+                let (facets, overlap) = facet_pieces(part, f, frame, deviation).map_err(|why| {
+                    RemovalError::UnsupportedFace {
+                        step_id,
+                        reason: format!("{reason}, and its triangles: {why}"),
+                    }
+                })?;
+                meshed.add(part, f, &facets, deviation, overlap);
+                out.extend(facets);
+            }
+            Err(e) => return Err(e),
+        }
     }
     Ok(out)
+}
+
+/// The faces taken as triangles rather than exactly: which, their area,
+/// and the bound on the volume that implies.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Meshed {
+    /// STEP ids of the meshed faces.
+    pub faces: Vec<u64>,
+    /// Their triangles' area, mm².
+    pub area_mm2: f64,
+    /// Triangles' largest distance from their surface, mm.
+    pub deviation_mm: f64,
+    /// Triangles taken as graph pieces.
+    pub triangles: usize,
+    /// Where triangles straddling a silhouette overlap their neighbours
+    /// in projection: the overlap times the face's height range, mm³.
+    pub overlap_mm3: f64,
+    /// How far the removal can be off the exact one through them:
+    /// deviation × area + the overlaps, mm³.
+    pub volume_bound_mm3: f64,
+}
+
+impl Meshed {
+    /// No face was meshed (the removal is exact).
+    pub fn is_empty(&self) -> bool {
+        self.faces.is_empty()
+    }
+
+    fn add(&mut self, part: &Part, f: FaceId, facets: &[Piece], deviation: f64, overlap: f64) {
+        self.faces.push(part.face(f).step_id);
+        self.area_mm2 += facets.iter().map(|p| p.facet_area()).sum::<f64>();
+        self.deviation_mm = deviation;
+        self.triangles += facets
+            .iter()
+            .map(|p| match &p.height {
+                Height::Facets { facets, .. } => facets.len(),
+                _ => 0,
+            })
+            .sum::<usize>();
+        self.overlap_mm3 += overlap;
+        self.volume_bound_mm3 = self.deviation_mm * self.area_mm2 + self.overlap_mm3;
+    }
+}
+
+/// A face as graph pieces of its triangles: the watertight tessellation
+/// with the removal's own edge points as boundary (so it meets its exact
+/// neighbours without a gap), split where its facing turns: one piece of
+/// the triangles facing up, one of those facing down (triangles standing
+/// vertical project to nothing and are left out).
+pub fn facet_pieces(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    deviation: f64,
+) -> Result<(Vec<Piece>, f64), String> {
+    let (points, triangles) = thinwall_brep::tessellate::face_triangles(
+        part,
+        f,
+        &|e| crate::sample::edge_interior_points(part, e),
+        deviation,
+    )?;
+    let step_id = part.face(f).step_id;
+    let (mut up, mut down) = (Vec::new(), Vec::new());
+    for t in triangles {
+        let [a, b, c] = t.map(|i| frame.to_local(&points[i as usize]));
+        let n = (b - a).cross(&(c - a));
+        if n.z.abs() <= VERTICAL_EPS * n.norm() {
+            continue;
+        }
+        let tri = [a, b, c].map(|p| [p.x, p.y, p.z]);
+        if n.z > 0.0 {
+            up.push(tri);
+        } else {
+            down.push(tri);
+        }
+    }
+    let one_way = up.is_empty() || down.is_empty();
+    let mut overlap_volume = 0.0;
+    let mut out = Vec::new();
+    for (facing, tris) in [(Facing::Up, up), (Facing::Down, down)] {
+        if tris.is_empty() {
+            continue;
+        }
+        // A face that faces one way all over is a graph over its own
+        // projected loops (the boundary its neighbours share); one that
+        // turns is split along its silhouette by its triangles.
+        let region = if one_way {
+            project(part, f, frame)
+        } else {
+            let (region, overlap) = triangles_region(&tris)?;
+            let zs = tris.iter().flat_map(|t| t.iter().map(|p| p[2]));
+            let (lo, hi) = zs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
+                (a.min(z), b.max(z))
+            });
+            overlap_volume += overlap * (hi - lo);
+            region
+        };
+        let height = Height::Facets {
+            facets: std::sync::Arc::new(crate::facets::Facets::new(tris)),
+            pad: [0.0; 6],
+        };
+        out.extend(finish(f, step_id, facing, region, height));
+    }
+    Ok((out, overlap_volume))
+}
+
+/// The union of triangles' projections, all facing one way; an error
+/// where they overlap (the face folds over itself in projection, or its
+/// triangles do near an apex): never a region counted twice.
+fn triangles_region(tris: &[[[f64; 3]; 3]]) -> Result<(MultiPolygon<f64>, f64), String> {
+    let polys: Vec<Polygon<f64>> = tris
+        .iter()
+        .map(|[a, b, c]| {
+            let ring =
+                LineString::from(vec![(a[0], a[1]), (b[0], b[1]), (c[0], c[1]), (a[0], a[1])]);
+            Polygon::new(ring, vec![]).orient(geo::orient::Direction::Default)
+        })
+        .collect();
+    let total: f64 = polys.iter().map(crate::flux::area).sum();
+    // Through i_overlay 9 (geo's i_overlay 4.5 panics on such input:
+    // the ledger).
+    let region = thinwall_analysis::boolean::union_all(
+        polys
+            .iter()
+            .map(|p| MultiPolygon::new(vec![p.clone()]))
+            .collect(),
+    );
+    let union: f64 = region.0.iter().map(crate::flux::area).sum();
+    let overlap = (total - union).max(0.0);
+    if overlap > FOLD_SHARE * total {
+        return Err(format!(
+            "a face whose triangles overlap in projection by {overlap:.4} mm² of {total:.4} (it folds over itself)"
+        ));
+    }
+    Ok((region, overlap))
+}
+
+/// Triangles of one facing overlapping by more than this share of their
+/// projected area fold over themselves (a face curling past vertical);
+/// below it, the triangles straddling a silhouette overlap their
+/// neighbours by slivers, counted into the meshed volume bound.
+const FOLD_SHARE: f64 = 1e-2;
+
+impl Piece {
+    /// The area of a facets piece's triangles themselves (not their
+    /// projection), mm²; 0 for other pieces.
+    pub fn facet_area(&self) -> f64 {
+        match &self.height {
+            Height::Facets { facets, .. } => facets.area(),
+            _ => 0.0,
+        }
+    }
 }
 
 fn unsupported(part: &Part, f: FaceId, why: &str) -> RemovalError {
@@ -269,6 +449,7 @@ impl Height {
                 let d = (x - c[0]).hypot(y - c[1]) - big_r;
                 zc + sign * (r * r - d * d).max(0.0).sqrt()
             }
+            Height::Facets { ref facets, .. } => facets.at(x, y),
         }
     }
 
@@ -281,6 +462,9 @@ impl Height {
     /// The lowest and highest height over a region: at its corners, and
     /// at a half cylinder's crest where the region spans the axis.
     pub fn range_over(&self, region: &MultiPolygon<f64>) -> [f64; 2] {
+        if let Height::Facets { facets, .. } = self {
+            return facets.range_over(region);
+        }
         if let Height::Revolved {
             c,
             zc,

@@ -47,6 +47,29 @@ pub fn face_loop_points(part: &Part, face: FaceId) -> Vec<Vec<Point3>> {
         .collect()
 }
 
+/// The points of edge `e` strictly between its vertices, start to end:
+/// the same points [`face_loop_points`] gives the edge on either face, for
+/// a face triangulated with that boundary (`thinwall_brep::tessellate::face_triangles`).
+pub fn edge_interior_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3> {
+    let Some(c) = &part.edge(e).nurbs else {
+        return Vec::new();
+    };
+    let (ts, straight) = coedge_params(c, true, CHORDS_PER_SPAN);
+    let mut pts = Vec::new();
+    for (k, w) in ts.windows(2).enumerate() {
+        let (p, q) = (c.point(w[0]), c.point(w[1]));
+        if k > 0 {
+            pts.push(p);
+        }
+        if !straight {
+            let chord_mid = p + (q - p) * 0.5;
+            let curve_mid = c.point(0.5 * (w[0] + w[1]));
+            pts.push(chord_mid + (curve_mid - chord_mid) * (4.0 / 3.0));
+        }
+    }
+    pts
+}
+
 #[cfg(test)]
 mod tests {
     /// The 4/3-sagitta midpoint keeps a circle's area to 2e-7 at 16 chords

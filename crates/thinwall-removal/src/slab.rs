@@ -33,7 +33,12 @@ pub fn cut(r: &Removal, b: &Block, cuts: &[f64], tol: f64) -> Vec<Slice> {
     let cell = &r.cells[b.cell];
     let (hl, hu) = (r.height_of(&b.lower), r.height_of(&b.upper));
     let (lo_r, hi_r) = (r.bound_range(&b.lower), r.bound_range(&b.upper));
-    let exact = |h: &Height| !matches!(h, Height::Cone { .. } | Height::Revolved { .. });
+    let exact = |h: &Height| {
+        !matches!(
+            h,
+            Height::Cone { .. } | Height::Revolved { .. } | Height::Facets { .. }
+        )
+    };
     let cuts: Vec<f64> = cuts
         .iter()
         .copied()
@@ -198,7 +203,7 @@ fn side(h: &Height, c: f64, bbox: Rect<f64>, below: bool) -> Side {
                 (true, false) | (false, true) => root_ge,
             }
         }
-        Height::Cone { .. } | Height::Revolved { .. } => Side::All,
+        Height::Cone { .. } | Height::Revolved { .. } | Height::Facets { .. } => Side::All,
     }
 }
 

@@ -25,6 +25,18 @@ fn removal_text(plan: &Plan, s: &mut String) {
         plan.machining_features.len(),
         r.cells
     );
+    if !r.meshed.is_empty() {
+        let m = &r.meshed;
+        let _ = writeln!(
+            s,
+            "  meshed: {} face(s) as {} triangles within {} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
+            m.faces.len(),
+            m.triangles,
+            m.deviation_mm,
+            m.area_mm2,
+            m.volume_bound_mm3
+        );
+    }
     for n in &r.notes {
         let _ = writeln!(s, "  note: {n}");
     }

@@ -1,0 +1,348 @@
+//! A piecewise linear height: the triangles of a face the removal cannot
+//! take exactly (a tilted cylinder, cone or torus, a free-form face), all
+//! facing one way, as one graph piece over the union of their projections.
+//! A grid over their boxes finds the triangle under a point; a flux over a
+//! polygon is the sum of each triangle's plane over its part of the
+//! polygon (2-D booleans through `thinwall_analysis::boolean`).
+
+use geo::{Coord, LineString, MultiPolygon, Polygon, Rect};
+use thinwall_analysis::boolean::intersection;
+
+/// Triangles (x, y, z in the removal frame) over their projections.
+#[derive(Debug)]
+pub struct Facets {
+    tris: Vec<[[f64; 3]; 3]>,
+    /// Per triangle, its plane `z = z0 + gx·x + gy·y`.
+    planes: Vec<[f64; 3]>,
+    boxes: Vec<Rect<f64>>,
+    grid: Grid,
+}
+
+/// Triangles by square of a grid over their boxes.
+#[derive(Debug)]
+struct Grid {
+    origin: [f64; 2],
+    step: f64,
+    nx: usize,
+    ny: usize,
+    cells: Vec<Vec<u32>>,
+}
+
+/// Squares of the grid along its longer side, at most.
+const MAX_GRID: usize = 512;
+
+impl Grid {
+    fn new(boxes: &[Rect<f64>]) -> Self {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for b in boxes {
+            lo = [lo[0].min(b.min().x), lo[1].min(b.min().y)];
+            hi = [hi[0].max(b.max().x), hi[1].max(b.max().y)];
+        }
+        let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9);
+        let per_side = ((boxes.len() as f64).sqrt().ceil() as usize).clamp(1, MAX_GRID);
+        let step = extent / per_side as f64;
+        let nx = (((hi[0] - lo[0]) / step).ceil() as usize).clamp(1, MAX_GRID);
+        let ny = (((hi[1] - lo[1]) / step).ceil() as usize).clamp(1, MAX_GRID);
+        let mut grid = Grid {
+            origin: lo,
+            step,
+            nx,
+            ny,
+            cells: vec![Vec::new(); nx * ny],
+        };
+        for (k, b) in boxes.iter().enumerate() {
+            let ([i0, j0], [i1, j1]) = grid.span(b);
+            for j in j0..=j1 {
+                for i in i0..=i1 {
+                    grid.cells[j * nx + i].push(k as u32);
+                }
+            }
+        }
+        grid
+    }
+
+    /// The squares a box covers: (first i, j), (last i, j).
+    fn span(&self, b: &Rect<f64>) -> ([usize; 2], [usize; 2]) {
+        let idx =
+            |v: f64, o: f64, n: usize| (((v - o) / self.step).floor().max(0.0) as usize).min(n - 1);
+        (
+            [
+                idx(b.min().x, self.origin[0], self.nx),
+                idx(b.min().y, self.origin[1], self.ny),
+            ],
+            [
+                idx(b.max().x, self.origin[0], self.nx),
+                idx(b.max().y, self.origin[1], self.ny),
+            ],
+        )
+    }
+
+    /// The triangles whose boxes may meet `b`, each once.
+    fn near(&self, b: &Rect<f64>) -> Vec<u32> {
+        let ([i0, j0], [i1, j1]) = self.span(b);
+        let mut out: Vec<u32> = (j0..=j1)
+            .flat_map(|j| (i0..=i1).map(move |i| (i, j)))
+            .flat_map(|(i, j)| self.cells[j * self.nx + i].iter().copied())
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+}
+
+fn overlaps(a: &Rect<f64>, b: &Rect<f64>) -> bool {
+    a.min().x <= b.max().x
+        && b.min().x <= a.max().x
+        && a.min().y <= b.max().y
+        && b.min().y <= a.max().y
+}
+
+impl Facets {
+    /// `tris` in the removal frame, none standing vertical.
+    pub fn new(tris: Vec<[[f64; 3]; 3]>) -> Self {
+        let planes = tris
+            .iter()
+            .map(|[a, b, c]| {
+                let (u, v) = (
+                    [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                    [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                );
+                let n = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                let (gx, gy) = (-n[0] / n[2], -n[1] / n[2]);
+                [a[2] - gx * a[0] - gy * a[1], gx, gy]
+            })
+            .collect();
+        let boxes: Vec<Rect<f64>> = tris
+            .iter()
+            .map(|t| {
+                let xs = t.map(|p| p[0]);
+                let ys = t.map(|p| p[1]);
+                Rect::new(
+                    Coord {
+                        x: xs.iter().copied().fold(f64::INFINITY, f64::min),
+                        y: ys.iter().copied().fold(f64::INFINITY, f64::min),
+                    },
+                    Coord {
+                        x: xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                        y: ys.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                    },
+                )
+            })
+            .collect();
+        let grid = Grid::new(&boxes);
+        Self {
+            tris,
+            planes,
+            boxes,
+            grid,
+        }
+    }
+
+    /// The triangles' own area, mm².
+    pub fn area(&self) -> f64 {
+        self.tris
+            .iter()
+            .map(|[a, b, c]| {
+                let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+                let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+                let n = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
+            })
+            .sum()
+    }
+
+    pub fn len(&self) -> usize {
+        self.tris.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.tris.is_empty()
+    }
+
+    fn plane_at(&self, k: usize, x: f64, y: f64) -> f64 {
+        let [z0, gx, gy] = self.planes[k];
+        z0 + gx * x + gy * y
+    }
+
+    /// The smallest barycentric coordinate of (x, y) in triangle `k`
+    /// (≥ 0 inside).
+    fn inside_by(&self, k: usize, x: f64, y: f64) -> f64 {
+        let [a, b, c] = self.tris[k];
+        let d = (b[1] - c[1]) * (a[0] - c[0]) + (c[0] - b[0]) * (a[1] - c[1]);
+        if d == 0.0 {
+            return f64::NEG_INFINITY;
+        }
+        let l1 = ((b[1] - c[1]) * (x - c[0]) + (c[0] - b[0]) * (y - c[1])) / d;
+        let l2 = ((c[1] - a[1]) * (x - c[0]) + (a[0] - c[0]) * (y - c[1])) / d;
+        l1.min(l2).min(1.0 - l1 - l2)
+    }
+
+    /// The height at (x, y): the plane of the triangle under it (the
+    /// nearest one where rounding puts the point just outside all).
+    pub fn at(&self, x: f64, y: f64) -> f64 {
+        let p = Rect::new(Coord { x, y }, Coord { x, y });
+        let mut near = self.grid.near(&p);
+        if near.is_empty() {
+            near = (0..self.tris.len() as u32).collect();
+        }
+        let best = near
+            .iter()
+            .map(|&k| (k as usize, self.inside_by(k as usize, x, y)))
+            .max_by(|a, b| a.1.total_cmp(&b.1).then(b.0.cmp(&a.0)));
+        best.map_or(f64::NAN, |(k, _)| self.plane_at(k, x, y))
+    }
+
+    /// The lowest and highest height over `region`: at its corners and at
+    /// the corners of the triangles within its box (a triangle's corner
+    /// just outside the region but inside its box can widen the range by
+    /// at most that triangle's rise: a bound, cheap for a region of
+    /// thousands of corners).
+    pub fn range_over(&self, region: &MultiPolygon<f64>) -> [f64; 2] {
+        use geo::BoundingRect;
+        let mut z = [f64::INFINITY, f64::NEG_INFINITY];
+        let mut add = |v: f64| z = [z[0].min(v), z[1].max(v)];
+        for c in region.0.iter().flat_map(|p| p.exterior().0.iter()) {
+            add(self.at(c.x, c.y));
+        }
+        let Some(bb) = region.bounding_rect() else {
+            return z;
+        };
+        let inside = |p: &[f64; 3]| {
+            p[0] >= bb.min().x && p[0] <= bb.max().x && p[1] >= bb.min().y && p[1] <= bb.max().y
+        };
+        for k in self.grid.near(&bb) {
+            for p in self.tris[k as usize].iter().filter(|p| inside(p)) {
+                add(p[2]);
+            }
+        }
+        z
+    }
+
+    /// `∫∫_p h dA`, mm³: each triangle's plane over its part of `p`.
+    pub fn flux(&self, p: &Polygon<f64>) -> f64 {
+        use geo::BoundingRect;
+        let Some(bb) = p.bounding_rect() else {
+            return 0.0;
+        };
+        let region = MultiPolygon::new(vec![p.clone()]);
+        let mut sum = 0.0;
+        thinwall_analysis::parallel::check_deadline();
+        for k in self.grid.near(&bb) {
+            let k = k as usize;
+            if !overlaps(&self.boxes[k], &bb) {
+                continue;
+            }
+            let [a, b, c] = self.tris[k];
+            let tri = MultiPolygon::new(vec![Polygon::new(
+                LineString::from(vec![(a[0], a[1]), (b[0], b[1]), (c[0], c[1]), (a[0], a[1])]),
+                vec![],
+            )]);
+            let [z0, gx, gy] = self.planes[k];
+            let plane = crate::pieces::Height::plane(z0, gx, gy);
+            for q in intersection(&tri, &region).0 {
+                sum += crate::flux::flux(&plane, &q);
+            }
+        }
+        sum
+    }
+}
+
+impl serde::Serialize for Facets {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Facets", 1)?;
+        st.serialize_field("triangles", &self.tris.len())?;
+        st.end()
+    }
+}
+
+/// Two facets are equal when they are the same triangles (one face's).
+impl PartialEq for Facets {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self, other) || self.tris == other.tris
+    }
+}
+
+/// Serialize shared facets as the facets (serde's `rc` feature is off).
+pub fn shared<S: serde::Serializer>(f: &std::sync::Arc<Facets>, s: S) -> Result<S::Ok, S::Error> {
+    serde::Serialize::serialize(f.as_ref(), s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tilted plane over the unit square, in two triangles, and a
+    /// paraboloid-like roof over a fan: heights and fluxes as exact as the
+    /// planes they are made of.
+    #[test]
+    fn heights_and_fluxes_are_the_triangles_planes() {
+        let z = |x: f64, y: f64| 1.0 + 0.5 * x - 0.25 * y;
+        let p = |x: f64, y: f64| [x, y, z(x, y)];
+        let f = Facets::new(vec![
+            [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)],
+            [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)],
+        ]);
+        assert_eq!(f.len(), 2);
+        for (x, y) in [(0.2, 0.1), (0.9, 0.95), (0.5, 0.5), (0.0, 1.0)] {
+            assert!((f.at(x, y) - z(x, y)).abs() < 1e-12, "at {x}, {y}");
+        }
+        // ∫∫ over [0.25, 0.75]² of the plane: its area times its middle.
+        let square = Polygon::new(
+            LineString::from(vec![
+                (0.25, 0.25),
+                (0.75, 0.25),
+                (0.75, 0.75),
+                (0.25, 0.75),
+                (0.25, 0.25),
+            ]),
+            vec![],
+        );
+        assert!((f.flux(&square) - 0.25 * z(0.5, 0.5)).abs() < 1e-12);
+        let whole = MultiPolygon::new(vec![Polygon::new(
+            LineString::from(vec![
+                (0.0, 0.0),
+                (1.0, 0.0),
+                (1.0, 1.0),
+                (0.0, 1.0),
+                (0.0, 0.0),
+            ]),
+            vec![],
+        )]);
+        assert_eq!(f.range_over(&whole), [0.75, 1.5]);
+        assert!((f.area() - 1.0 * (1.0f64 + 0.25 + 0.0625).sqrt()).abs() < 1e-12);
+    }
+
+    /// A roof of four triangles round an apex: the flux over the whole is
+    /// the pyramid's volume, over a quarter a quarter of it.
+    #[test]
+    fn a_pyramid_holds_its_volume() {
+        let apex = [0.0, 0.0, 3.0];
+        let c = [
+            [-1.0, -1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-1.0, 1.0, 0.0],
+        ];
+        let f = Facets::new((0..4).map(|k| [c[k], c[(k + 1) % 4], apex]).collect());
+        let square = |x0: f64, y0: f64, x1: f64, y1: f64| {
+            Polygon::new(
+                LineString::from(vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]),
+                vec![],
+            )
+        };
+        let volume = 4.0 * 3.0 / 3.0;
+        assert!((f.flux(&square(-1.0, -1.0, 1.0, 1.0)) - volume).abs() < 1e-9);
+        assert!((f.flux(&square(0.0, 0.0, 1.0, 1.0)) - volume / 4.0).abs() < 1e-9);
+        assert!((f.at(0.0, 0.0) - 3.0).abs() < 1e-12);
+        assert!((f.at(0.5, 0.0) - 1.5).abs() < 1e-12);
+    }
+}

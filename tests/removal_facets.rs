@@ -1,0 +1,95 @@
+//! Faces the removal cannot take exactly (tilted cylinders and cones,
+//! tori off the tool axis, free-form faces) become piecewise linear graph
+//! pieces of their own triangles, split where their facing turns (issue
+//! 37): NIST CTC 03, whose tilted holes refused every plan before, gets a
+//! removal that adds up, whose part volume is the tessellation's within
+//! the bound the plan reports, and the same plan on a turned copy (the
+//! set-up turned with it).
+
+mod common;
+
+use thinwall_geom::Frame;
+use thinwall_removal::{Removal, StockShape};
+
+const CTC_03: &str = "nist/nist_ctc_03_asme1_ap242-e2.stp";
+
+/// The signed volume of the part's watertight tessellation (an
+/// independent computation), mm³.
+fn tessellated_volume(part: &thinwall_brep::Part) -> f64 {
+    let mesh = thinwall_brep::tessellate::part_mesh(part);
+    mesh.faces
+        .iter()
+        .flat_map(|fm| fm.triangles.iter())
+        .map(|t| {
+            let p = |i: u32| mesh.points[i as usize].coords;
+            p(t[0]).dot(&p(t[1]).cross(&p(t[2]))) / 6.0
+        })
+        .sum()
+}
+
+#[test]
+fn tilted_holes_get_a_removal_that_adds_up() {
+    let path = common::shared_data().join(CTC_03);
+    let (part, _) = thinwall_step::read_file(path).unwrap();
+    let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
+    let bb = a.bounding_box();
+    let stock = StockShape::Block {
+        lo: bb.min,
+        hi: bb.max,
+    };
+    let r = Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal())
+        .and_then(Removal::checked)
+        .expect("a removal that adds up");
+    let m = &r.meshed;
+    assert!(!m.faces.is_empty() && m.triangles > 0, "{m:?}");
+    assert!(m.deviation_mm > 0.0 && m.deviation_mm <= 0.005, "{m:?}");
+    assert!((m.volume_bound_mm3 - m.deviation_mm * m.area_mm2 - m.overlap_mm3).abs() < 1e-9);
+    let removed: f64 = r.blocks.iter().map(|b| b.volume).sum::<f64>() + r.sliver_volume;
+    assert!(
+        (removed - (r.stock_volume - r.part_volume)).abs() <= 1e-6 * r.stock_volume,
+        "blocks {removed} against stock − part {}",
+        r.stock_volume - r.part_volume
+    );
+    // The tessellation for pictures is coarser (its own deviation), so the
+    // two agree to its precision, not the removal's.
+    let meshed = tessellated_volume(&part);
+    assert!(
+        (r.part_volume - meshed).abs() <= 1e-3 * meshed,
+        "removal's part {} against the tessellation's {meshed}",
+        r.part_volume
+    );
+}
+
+#[test]
+fn a_turned_copy_gets_the_same_plan() {
+    let text = std::fs::read_to_string(common::shared_data().join(CTC_03)).unwrap();
+    let rules = thinwall_plan::RuleSet::default_rules();
+    let (_, built) = common::plan_text(&text, [0.0, 0.0, 1.0], &rules);
+    let (r, t) = common::rigid_motion(37);
+    let (turned_text, _) = common::turned_step(&text, &r, &t);
+    let up = r * nalgebra::Vector3::new(0.0, 0.0, 1.0);
+    let (_, turned) = common::plan_text(&turned_text, [up.x, up.y, up.z], &rules);
+    let (a, b) = (&built.removal, &turned.removal);
+    assert!(
+        a.unavailable.is_none() && b.unavailable.is_none(),
+        "{a:?} {b:?}"
+    );
+    assert_eq!(a.meshed.faces, b.meshed.faces);
+    let bound =
+        a.meshed.volume_bound_mm3.max(b.meshed.volume_bound_mm3) + 1e-6 * a.stock_volume_mm3;
+    for (x, y, what) in [
+        (a.stock_volume_mm3, b.stock_volume_mm3, "stock"),
+        (a.part_volume_mm3, b.part_volume_mm3, "part"),
+        (a.removed_volume_mm3, b.removed_volume_mm3, "removed"),
+    ] {
+        assert!(
+            (x - y).abs() <= bound,
+            "{what}: {x} as built, {y} turned (bound {bound})"
+        );
+    }
+    assert_eq!(
+        built.machining_features.len(),
+        turned.machining_features.len(),
+        "machining features"
+    );
+}
