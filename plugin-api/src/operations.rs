@@ -269,18 +269,35 @@ mod tests {
             assert_eq!(st, tw_status::TW_ERR_INVALID_ARGUMENT);
             tw_part_free(plate);
 
+            // A turned panel's faces are tilted to the default up: meshed,
+            // they get operations too.
             let turned = load("recognition/rib_grid_panel_turned.step");
-            let st = tw_operations(turned, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
+            let mut ops = std::ptr::null_mut();
+            let st = tw_operations(turned, std::ptr::null(), std::ptr::null(), 0.0, &mut ops);
+            assert_eq!(st, tw_status::TW_OK);
+            assert!(tw_operations_count(ops) > 0);
+            tw_operations_free(ops);
+            tw_part_free(turned);
+
+            // A removal that does not add up (NIST STC 06) is refused.
+            let path = format!(
+                "{}/../../shared/data/nist/nist_stc_06_asme1_ap242-e3.stp",
+                env!("CARGO_MANIFEST_DIR")
+            );
+            let c = CString::new(path).unwrap();
+            let mut stc = std::ptr::null_mut();
+            assert_eq!(tw_part_load_file(c.as_ptr(), &mut stc), tw_status::TW_OK);
+            let st = tw_operations(stc, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
             assert_eq!(st, tw_status::TW_ERR_UNSUPPORTED);
             assert!(bad.is_null());
             let msg = CStr::from_ptr(crate::tw_last_error_message())
                 .to_str()
                 .unwrap();
             assert!(
-                msg.starts_with("removal.unsupported_face") && msg.contains('#'),
+                msg.starts_with("removal.inconsistent") && msg.contains('#'),
                 "{msg}"
             );
-            tw_part_free(turned);
+            tw_part_free(stc);
         }
     }
 }

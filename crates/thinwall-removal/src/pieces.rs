@@ -214,7 +214,7 @@ pub fn facet_pieces(
         let region = if one_way {
             project(part, f, frame)
         } else {
-            let (region, overlap) = triangles_region(&tris)?;
+            let (region, overlap) = triangles_region(&tris, deviation)?;
             let zs = tris.iter().flat_map(|t| t.iter().map(|p| p[2]));
             let (lo, hi) = zs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
                 (a.min(z), b.max(z))
@@ -234,7 +234,10 @@ pub fn facet_pieces(
 /// The union of triangles' projections, all facing one way; an error
 /// where they overlap (the face folds over itself in projection, or its
 /// triangles do near an apex): never a region counted twice.
-fn triangles_region(tris: &[[[f64; 3]; 3]]) -> Result<(MultiPolygon<f64>, f64), String> {
+fn triangles_region(
+    tris: &[[[f64; 3]; 3]],
+    deviation: f64,
+) -> Result<(MultiPolygon<f64>, f64), String> {
     let polys: Vec<Polygon<f64>> = tris
         .iter()
         .map(|[a, b, c]| {
@@ -254,7 +257,9 @@ fn triangles_region(tris: &[[[f64; 3]; 3]]) -> Result<(MultiPolygon<f64>, f64), 
     );
     let union: f64 = region.0.iter().map(crate::flux::area).sum();
     let overlap = (total - union).max(0.0);
-    if overlap > FOLD_SHARE * total {
+    // A fold is a share of the face and more than a few triangles' worth
+    // (a small face near vertical overlaps by specks).
+    if overlap > FOLD_SHARE * total && overlap > (FOLD_SPAN * deviation).powi(2) {
         return Err(format!(
             "a face whose triangles overlap in projection by {overlap:.4} mm² of {total:.4} (it folds over itself)"
         ));
@@ -267,6 +272,9 @@ fn triangles_region(tris: &[[[f64; 3]; 3]]) -> Result<(MultiPolygon<f64>, f64), 
 /// below it, the triangles straddling a silhouette overlap their
 /// neighbours by slivers, counted into the meshed volume bound.
 const FOLD_SHARE: f64 = 1e-2;
+
+/// …and by more than a square this many deviations wide.
+const FOLD_SPAN: f64 = 10.0;
 
 impl Piece {
     /// The area of a facets piece's triangles themselves (not their
