@@ -2,20 +2,11 @@
 
 use crate::error::{construct, count, free, null, study_failure, tw_status, Failure};
 use std::ffi::{c_char, CStr};
-use std::sync::OnceLock;
 
-/// A part read from STEP (opaque), with its study: what calls on it
-/// compute (the analysis per set-up, recognitions, plans) is kept until
-/// `tw_part_free`, so a second call reuses it. Safe to share between
-/// threads (calls on one part wait for each other where they compute the
-/// same thing).
+/// A part read from STEP (opaque). Immutable; safe to share between threads.
 pub struct tw_part {
-    /// The studies of the part, serial and with worker threads, each made
-    /// on first use. Declared before `loaded`: dropped before it.
-    studies: [OnceLock<thinwall_study::Study<'static>>; 2],
-    /// The part, what the reader reported and its graph; boxed, so its
-    /// address never changes while the studies borrow it.
-    pub(crate) loaded: Box<thinwall_study::LoadedPart>,
+    /// The part, what the reader reported and its graph.
+    pub(crate) loaded: thinwall_study::LoadedPart,
 }
 
 /// The part at `part`; NULL is an error naming the argument.
@@ -33,31 +24,17 @@ const _: fn() = || {
 };
 
 impl tw_part {
-    fn new(loaded: thinwall_study::LoadedPart) -> Self {
-        Self {
-            studies: [OnceLock::new(), OnceLock::new()],
-            loaded: Box::new(loaded),
-        }
-    }
-
-    /// Run `work` on the part's study (no worker threads unless
-    /// `parallel`), made on first use and kept with the part. `work`
-    /// cannot keep anything of the study past the call: its result does
-    /// not depend on the study's lifetime.
+    /// Run `work` on a study of the part made for this call (no worker
+    /// threads unless `parallel`). A study kept with the part would share
+    /// its analysis between calls, but its locks are futexes that
+    /// valgrind's helgrind cannot follow between a host's threads (the
+    /// threads test reports them as races), so each call has its own.
     pub(crate) fn with_study<R>(
         &self,
         parallel: bool,
         work: impl for<'s> FnOnce(&thinwall_study::Study<'s>) -> R,
     ) -> R {
-        let study = self.studies[usize::from(parallel)].get_or_init(|| {
-            // SAFETY: `loaded` is boxed (its address is fixed however the
-            // part moves), never mutated, and dropped after the studies
-            // (field order); nothing of a study leaves `with_study`.
-            let loaded: &'static thinwall_study::LoadedPart =
-                unsafe { &*(self.loaded.as_ref() as *const thinwall_study::LoadedPart) };
-            thinwall_study::Study::new(loaded).with_parallelism(parallel)
-        });
-        work(study)
+        work(&thinwall_study::Study::new(&self.loaded).with_parallelism(parallel))
     }
 
     /// The part read (for Rust callers and tests).
@@ -71,7 +48,9 @@ impl tw_part {
 fn finish(
     read: Result<thinwall_study::LoadedPart, thinwall_study::StudyError>,
 ) -> Result<tw_part, Failure> {
-    Ok(tw_part::new(read.map_err(study_failure)?))
+    Ok(tw_part {
+        loaded: read.map_err(study_failure)?,
+    })
 }
 
 /// Read the STEP file at `path` (UTF-8). On success `*out` owns a part to

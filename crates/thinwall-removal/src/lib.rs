@@ -281,12 +281,12 @@ struct Columns<'a> {
     size: f64,
 }
 
-/// What one column holds.
+/// What the columns hold, added up column by column.
 struct Column {
     blocks: Vec<Block>,
-    /// The cell's area where part material lies outside the stock, mm².
+    /// The cells' area where part material lies outside the stock, mm².
     missing: f64,
-    /// Removal left out because the cell is a sliver, mm³.
+    /// Removal left out because its cell is a sliver, mm³.
     sliver_volume: f64,
 }
 
@@ -330,14 +330,10 @@ impl Columns<'_> {
         (intervals(part_cross), intervals(stock_cross))
     }
 
-    /// The blocks over cell `ci`: stock intervals minus part intervals.
-    fn blocks_over(&self, ci: usize, c: &cells::Cell) -> Column {
+    /// The blocks over cell `ci` (stock intervals minus part intervals),
+    /// added to `column`.
+    fn blocks_over(&self, ci: usize, c: &cells::Cell, column: &mut Column) {
         let (solid, stock_iv) = self.intervals(c);
-        let mut column = Column {
-            blocks: vec![],
-            missing: 0.0,
-            sliver_volume: 0.0,
-        };
         // Part material outside the stock: the stock is too small.
         for (lo, hi) in &solid {
             let inside: f64 = stock_iv
@@ -365,7 +361,6 @@ impl Columns<'_> {
                 volume,
             });
         }
-        column
     }
 }
 
@@ -426,15 +421,20 @@ impl Removal {
             size,
         };
         let cell_bands = cells.iter().map(|c| columns.bands_of(c)).collect();
-        let mut blocks = Vec::new();
-        let (mut missing, mut sliver_volume) = (0.0, 0.0);
+        let mut column = Column {
+            blocks: Vec::new(),
+            missing: 0.0,
+            sliver_volume: 0.0,
+        };
         for (ci, c) in cells.iter().enumerate() {
             thinwall_analysis::parallel::check_deadline();
-            let column = columns.blocks_over(ci, c);
-            missing += column.missing;
-            sliver_volume += column.sliver_volume;
-            blocks.extend(column.blocks);
+            columns.blocks_over(ci, c, &mut column);
         }
+        let Column {
+            blocks,
+            missing,
+            sliver_volume,
+        } = column;
         if missing > min_area.max(1e-6 * size * size) {
             return Err(RemovalError::StockTooSmall { area_mm2: missing });
         }

@@ -29,7 +29,7 @@ fn removal_text(plan: &Plan, s: &mut String) {
         let m = &r.meshed;
         let _ = writeln!(
             s,
-            "  meshed: {} face(s) as {} triangles within {} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
+            "  meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
             m.faces.len(),
             m.triangles,
             m.deviation_mm,
