@@ -252,6 +252,11 @@ fn operations_keep_their_order_and_add_up() {
     for path in parts {
         let part = thinwall_step::read_file(&path).unwrap().0;
         let Ok(r) = removal(&part) else { continue };
+        // Operations are layered on exact faces only (a meshed removal is
+        // refused by `plan_setup`, tested in the C ABI's operations test).
+        if !r.meshed.is_empty() {
+            continue;
+        }
         let a = PartAnalysis::new(
             &part,
             Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),

@@ -246,9 +246,8 @@ impl Facets {
                 vec![],
             )]);
             let [z0, gx, gy] = self.planes[k];
-            let plane = crate::pieces::Height::plane(z0, gx, gy);
             for q in intersection(&tri, &region).0 {
-                sum += crate::flux::flux(&plane, &q);
+                sum += crate::moments::plane_flux(z0, gx, gy, &q);
             }
         }
         sum

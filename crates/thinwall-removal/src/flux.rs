@@ -4,54 +4,19 @@
 //! volume between two bounds over a cell is the difference of two fluxes.
 
 use super::pieces::Height;
-use geo::{LineString, Polygon};
+use geo::Polygon;
 use thinwall_geom::quadrature::for_each_node;
 
 /// Gauss nodes per polygon edge where the integrand is not polynomial.
 const EDGE_NODES: usize = 16;
 
-/// Signed area and first moments of a closed ring: (A, ∫x, ∫y).
-fn moments(ls: &LineString<f64>) -> (f64, f64, f64) {
-    let (mut a, mut mx, mut my) = (0.0, 0.0, 0.0);
-    for w in ls.0.windows(2) {
-        let (p, q) = (w[0], w[1]);
-        let c = p.x * q.y - q.x * p.y;
-        a += c;
-        mx += (p.x + q.x) * c;
-        my += (p.y + q.y) * c;
-    }
-    (0.5 * a, mx / 6.0, my / 6.0)
-}
-
-/// Unsigned area of a polygon (exterior minus holes).
-pub fn area(p: &Polygon<f64>) -> f64 {
-    region_sum(p, |ls| {
-        let (a, _, _) = moments(ls);
-        (a, a)
-    })
-}
-
-/// Sums a ring quantity over a polygon as region integrals: `f` returns
-/// (the ring integral, the ring's signed area in the same traversal).
-fn region_sum(p: &Polygon<f64>, f: impl Fn(&LineString<f64>) -> (f64, f64)) -> f64 {
-    let ring = |ls: &LineString<f64>| {
-        let (i, a) = f(ls);
-        if a < 0.0 {
-            -i
-        } else {
-            i
-        }
-    };
-    ring(p.exterior()) - p.interiors().iter().map(ring).sum::<f64>()
-}
+pub use crate::moments::area;
+use crate::moments::region_sum;
 
 /// `∫∫_p h dA`, mm³.
 pub fn flux(h: &Height, p: &Polygon<f64>) -> f64 {
     match *h {
-        Height::Plane { z0, gx, gy, .. } => region_sum(p, |ls| {
-            let (a, mx, my) = moments(ls);
-            (z0 * a + gx * mx + gy * my, a)
-        }),
+        Height::Plane { z0, gx, gy, .. } => crate::moments::plane_flux(z0, gx, gy, p),
         Height::Cylinder { o, a, r, sign } => {
             // In (u, s): u across the axis, s along it; ∫∫ g(u) = ∮ G(u) ds.
             let g = |u: f64| {

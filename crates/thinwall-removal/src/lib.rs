@@ -18,6 +18,7 @@
 pub mod cells;
 pub mod facets;
 pub mod flux;
+pub mod moments;
 pub mod outline;
 pub mod pieces;
 pub mod sample;

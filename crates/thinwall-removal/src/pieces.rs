@@ -246,7 +246,7 @@ fn triangles_region(
             Polygon::new(ring, vec![]).orient(geo::orient::Direction::Default)
         })
         .collect();
-    let total: f64 = polys.iter().map(crate::flux::area).sum();
+    let total: f64 = polys.iter().map(crate::moments::area).sum();
     // Through i_overlay 9 (geo's i_overlay 4.5 panics on such input:
     // the ledger).
     let region = thinwall_analysis::boolean::union_all(
@@ -255,7 +255,7 @@ fn triangles_region(
             .map(|p| MultiPolygon::new(vec![p.clone()]))
             .collect(),
     );
-    let union: f64 = region.0.iter().map(crate::flux::area).sum();
+    let union: f64 = region.0.iter().map(crate::moments::area).sum();
     let overlap = (total - union).max(0.0);
     // A fold is a share of the face and more than a few triangles' worth
     // (a small face near vertical overlaps by specks).

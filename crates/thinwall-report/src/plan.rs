@@ -25,18 +25,7 @@ fn removal_text(plan: &Plan, s: &mut String) {
         plan.machining_features.len(),
         r.cells
     );
-    if !r.meshed.is_empty() {
-        let m = &r.meshed;
-        let _ = writeln!(
-            s,
-            "  meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
-            m.faces.len(),
-            m.triangles,
-            m.deviation_mm,
-            m.area_mm2,
-            m.volume_bound_mm3
-        );
-    }
+    meshed_line(s, &r.meshed);
     for n in &r.notes {
         let _ = writeln!(s, "  note: {n}");
     }
@@ -186,4 +175,21 @@ pub fn to_text(plan: &Plan) -> String {
         let _ = writeln!(s, "  [{:?}] {}", r.reason, r.explanation);
     }
     s
+}
+
+/// The removal's meshed faces and the bound they imply, if any.
+fn meshed_line(s: &mut String, m: &thinwall_plan::removal::pieces::Meshed) {
+    use std::fmt::Write;
+    if m.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "  meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
+        m.faces.len(),
+        m.triangles,
+        m.deviation_mm,
+        m.area_mm2,
+        m.volume_bound_mm3
+    );
 }
