@@ -13,20 +13,6 @@ use thinwall_removal::{Removal, StockShape};
 
 const CTC_03: &str = "nist/nist_ctc_03_asme1_ap242-e2.stp";
 
-/// The signed volume of the part's watertight tessellation (an
-/// independent computation), mm³.
-fn tessellated_volume(part: &thinwall_brep::Part) -> f64 {
-    let mesh = thinwall_brep::tessellate::part_mesh(part);
-    mesh.faces
-        .iter()
-        .flat_map(|fm| fm.triangles.iter())
-        .map(|t| {
-            let p = |i: u32| mesh.points[i as usize].coords;
-            p(t[0]).dot(&p(t[1]).cross(&p(t[2]))) / 6.0
-        })
-        .sum()
-}
-
 #[test]
 fn tilted_holes_get_a_removal_that_adds_up() {
     let path = common::shared_data().join(CTC_03);
@@ -52,7 +38,7 @@ fn tilted_holes_get_a_removal_that_adds_up() {
     );
     // The tessellation for pictures is coarser (its own deviation), so the
     // two agree to its precision, not the removal's.
-    let meshed = tessellated_volume(&part);
+    let meshed = common::tessellated_volume(&part);
     assert!(
         (r.part_volume - meshed).abs() <= 1e-3 * meshed,
         "removal's part {} against the tessellation's {meshed}",

@@ -131,16 +131,7 @@ fn block_removal(
 fn nist_stc_08_gets_a_whole_removal_of_the_tessellations_volume() {
     let (part, r) = block_removal("nist_stc_08_asme1_ap242-e3");
     let r = r.and_then(Removal::checked).unwrap();
-    let mesh = thinwall_brep::tessellate::part_mesh(&part);
-    let meshed: f64 = mesh
-        .faces
-        .iter()
-        .flat_map(|fm| fm.triangles.iter())
-        .map(|t| {
-            let p = |i: u32| mesh.points[i as usize].coords;
-            p(t[0]).dot(&p(t[1]).cross(&p(t[2]))) / 6.0
-        })
-        .sum();
+    let meshed = common::tessellated_volume(&part);
     assert!(
         (r.part_volume - meshed).abs() <= 1e-4 * meshed,
         "removal's part {} against the tessellation's {meshed}",

@@ -212,6 +212,20 @@ mod tests {
         part
     }
 
+    /// `part`'s operations are refused as unsupported, the message starting
+    /// with `code` and naming `what`; the part is freed.
+    unsafe fn refused(part: *mut tw_part, code: &str, what: &str) {
+        let mut bad = std::ptr::null_mut();
+        let st = tw_operations(part, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
+        assert_eq!(st, tw_status::TW_ERR_UNSUPPORTED);
+        assert!(bad.is_null());
+        let msg = CStr::from_ptr(crate::tw_last_error_message())
+            .to_str()
+            .unwrap();
+        assert!(msg.starts_with(code) && msg.contains(what), "{msg}");
+        tw_part_free(part);
+    }
+
     /// The drill plate's operations through the ABI: the four drilling
     /// operations, and the same count and order as the report's JSON; a
     /// tilted cylinder is `TW_ERR_UNSUPPORTED` naming the face; a tool
@@ -271,19 +285,11 @@ mod tests {
 
             // A turned panel's faces are tilted to the default up: meshed in
             // the removal, which operations do not layer yet.
-            let turned = load("recognition/rib_grid_panel_turned.step");
-            let st = tw_operations(turned, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
-            assert_eq!(st, tw_status::TW_ERR_UNSUPPORTED);
-            assert!(bad.is_null());
-            let msg = CStr::from_ptr(crate::tw_last_error_message())
-                .to_str()
-                .unwrap();
-            assert!(
-                msg.starts_with("removal.unsupported_face") && msg.contains("meshed"),
-                "{msg}"
+            refused(
+                load("recognition/rib_grid_panel_turned.step"),
+                "removal.unsupported_face",
+                "meshed",
             );
-            tw_part_free(turned);
-
             // A removal that does not add up (NIST STC 06) is refused.
             let path = format!(
                 "{}/../../shared/data/nist/nist_stc_06_asme1_ap242-e3.stp",
@@ -292,17 +298,7 @@ mod tests {
             let c = CString::new(path).unwrap();
             let mut stc = std::ptr::null_mut();
             assert_eq!(tw_part_load_file(c.as_ptr(), &mut stc), tw_status::TW_OK);
-            let st = tw_operations(stc, std::ptr::null(), std::ptr::null(), 0.0, &mut bad);
-            assert_eq!(st, tw_status::TW_ERR_UNSUPPORTED);
-            assert!(bad.is_null());
-            let msg = CStr::from_ptr(crate::tw_last_error_message())
-                .to_str()
-                .unwrap();
-            assert!(
-                msg.starts_with("removal.inconsistent") && msg.contains('#'),
-                "{msg}"
-            );
-            tw_part_free(stc);
+            refused(stc, "removal.inconsistent", "#");
         }
     }
 }

@@ -36,11 +36,6 @@ impl tw_part {
     ) -> R {
         work(&thinwall_study::Study::new(&self.loaded).with_parallelism(parallel))
     }
-
-    /// The part read (for Rust callers and tests).
-    pub fn part(&self) -> &thinwall_brep::Part {
-        &self.loaded.part
-    }
 }
 
 /// A part from a read (a panic in it named with the file), with its

@@ -179,3 +179,17 @@ pub fn faces_reversed(text: &str) -> String {
     format!("{}{}{}", &text[..start], ids.join(","), &text[end..])
 }
 pub mod mutate;
+
+/// The signed volume of a part's watertight picture tessellation (an
+/// independent computation of its volume), mm³.
+pub fn tessellated_volume(part: &thinwall_brep::Part) -> f64 {
+    let mesh = thinwall_brep::tessellate::part_mesh(part);
+    mesh.faces
+        .iter()
+        .flat_map(|fm| fm.triangles.iter())
+        .map(|t| {
+            let p = |i: u32| mesh.points[i as usize].coords;
+            p(t[0]).dot(&p(t[1]).cross(&p(t[2]))) / 6.0
+        })
+        .sum()
+}

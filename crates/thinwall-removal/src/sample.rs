@@ -30,16 +30,7 @@ pub fn face_loop_points(part: &Part, face: FaceId) -> Vec<Vec<Point3>> {
                     pts.push(part.vertex(if ce.forward { e.start } else { e.end }).point);
                     continue;
                 };
-                let (ts, straight) = coedge_params(c, ce.forward, CHORDS_PER_SPAN);
-                for w in ts.windows(2) {
-                    let (p, q) = (c.point(w[0]), c.point(w[1]));
-                    pts.push(p);
-                    if !straight {
-                        let chord_mid = p + (q - p) * 0.5;
-                        let curve_mid = c.point(0.5 * (w[0] + w[1]));
-                        pts.push(chord_mid + (curve_mid - chord_mid) * (4.0 / 3.0));
-                    }
-                }
+                chord_points(c, ce.forward, &mut pts);
             }
             pts
         })
@@ -54,20 +45,29 @@ pub fn edge_interior_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3
     let Some(c) = &part.edge(e).nurbs else {
         return Vec::new();
     };
-    let (ts, straight) = coedge_params(c, true, CHORDS_PER_SPAN);
     let mut pts = Vec::new();
-    for (k, w) in ts.windows(2).enumerate() {
+    chord_points(c, true, &mut pts);
+    // Its start vertex is the loop's, not the edge's inside.
+    if !pts.is_empty() {
+        pts.remove(0);
+    }
+    pts
+}
+
+/// A curve's chord ends from its start (its end left to the next edge),
+/// each curved chord followed by its midpoint pushed out by 4/3 of the
+/// sagitta; along `forward` or against it.
+fn chord_points(c: &thinwall_geom::NurbsCurve, forward: bool, pts: &mut Vec<Point3>) {
+    let (ts, straight) = coedge_params(c, forward, CHORDS_PER_SPAN);
+    for w in ts.windows(2) {
         let (p, q) = (c.point(w[0]), c.point(w[1]));
-        if k > 0 {
-            pts.push(p);
-        }
+        pts.push(p);
         if !straight {
             let chord_mid = p + (q - p) * 0.5;
             let curve_mid = c.point(0.5 * (w[0] + w[1]));
             pts.push(chord_mid + (curve_mid - chord_mid) * (4.0 / 3.0));
         }
     }
-    pts
 }
 
 #[cfg(test)]
