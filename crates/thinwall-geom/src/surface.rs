@@ -226,6 +226,23 @@ pub struct CylinderFit {
     pub outward: bool,
 }
 
+/// A free-form surface that is exactly a cylinder, as one (rational
+/// B-splines of extruded arcs: truck builds them so, and so do some CAD
+/// systems), and whether its normal turned over doing so; any other surface
+/// as it is.
+pub fn analytic_form(s: Surface) -> (Surface, bool) {
+    if let Surface::Freeform { nurbs, .. } = &s {
+        if let Some(fit) = cylinder_of(nurbs, crate::tolerance::FREEFORM_FIT_MM) {
+            let cylinder = Surface::Cylinder {
+                frame: fit.frame,
+                radius: fit.radius,
+            };
+            return (cylinder, !fit.outward);
+        }
+    }
+    (s, false)
+}
+
 /// The cylinder a NURBS surface is, if every point of a 9 × 9 grid over
 /// its domain lies within `tol` (mm) of it and one parameter runs straight
 /// along its axis.

@@ -7,6 +7,10 @@
 
 use serde::{Deserialize, Serialize};
 
+/// A free-form surface within this of a cylinder over its whole domain is
+/// that cylinder, mm.
+pub const FREEFORM_FIT_MM: f64 = 1e-7;
+
 /// Relative linear tolerance: fraction of the part's bounding-box diagonal.
 pub const RELATIVE_LINEAR: f64 = 1e-7;
 /// Smallest linear tolerance we ever use, mm (STEP writers typically model

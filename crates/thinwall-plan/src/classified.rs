@@ -1,6 +1,6 @@
 //! Every machining feature classified by `thinwall-classify` in the plan's
-//! order: each solid of a feature is a volume (written by truck and read
-//! back by our reader), removed after every solid it touches that comes
+//! order: each solid of a feature is a volume (built by truck and taken
+//! into our B-rep directly, [`crate::solid_part`]), removed after every solid it touches that comes
 //! earlier in the order. A feature takes the type and product adjacency of
 //! its largest classified solid; `types` lists the others' where they
 //! differ. A feature none of whose solids could be classified is
@@ -101,7 +101,7 @@ struct Solids {
     volumes: Vec<Volume>,
     owner: Vec<(usize, usize)>,
     boxes: Vec<[f64; 6]>,
-    /// Why a feature's solid could not be read back, by feature.
+    /// Why a feature's solid could not be built, by feature.
     unreadable: Vec<Option<String>>,
 }
 
@@ -117,12 +117,10 @@ impl Solids {
                 let Some(solid) = crate::volumes::feature_solid(frame, s) else {
                     continue;
                 };
-                let text = crate::volumes::solids_step(&[solid], &name);
-                let part = match thinwall_step::read_bytes(text.as_bytes(), &name) {
-                    Ok((part, _)) => part,
+                let part = match crate::solid_part::part_of(&[(name.clone(), &solid)]) {
+                    Ok(part) => part,
                     Err(e) => {
-                        unreadable[fi] =
-                            Some(format!("its solid {name} could not be read back: {e}"));
+                        unreadable[fi] = Some(format!("its {e}"));
                         continue;
                     }
                 };

@@ -13,6 +13,7 @@ pub mod rules;
 pub mod scene;
 pub mod sequence;
 pub mod sizing;
+pub mod solid_part;
 pub mod steps;
 mod touch;
 mod types;

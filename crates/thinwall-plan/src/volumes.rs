@@ -362,17 +362,26 @@ pub fn solids_step(solids: &[Solid], name: &str) -> String {
     .to_string()
 }
 
-/// A feature's solids read back as a part of their own (one body per
-/// solid; what cannot be written is left out), for viewers.
+/// A feature's solids as a part of their own (one body per solid; what
+/// cannot be built is left out), for viewers.
 pub fn feature_part(
     plan: &crate::types::Plan,
     f: &crate::types::RemovalFeature,
 ) -> Option<thinwall_brep::Part> {
-    let (text, skipped) = feature_step(plan, f);
-    if skipped == f.solids.len() {
+    let solids: Vec<(String, Solid)> = f
+        .solids
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| {
+            Some((
+                format!("{}#{}", f.id, i + 1),
+                feature_solid(&plan.frame, s)?,
+            ))
+        })
+        .collect();
+    if solids.is_empty() {
         return None;
     }
-    thinwall_step::read_bytes(text.as_bytes(), f.id.as_str())
-        .ok()
-        .map(|(part, _)| part)
+    let named: Vec<(String, &Solid)> = solids.iter().map(|(n, s)| (n.clone(), s)).collect();
+    crate::solid_part::part_of(&named).ok()
 }

@@ -19,26 +19,6 @@ use thinwall_geom::frame::{compose, transform_point, transform_vector, IDENTITY}
 use thinwall_geom::surface::FreeformKind;
 use thinwall_geom::{CurveKind, Frame, NurbsCurve, NurbsSurface, Point3, Surface, Vector3};
 
-/// A free-form surface within this of a cylinder over its whole domain is
-/// that cylinder, mm.
-const FREEFORM_FIT_MM: f64 = 1e-7;
-
-/// A free-form surface that is exactly a cylinder, as one (rational
-/// B-splines of extruded arcs: truck writes them so, and so do some CAD
-/// systems); and whether its normal turned over doing so.
-fn analytic(s: Surface) -> (Surface, bool) {
-    if let Surface::Freeform { nurbs, .. } = &s {
-        if let Some(fit) = thinwall_geom::surface::cylinder_of(nurbs, FREEFORM_FIT_MM) {
-            let cylinder = Surface::Cylinder {
-                frame: fit.frame,
-                radius: fit.radius,
-            };
-            return (cylinder, !fit.outward);
-        }
-    }
-    (s, false)
-}
-
 type Matrix = [[f64; 4]; 4];
 
 /// Deepest assembly nesting followed.
@@ -615,7 +595,8 @@ impl<'s, 'm> Builder<'s, 'm> {
     ) -> FaceId {
         let face_id = FaceId(self.part.faces.len() as u32);
         let step_id = self.ids.of(face.key());
-        let (surface, turned) = analytic(self.surface(face, place, step_id));
+        let (surface, turned) =
+            thinwall_geom::surface::analytic_form(self.surface(face, place, step_id));
         let same_sense = ((face.orientation() == Orientation::Forward) != shell_flipped) != turned;
         let mut loops = Vec::new();
         let mut bounds: Vec<_> = face.bounds().collect();
