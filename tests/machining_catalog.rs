@@ -19,9 +19,8 @@ const UNNAMED: u32 = 25;
 fn predicted(features: &[MachiningFeature]) -> HashMap<u64, u32> {
     let mut by_face = HashMap::new();
     for m in features {
-        let class = m.catalog.map_or(UNNAMED, |c| c.id());
         for &f in &m.faces {
-            by_face.insert(f, class);
+            by_face.insert(f, m.catalog_of_face(f).map_or(UNNAMED, |c| c.id()));
         }
     }
     by_face
@@ -44,8 +43,8 @@ fn labels(path: &std::path::Path) -> HashMap<u64, u32> {
 fn print_wrong(f: &std::path::Path, feats: &[MachiningFeature], truth: &HashMap<u64, u32>) {
     for m in feats {
         let t: Vec<u32> = m.faces.iter().map(|x| truth[x]).collect();
-        let c = m.catalog.map_or(UNNAMED, |c| c.id());
-        if t.iter().all(|&x| x == c) {
+        let c = |x: &u64| m.catalog_of_face(*x).map_or(UNNAMED, |c| c.id());
+        if m.faces.iter().zip(&t).all(|(x, &want)| c(x) == want) {
             continue;
         }
         println!(

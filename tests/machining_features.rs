@@ -285,7 +285,10 @@ fn nist_features_have_the_properties_of_a_right_answer() {
         }
         assert!(m.windows(2).all(|w| w[0].faces[0] < w[1].faces[0]));
     }
-    assert!(checked > 780, "{checked} features");
+    // 596 since issue 38 joined holes with their countersinks, chamfers,
+    // counterbores and blends, and pockets with their own blends (over 780
+    // before).
+    assert!(checked > 580, "{checked} features");
 }
 
 #[test]
@@ -315,7 +318,7 @@ fn nist_twins_with_one_geometry_get_the_same_features() {
         v
     };
     let a = summary("nist_ftc_07_asme1_ap242-e2.stp");
-    assert_eq!(a.len(), 40);
+    assert_eq!(a.len(), 31);
     assert_eq!(a, summary("nist_stc_07_asme1_ap242-e3.stp"));
 }
 
@@ -351,21 +354,15 @@ fn ftc_10_hole_rows_are_found_and_survive_a_rigid_motion() {
     let (part, _) = thinwall_step::read_file(&path).unwrap();
     let found = pattern_summary(&part);
     println!("{found:#?}");
-    // FTC 10 carries rows of equal holes: two rows of four Ø10 at 22 mm
-    // (one from each side), four Ø7 at 22 mm, two rows of four Ø2.5 at
-    // 22 mm, rows of three Ø3.5 and Ø2.459.
-    assert_eq!(found.len(), 9, "{found:#?}");
+    // FTC 10 carries rows of equal holes: a row of four Ø7 holes at 22 mm,
+    // each counterbored Ø10 from both sides (one compound hole each, issue
+    // 38: they were three rows), two rows of four Ø2.5 at 22 mm, rows of
+    // three Ø3.5 and Ø2.459.
+    assert_eq!(found.len(), 7, "{found:#?}");
     assert_eq!(
         found
             .iter()
             .filter(|p| p.starts_with("4 x 10.000 row 22.000"))
-            .count(),
-        2
-    );
-    assert_eq!(
-        found
-            .iter()
-            .filter(|p| p.starts_with("4 x 7.000 row 22.000"))
             .count(),
         1
     );

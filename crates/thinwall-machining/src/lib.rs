@@ -28,12 +28,14 @@
 //! are parallel to the block's, else slanted; a blind step of two faces
 //! triangular.
 
+mod blends;
 mod boss;
 mod catalog;
 mod chamfer;
 mod closed_slot;
 mod facing;
 mod fragments;
+mod holes;
 mod island;
 mod options;
 mod patterns;
@@ -41,6 +43,7 @@ mod shape;
 mod solid;
 pub mod stock;
 
+pub use holes::{Bore, HoleEnd, HoleForm, HoleTip};
 pub use options::{MachiningError, Options, StockSpec};
 pub use patterns::{hole_patterns, HolePattern, Layout};
 pub use stock::Stock;
@@ -94,8 +97,36 @@ pub struct MachiningFeature {
     pub centre: Option<[f64; 3]>,
     /// Radii of cylindrical faces (holes, corners, blends), mm.
     pub radii: Vec<f64>,
+    /// Its own blends, among its faces: a pocket's corner cylinders, floor
+    /// fillets and the tori where they meet; a hole's blended ends.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub blend_faces: Vec<u64>,
+    /// Its own cones, among its faces: a hole's countersinks and chamfered
+    /// ends.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub chamfer_faces: Vec<u64>,
+    /// The smallest radius of the concave corners round its walls along the
+    /// tool axis, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub corner_radius: Option<f64>,
+    /// Every distinct corner radius, smallest first, mm (more than one
+    /// where its corners differ).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub corner_radii: Vec<f64>,
+    /// The smallest radius of the fillets round its floor, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub floor_fillet: Option<f64>,
+    /// The largest lean of its planar walls from the tool axis, degrees (a
+    /// pocket, slot, step or passage with planar walls).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wall_draft_deg: Option<f64>,
+    /// A hole's stages from the entry down: its entry (countersink,
+    /// chamfer, blend), bores widest first, exit and tip.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hole: Option<HoleForm>,
     /// Largest tool diameter that fits the floor (or the cross-section of a
-    /// passage or hole), mm; absent when there is no floor to measure.
+    /// passage or hole) and its corners, mm; absent when there is no floor
+    /// to measure.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub largest_tool_diameter: Option<f64>,
     /// Whether the set-up's tool (along up, within its tilt limit) reaches
@@ -110,6 +141,20 @@ pub struct MachiningFeature {
 }
 
 impl MachiningFeature {
+    /// The MFCAD++ catalogue name of one of its faces (by `step_id`): its
+    /// own blends are `round` and its own cones `chamfer` (the catalogue
+    /// makes every blend and chamfer a feature of its own), its other faces
+    /// its own name.
+    pub fn catalog_of_face(&self, step_id: u64) -> Option<Catalog> {
+        if self.blend_faces.contains(&step_id) {
+            Some(Catalog::Round)
+        } else if self.chamfer_faces.contains(&step_id) {
+            Some(Catalog::Chamfer)
+        } else {
+            self.catalog
+        }
+    }
+
     /// A feature of `kind` and `profile` on `faces`, entered along `dir`:
     /// every face a side face, no sizes yet (the builders fill them).
     pub(crate) fn on_faces(
@@ -137,6 +182,13 @@ impl MachiningFeature {
             width: 0.0,
             centre: None,
             radii: vec![],
+            blend_faces: vec![],
+            chamfer_faces: vec![],
+            corner_radius: None,
+            corner_radii: vec![],
+            floor_fillet: None,
+            wall_draft_deg: None,
+            hole: None,
             largest_tool_diameter: None,
             reachable: None,
             related: vec![],
@@ -203,6 +255,7 @@ pub fn recognize_with(
         .map(|f| on_block[f.index()].is_none() && !as_stock[f.index()])
         .collect();
     out.extend(cut_features(a, &block, &on_block, &left));
+    let mut out = holes::compound(a, out, opts.up);
     // A feature has a depth and a profile, or it is not a feature (a lone
     // side face seen edge-on, a whole-part face of a casting).
     let least = a.tol().coplanar;
@@ -265,9 +318,7 @@ fn cut_features(
         .face_ids()
         .filter(|&f| is_left(f) && is_blend(a, f) && !chamfer::is_bevel_corner(a, f))
         .collect();
-    for group in a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth) {
-        out.push(blend_feature(a, block, &group));
-    }
+    let chains = a.components(&blends, |_, _, adj| adj.convexity == Convexity::Smooth);
     let mut taken: BTreeSet<FaceId> = blends.iter().copied().collect();
     // Chamfers: chains of bevels.
     let bevels: Vec<FaceId> = part
@@ -331,7 +382,14 @@ fn cut_features(
         .filter(|f| (is_left(*f) && !taken.contains(f)) || connectors.contains(f))
         .collect();
     let groups = depression_groups(a, &rest, &connectors);
-    out.extend(depressions(a, block, on_block, groups, &pocket_islands));
+    let (found, owned) = depressions(a, block, on_block, groups, &pocket_islands, &chains);
+    out.extend(found);
+    // Blend chains no depression owns are fillets and rounds of their own.
+    for (i, chain) in chains.iter().enumerate() {
+        if !owned[i] {
+            out.push(blend_feature(a, block, chain));
+        }
+    }
     out
 }
 
@@ -367,15 +425,18 @@ fn depression_groups(
 }
 
 /// One machining feature per group (pieces another cut split joined): a
-/// lone planar face, or a depression typed without its pocket's islands.
+/// lone planar face, or a depression typed without its pocket's islands,
+/// with the blend chains it owns (`blends`); and which chains were owned.
 fn depressions(
     a: &PartAnalysis,
     block: &Stock,
     on_block: &[Option<usize>],
     groups: Vec<Vec<FaceId>>,
     pocket_islands: &BTreeSet<FaceId>,
-) -> Vec<MachiningFeature> {
+    chains: &[Vec<FaceId>],
+) -> (Vec<MachiningFeature>, Vec<bool>) {
     let mut out = Vec::new();
+    let mut owned = vec![false; chains.len()];
     for group in fragments::join_pieces(a, groups) {
         let touched: BTreeSet<usize> = group
             .iter()
@@ -386,15 +447,21 @@ fn depressions(
             out.extend(lone_face(a, block, &group, &touched));
             continue;
         }
-        out.push(depression_feature(
-            a,
-            block,
-            &group,
-            &touched,
-            pocket_islands,
-        ));
+        let mut m = depression_feature(a, block, &group, &touched, pocket_islands);
+        let mine: Vec<usize> = blends::own_chains(a, chains, &group)
+            .into_iter()
+            .filter(|&i| !owned[i])
+            .collect();
+        let blend_faces: Vec<FaceId> = mine.iter().flat_map(|&i| chains[i].clone()).collect();
+        blends::attach(a, &mut m, &group, &blend_faces);
+        if !m.blend_faces.is_empty() {
+            for i in mine {
+                owned[i] = true;
+            }
+        }
+        out.push(m);
     }
-    out
+    (out, owned)
 }
 
 /// Whether a group is planar faces on one plane (one face, or pieces of
@@ -456,9 +523,9 @@ pub(crate) fn is_blend(a: &PartAnalysis, f: FaceId) -> bool {
 }
 
 /// Radii closer than this are one radius, mm.
-const SAME_RADIUS_MM: f64 = 1e-9;
+pub(crate) const SAME_RADIUS_MM: f64 = 1e-9;
 
-fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
+pub(crate) fn radii(a: &PartAnalysis, fs: &[FaceId]) -> Vec<f64> {
     let mut r: Vec<f64> = fs.iter().filter_map(|&f| a.blend_radius(f)).collect();
     r.sort_by(f64::total_cmp);
     r.dedup_by(|a, b| (*a - *b).abs() < SAME_RADIUS_MM);
@@ -600,6 +667,13 @@ fn depression_feature(
             }),
         largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
         radii: radii_v,
+        blend_faces: vec![],
+        chamfer_faces: vec![],
+        corner_radius: None,
+        corner_radii: vec![],
+        floor_fillet: None,
+        wall_draft_deg: None,
+        hole: None,
         reachable: None,
         related: vec![],
     }

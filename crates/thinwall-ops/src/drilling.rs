@@ -80,7 +80,8 @@ impl HoleSite {
 }
 
 /// The holes of `features` the tool drills from up in `frame` (z = up),
-/// each with the library's matching drill, if any.
+/// each with the library's matching drill, if any: a compound hole a site
+/// per bore the tool reaches from its entry (`M4.1`, `M4.2`, …).
 pub fn hole_sites(
     features: &[MachiningFeature],
     frame: &Frame,
@@ -88,63 +89,133 @@ pub fn hole_sites(
 ) -> Vec<HoleSite> {
     let drills: Vec<&CuttingTool> = lib.drills().collect();
     let mills: Vec<&CuttingTool> = lib.end_mills().collect();
-    features
+    let mut out = Vec::new();
+    for m in features
         .iter()
         .filter(|m| m.kind == MachiningKind::Hole && m.reachable != Some(false))
-        .filter_map(|m| {
-            let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
-            // The tool goes down into the hole (its direction −up); a
-            // through hole entered from below is drilled from up all the
-            // same, from its other end.
-            let down = dir.dot(&frame.z) < -1.0 + 1e-6;
-            let from_below = m.through && dir.dot(&frame.z) > 1.0 - 1e-6;
-            if !(down || from_below) {
-                return None;
+    {
+        let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
+        // The tool goes down into the hole (its direction −up); a through
+        // hole entered from below is drilled from up all the same, from its
+        // other end.
+        let down = dir.dot(&frame.z) < -1.0 + 1e-6;
+        let from_below = m.through && dir.dot(&frame.z) > 1.0 - 1e-6;
+        let Some(c) = m.centre.filter(|_| down || from_below) else {
+            continue;
+        };
+        let d = Point3::new(c[0], c[1], c[2]) - frame.origin;
+        let entry = d.dot(&frame.z);
+        let top = if down { entry } else { entry + m.depth };
+        let centre = [d.dot(&frame.x), d.dot(&frame.y)];
+        for (id, bore) in bores_from_top(m, down) {
+            if !(bore.diameter > 0.0 && bore.depth > 0.0) {
+                continue;
             }
-            let c = m.centre?;
-            let d = Point3::new(c[0], c[1], c[2]) - frame.origin;
-            let entry = d.dot(&frame.z);
-            let top = if down { entry } else { entry + m.depth };
-            let diameter = m.width;
-            if !(diameter > 0.0 && m.depth > 0.0) {
-                return None;
-            }
-            // Exactly 4 Ø deep is not deeper, whatever the rounding.
-            let kind = if m.depth > PECK_DEPTH_RATIO * diameter * (1.0 + 1e-9) {
-                DrillKind::Peck
-            } else if m.through {
-                DrillKind::Through
-            } else {
-                DrillKind::Blind
-            };
-            let drill = drills
-                .iter()
-                .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)
-                .min_by(|a, b| {
-                    (a.diameter_mm - diameter)
-                        .abs()
-                        .total_cmp(&(b.diameter_mm - diameter).abs())
-                });
-            // Else the largest end mill that spirals down it whole.
-            let helical = mills.iter().find(|t| {
-                t.diameter_mm <= HELICAL_MAX_SHARE * diameter && 2.0 * t.diameter_mm >= diameter
-            });
-            let (kind, tool) = match (drill, helical) {
-                (Some(t), _) => (kind, Some(t)),
-                (None, Some(t)) => (DrillKind::Helical, Some(t)),
-                (None, None) => (kind, None),
-            };
-            Some(HoleSite {
-                id: m.id.to_string(),
-                centre: [d.dot(&frame.x), d.dot(&frame.y)],
-                diameter_mm: diameter,
-                z_top_mm: top,
-                z_bottom_mm: top - m.depth,
+            let (kind, drill) = drill_for(&bore, m.through, &drills, &mills);
+            out.push(HoleSite {
+                id,
+                centre,
+                diameter_mm: bore.diameter,
+                z_top_mm: top - bore.below,
+                z_bottom_mm: top - bore.below - bore.depth,
                 kind,
-                drill: tool.map(|t| t.name.clone()),
-            })
-        })
-        .collect()
+                drill: drill.map(|t| t.name.clone()),
+            });
+        }
+    }
+    out
+}
+
+/// One bore of a hole as the tool meets it from the top: its diameter,
+/// depth, how far below the top it starts, and whether it reaches the
+/// hole's far end, mm.
+struct TopBore {
+    diameter: f64,
+    depth: f64,
+    below: f64,
+    last: bool,
+}
+
+/// The bores a tool from the top reaches, each with its site id: a plain
+/// hole whole (its id); a compound hole's bores from the top down while
+/// none is wider than one above it (a counterbore at the far end is
+/// another set-up's), `M4.1`, `M4.2`, ….
+fn bores_from_top(m: &MachiningFeature, down: bool) -> Vec<(String, TopBore)> {
+    let whole = || {
+        vec![(
+            m.id.to_string(),
+            TopBore {
+                diameter: m.width,
+                depth: m.depth,
+                below: 0.0,
+                last: true,
+            },
+        )]
+    };
+    let Some(form) = m.hole.as_ref().filter(|h| h.bores.len() > 1) else {
+        return whole();
+    };
+    let mut bores: Vec<(usize, &thinwall_machining::Bore)> =
+        form.bores.iter().enumerate().collect();
+    if !down {
+        bores.reverse();
+    }
+    let n = bores.len();
+    let (mut below, mut narrowest) = (0.0, f64::INFINITY);
+    let mut out = Vec::new();
+    for (k, (i, b)) in bores.into_iter().enumerate() {
+        if b.diameter > narrowest + DRILL_MATCH_MM {
+            break;
+        }
+        narrowest = narrowest.min(b.diameter);
+        out.push((
+            format!("{}.{}", m.id, i + 1),
+            TopBore {
+                diameter: b.diameter,
+                depth: b.depth,
+                below,
+                last: k + 1 == n,
+            },
+        ));
+        below += b.depth;
+    }
+    out
+}
+
+/// How a bore is made: the library's matching drill (peck drilled when
+/// its bottom lies deeper than [`PECK_DEPTH_RATIO`] diameters), or else
+/// the largest end mill that spirals down it whole, or nothing.
+fn drill_for<'t>(
+    bore: &TopBore,
+    through: bool,
+    drills: &[&'t CuttingTool],
+    mills: &[&'t CuttingTool],
+) -> (DrillKind, Option<&'t CuttingTool>) {
+    let diameter = bore.diameter;
+    // Exactly 4 Ø deep is not deeper, whatever the rounding.
+    let kind = if bore.below + bore.depth > PECK_DEPTH_RATIO * diameter * (1.0 + 1e-9) {
+        DrillKind::Peck
+    } else if through && bore.last {
+        DrillKind::Through
+    } else {
+        DrillKind::Blind
+    };
+    let drill = drills
+        .iter()
+        .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)
+        .min_by(|a, b| {
+            (a.diameter_mm - diameter)
+                .abs()
+                .total_cmp(&(b.diameter_mm - diameter).abs())
+        });
+    let helical = mills
+        .iter()
+        .find(|t| t.diameter_mm <= HELICAL_MAX_SHARE * diameter && 2.0 * t.diameter_mm >= diameter);
+    match (drill, helical) {
+        (Some(t), _) => (kind, Some(*t)),
+        (None, Some(t)) => (DrillKind::Helical, Some(*t)),
+        (None, None) => (kind, None),
+    }
 }
 
 /// Time of one hole of `kind`: its depth at the drill's feed v_f, or a

@@ -287,11 +287,26 @@
       ['faces', f.faces.length + ' (STEP ids ' + f.faces.slice(0, 12).join(', ') + (f.faces.length > 12 ? ', …' : '') + ')'],
     ];
   }
+  // A hole's stages from the entry down, as the text report writes them.
+  function holeStages(h) {
+    const end = (e) => e.kind === 'blend' ? 'blend r ' + fmt(e.radius)
+      : (e.kind === 'countersink' ? 'csk ' : 'chamfer ') + fmt(e.angle_deg) + '° Ø' + fmt(e.diameter);
+    const s = [];
+    if (h.entry) s.push(end(h.entry));
+    for (const b of h.bores) s.push('Ø' + fmt(b.diameter) + ' x ' + fmt(b.depth));
+    if (h.exit) s.push(end(h.exit));
+    if (h.tip === 'flat') s.push('flat');
+    else if (h.tip && h.tip.drill_point) s.push('point ' + fmt(h.tip.drill_point.angle_deg) + '°');
+    return s.join(' > ');
+  }
   function machRows(f) {
     return [
       ['kind', f.kind], ['catalogue', f.catalog], ['profile', f.profile], ['through', f.through === undefined ? null : String(f.through)],
       ['direction', f.direction ? vec(f.direction) : null], ['depth', mm(f.depth)], ['length', mm(f.length)], ['width', mm(f.width)],
-      ['diameter', mm(f.diameter)], ['radius', mm(f.radius)], ['corner radii', f.radii && f.radii.length ? f.radii.map(fmt).join(', ') + ' mm' : null],
+      ['diameter', mm(f.diameter)], ['radius', mm(f.radius)], ['radii', f.radii && f.radii.length ? f.radii.map(fmt).join(', ') + ' mm' : null],
+      ['corner radius', mm(f.corner_radius)], ['floor fillet', mm(f.floor_fillet)],
+      ['wall draft', f.wall_draft_deg === undefined ? null : fmt(f.wall_draft_deg) + '°'],
+      ['stages', f.hole ? holeStages(f.hole) : null],
       ['largest tool', mm(f.largest_tool_diameter)], ['reachable in the set-up', f.reachable === undefined ? null : String(f.reachable)],
       ['faces', f.faces.length + ' (STEP ids ' + f.faces.slice(0, 12).join(', ') + (f.faces.length > 12 ? ', …' : '') + ')'],
     ];

@@ -285,7 +285,7 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
     for m in features {
         let _ = writeln!(
             s,
-            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}{}{}{}",
+            "  {:<5}{:<8}{:<13}{:<9} depth {:>8.2}  {:>8.2} x {:<8.2} {:>3} faces{}{}{}{}{}",
             m.id,
             m.kind,
             m.profile,
@@ -298,6 +298,7 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
                 0 => String::new(),
                 n => format!(" ({n} on islands)"),
             },
+            blends_text(m),
             m.largest_tool_diameter
                 .map(|d| format!("  tool <= {d:.2}"))
                 .unwrap_or_default(),
@@ -308,6 +309,55 @@ fn machining_text(s: &mut String, features: &[thinwall_machining::MachiningFeatu
             }
         );
     }
+}
+
+/// A hole's stages from the entry down:
+/// `  csk 90° Ø19.17 > Ø11.64 x 7.58 > point 118°`.
+fn hole_text(h: &thinwall_machining::HoleForm) -> String {
+    use thinwall_machining::{HoleEnd, HoleTip};
+    let end = |e: &HoleEnd| match e {
+        HoleEnd::Countersink {
+            angle_deg,
+            diameter,
+        } => format!("csk {angle_deg:.0}° Ø{diameter:.2}"),
+        HoleEnd::Chamfer {
+            angle_deg,
+            diameter,
+        } => format!("chamfer {angle_deg:.0}° Ø{diameter:.2}"),
+        HoleEnd::Blend { radius } => format!("blend r {radius:.2}"),
+    };
+    let mut stages: Vec<String> = h.entry.iter().map(end).collect();
+    stages.extend(
+        h.bores
+            .iter()
+            .map(|b| format!("Ø{:.2} x {:.2}", b.diameter, b.depth)),
+    );
+    stages.extend(h.exit.iter().map(end));
+    match h.tip {
+        HoleTip::Through => {}
+        HoleTip::Flat => stages.push("flat".into()),
+        HoleTip::DrillPoint { angle_deg } => stages.push(format!("point {angle_deg:.0}°")),
+    }
+    format!("  {}", stages.join(" > "))
+}
+
+/// A depression's corner radius, floor fillet and wall draft, or a hole's
+/// stages, where it has them: `  R 8.00 / r 3.00  draft 2.0°`.
+fn blends_text(m: &thinwall_machining::MachiningFeature) -> String {
+    if let Some(h) = &m.hole {
+        return hole_text(h);
+    }
+    let mut t = String::new();
+    match (m.corner_radius, m.floor_fillet) {
+        (Some(c), Some(f)) => t += &format!("  R {c:.2} / r {f:.2}"),
+        (Some(c), None) => t += &format!("  R {c:.2}"),
+        (None, Some(f)) => t += &format!("  r {f:.2}"),
+        (None, None) => {}
+    }
+    if let Some(d) = m.wall_draft_deg.filter(|d| *d >= 0.05) {
+        t += &format!("  draft {d:.1}°");
+    }
+    t
 }
 
 /// The hole patterns, a line each.
