@@ -109,6 +109,35 @@ int main(int argc, char **argv) {
         free(ids);
     }
     failures += check(tw_result_feature_kind(res, n) == NULL, "kind past the end is NULL");
+    /* Machining features: sizes, a pocket's radii, a hole's stages. */
+    size_t nm = tw_result_machining_count(res);
+    printf("machining features: %zu\n", nm);
+    for (size_t i = 0; i < nm; i++) {
+        double depth = 0, length = 0, width = 0, tool = 0, corner = 0, fillet = 0, draft = 0;
+        failures += check(tw_result_machining_sizes(res, i, &depth, &length, &width, &tool) == TW_OK, "machining sizes read");
+        failures += check(tw_result_machining_blends(res, i, &corner, &fillet, &draft) == TW_OK, "machining radii read");
+        printf("  %-4s %-8s depth=%.2f %.2f x %.2f tool=%.2f R=%.2f r=%.2f\n", tw_result_machining_id(res, i),
+               tw_result_machining_kind(res, i), depth, length, width, tool, corner, fillet);
+        tw_hole_end entry, exit;
+        tw_hole_tip tip;
+        double ea = 0, es = 0, xa = 0, xs = 0, ta = 0;
+        size_t nb = 0;
+        tw_status hs = tw_result_machining_hole(res, i, &entry, &ea, &es, &exit, &xa, &xs, &nb, &tip, &ta);
+        if (strcmp(tw_result_machining_kind(res, i), "hole") == 0) {
+            failures += check(hs == TW_OK && nb >= 1, "a hole's stages read");
+            for (size_t k = 0; k < nb; k++) {
+                double bd = 0, bh = 0;
+                failures += check(tw_result_machining_bore(res, i, k, &bd, &bh) == TW_OK && bd > 0 && bh > 0, "bore read");
+                printf("    bore %zu: %.2f x %.2f\n", k + 1, bd, bh);
+            }
+            failures += check(tw_result_machining_bore(res, i, nb, NULL, NULL) == TW_ERR_OUT_OF_RANGE, "bore past the last refused");
+        } else {
+            failures += check(hs == TW_ERR_NOT_APPLICABLE, "stages of a non-hole refused");
+        }
+    }
+    failures += check(tw_result_machining_kind(res, nm) == NULL, "machining kind past the end is NULL");
+    failures += check(tw_result_machining_sizes(res, nm, NULL, NULL, NULL, NULL) == TW_ERR_OUT_OF_RANGE,
+                      "machining sizes past the end refused");
     size_t nc = tw_result_connection_count(res);
     printf("connections: %zu\n", nc);
     for (size_t i = 0; i < nc; i++) {

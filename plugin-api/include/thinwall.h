@@ -53,6 +53,26 @@ typedef enum tw_feature_class {
   TW_FEATURE_DETAIL = 4,
 } tw_feature_class;
 
+// How one end of a hole is finished.
+typedef enum tw_hole_end {
+  // A plain edge.
+  TW_HOLE_END_NONE = 0,
+  // A cone seating a screw head (angle, diameter on the face).
+  TW_HOLE_END_COUNTERSINK = 1,
+  // A cone breaking the edge (angle, diameter on the face).
+  TW_HOLE_END_CHAMFER = 2,
+  // A rounded edge (radius).
+  TW_HOLE_END_BLEND = 3,
+} tw_hole_end;
+
+// How a hole ends.
+typedef enum tw_hole_tip {
+  TW_HOLE_TIP_THROUGH = 0,
+  TW_HOLE_TIP_FLAT = 1,
+  // A drill's cone (its included angle).
+  TW_HOLE_TIP_DRILL_POINT = 2,
+} tw_hole_tip;
+
 // The relation of a sequence constraint.
 typedef enum tw_relation {
   // `before` is machined before `after`.
@@ -247,6 +267,64 @@ void tw_classification_free(struct tw_classification *res);
 // The message of the last failed call on this thread ("" after a success).
 // Valid until the next Thinwall call on this thread; never NULL.
 const char *tw_last_error_message(void);
+
+// Number of machining features (0 for NULL).
+size_t tw_result_machining_count(const struct tw_result *res);
+
+// Id of machining feature `i` ("M3"); NULL when out of range. Valid while
+// `res` lives.
+const char *tw_result_machining_id(const struct tw_result *res, size_t i);
+
+// Kind of machining feature `i` ("hole", "pocket", "slot", "step",
+// "passage", "chamfer", "fillet", "boss", "face"); NULL when out of range.
+// Valid while `res` lives.
+const char *tw_result_machining_kind(const struct tw_result *res, size_t i);
+
+// Sizes of machining feature `i`, mm: depth along its direction, length
+// and width across it, and the largest tool that fits it (NaN when there
+// is no floor to measure). Any out-pointer may be NULL.
+enum tw_status tw_result_machining_sizes(const struct tw_result *res,
+                                         size_t i,
+                                         double *depth,
+                                         double *length,
+                                         double *width,
+                                         double *largest_tool);
+
+// A pocket's, slot's, step's or passage's corner radius and floor fillet
+// (mm) and wall draft (degrees); NaN for what it does not have. Any
+// out-pointer may be NULL.
+enum tw_status tw_result_machining_blends(const struct tw_result *res,
+                                          size_t i,
+                                          double *corner_radius,
+                                          double *floor_fillet,
+                                          double *wall_draft_deg);
+
+// A hole's stages: its entry and exit (kind, included angle in degrees,
+// size in mm: a cone's diameter on the face or a blend's radius; NaN
+// where not applicable), how many bores it has (read each with
+// `tw_result_machining_bore`), and its tip (with a drill point's included
+// angle, else NaN). `TW_ERR_NOT_APPLICABLE` for a feature that is not a
+// hole. Any out-pointer may be NULL.
+enum tw_status tw_result_machining_hole(const struct tw_result *res,
+                                        size_t i,
+                                        enum tw_hole_end *entry,
+                                        double *entry_angle_deg,
+                                        double *entry_size,
+                                        enum tw_hole_end *exit,
+                                        double *exit_angle_deg,
+                                        double *exit_size,
+                                        size_t *bores,
+                                        enum tw_hole_tip *tip,
+                                        double *tip_angle_deg);
+
+// Bore `k` of hole `i`, from the entry down: its diameter and depth along
+// the axis, mm. `TW_ERR_NOT_APPLICABLE` for a feature that is not a hole,
+// `TW_ERR_OUT_OF_RANGE` past its last bore. Any out-pointer may be NULL.
+enum tw_status tw_result_machining_bore(const struct tw_result *res,
+                                        size_t i,
+                                        size_t k,
+                                        double *diameter,
+                                        double *depth);
 
 // Plan the operations of `part` in the set-up of `opt` (NULL for the
 // defaults: up +Z) with the tool library `tools_toml` (TOML text as

@@ -11,6 +11,7 @@
 mod access;
 mod classify;
 mod error;
+mod machining;
 mod operations;
 mod options;
 mod part;
@@ -20,6 +21,7 @@ mod result;
 pub use access::*;
 pub use classify::*;
 pub use error::{tw_last_error_message, tw_status};
+pub use machining::*;
 pub use operations::*;
 pub use options::*;
 pub use part::*;

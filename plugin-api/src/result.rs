@@ -18,6 +18,23 @@ pub struct tw_result {
     kinds: Vec<CString>,
     /// Per connection: kind and its two feature ids.
     links: Vec<(tw_connection_kind, CString, CString)>,
+    /// Per machining feature: its id and kind.
+    machining_ids: Vec<CString>,
+    machining_kinds: Vec<CString>,
+}
+
+impl tw_result {
+    pub(crate) fn report(&self) -> &RecognitionReport {
+        &self.report
+    }
+
+    pub(crate) fn machining_ids(&self) -> &[CString] {
+        &self.machining_ids
+    }
+
+    pub(crate) fn machining_kinds(&self) -> &[CString] {
+        &self.machining_kinds
+    }
 }
 
 /// The kind of a connection.
@@ -72,11 +89,19 @@ pub unsafe extern "C" fn tw_recognize(
                 ),
             })
             .collect();
+        let machining = &report.machining_features;
+        let machining_ids = machining
+            .iter()
+            .map(|m| cstring(&m.id.to_string()))
+            .collect();
+        let machining_kinds = machining.iter().map(|m| cstring(m.kind.name())).collect();
         Ok(tw_result {
             report,
             ids,
             kinds,
             links,
+            machining_ids,
+            machining_kinds,
         })
     })
 }

@@ -114,6 +114,20 @@ fn c_host_compiles_runs_and_reads_results() {
         "operations printed: {stdout}"
     );
     valgrind_clean(&out, &[fixture()]);
+    // Machining features through the accessors: a generated part with
+    // countersunk, counterbored and stepped holes (their bores listed).
+    let holes = crate_dir().join("../fixtures/holes/holes_1.step");
+    let run = host(&out).arg(&holes).output().unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success() && stdout.contains("host: ok"),
+        "{stdout}{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(
+        stdout.contains("machining features: 9") && stdout.contains("    bore 3: "),
+        "machining printed: {stdout}"
+    );
     // Classification of two stacked volumes, upper removed first.
     let case = crate_dir().join("../fixtures/classify/stacked");
     let run = host(&out)
