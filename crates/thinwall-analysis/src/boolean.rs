@@ -3,7 +3,7 @@
 //!
 //! | engine | serves |
 //! |---|---|
-//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`) | reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
+//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`) | a meshed face's region (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
 //! | geo's `BooleanOps` (i_overlay 4.5 inside geo 0.33) | face regions from loops (`polygon.rs`), wall overlaps of the recognizers (`walls.rs`, `curved.rs`, `offset.rs`), the removal's pieces, cells and cuts (`thinwall-removal`), flank-milling zones (`thinwall-access/src/zones.rs`), the order of operations (`thinwall-ops/src/order.rs`): few operands, made by our own code, whose outputs the snapshots pin |
 //!
 //! Why two: geo 0.33 pins i_overlay 4.5, whose hole binding panics (an
@@ -38,6 +38,32 @@ pub fn difference(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<
 /// `a ∩ b`.
 pub fn intersection(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygon<f64> {
     apply(a, b, OverlayRule::Intersect)
+}
+
+/// The union of polygons that tile a region and barely overlap (a mesh's
+/// triangles seen from above), in one sweep with the non-zero rule (each
+/// ring counter-clockwise). Where many overlap deeply (grown triangles),
+/// [`union_all`]'s pairwise tree is faster.
+pub fn union_tiles(tiles: &[Polygon<f64>]) -> MultiPolygon<f64> {
+    use geo::Orient;
+    let shapes: Shapes = tiles
+        .iter()
+        .map(|p| {
+            let p = p.orient(geo::orient::Direction::Default);
+            std::iter::once(p.exterior())
+                .chain(p.interiors())
+                .map(open_ring)
+                .filter(|r| r.len() >= 3)
+                .collect::<Vec<_>>()
+        })
+        .filter(|rings| !rings.is_empty())
+        .collect();
+    if shapes.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    crate::parallel::check_deadline();
+    let none: Shapes = Vec::new();
+    from_shapes(shapes.overlay(&none, OverlayRule::Subject, FillRule::NonZero))
 }
 
 /// The union of many regions, pairwise up a balanced tree (faster here
@@ -122,6 +148,52 @@ mod tests {
             pts.reverse();
         }
         Polygon::new(LineString::from(pts), vec![])
+    }
+
+    /// Tiles of either orientation: a 20 × 20 grid of triangles over a
+    /// square with a square hole unites to the square less its hole (one
+    /// polygon with one hole), and tiles overlapping their neighbours
+    /// count their overlap once, as the pairwise union does.
+    #[test]
+    fn tiles_unite_in_one_sweep() {
+        let tri = |a: (f64, f64), b: (f64, f64), c: (f64, f64), ccw: bool| {
+            let mut v = vec![a, b, c];
+            if !ccw {
+                v.reverse();
+            }
+            Polygon::new(LineString::from(v), vec![])
+        };
+        let mut tiles = Vec::new();
+        for i in 0..20 {
+            for j in 0..20 {
+                if (8..12).contains(&i) && (8..12).contains(&j) {
+                    continue;
+                }
+                let (x, y) = (i as f64, j as f64);
+                tiles.push(tri(
+                    (x, y),
+                    (x + 1.0, y),
+                    (x + 1.0, y + 1.0),
+                    (i + j) % 2 == 0,
+                ));
+                tiles.push(tri((x, y), (x + 1.0, y + 1.0), (x, y + 1.0), true));
+            }
+        }
+        let u = union_tiles(&tiles);
+        assert!((u.unsigned_area() - (400.0 - 16.0)).abs() < 1e-9);
+        assert_eq!(u.0.len(), 1);
+        assert_eq!(u.0[0].interiors().len(), 1);
+        let grown: Vec<Polygon<f64>> = (0..10)
+            .map(|k| square(k as f64 * 0.5, 0.0, 1.0, k % 2 == 0))
+            .collect();
+        let pairwise = union_all(
+            grown
+                .iter()
+                .map(|p| MultiPolygon::new(vec![p.clone()]))
+                .collect(),
+        );
+        assert!((union_tiles(&grown).unsigned_area() - pairwise.unsigned_area()).abs() < 1e-9);
+        assert!((pairwise.unsigned_area() - 5.5).abs() < 1e-9);
     }
 
     /// Two overlapping squares and a frame with a hole, in either

@@ -249,12 +249,7 @@ fn triangles_region(
     let total: f64 = polys.iter().map(crate::moments::area).sum();
     // Through i_overlay 9 (geo's i_overlay 4.5 panics on such input:
     // the ledger).
-    let region = thinwall_analysis::boolean::union_all(
-        polys
-            .iter()
-            .map(|p| MultiPolygon::new(vec![p.clone()]))
-            .collect(),
-    );
+    let region = thinwall_analysis::boolean::union_tiles(&polys);
     let union: f64 = region.0.iter().map(crate::moments::area).sum();
     let overlap = (total - union).max(0.0);
     // A fold is a share of the face and more than a few triangles' worth
