@@ -969,7 +969,17 @@ impl<'s, 'm> Builder<'s, 'm> {
             .keyword()
             .unwrap_or("complex B-spline surface")
             .to_string();
-        let nurbs = face.to_nurbs().and_then(|n| {
+        let revolved = matches!(s.kind(), SurfaceKind::Revolution(_));
+        let nurbs = face.to_nurbs().and_then(|mut n| {
+            if revolved {
+                let boundary = boundary_points(face);
+                crate::seam::away_from(
+                    &n.knots_u,
+                    &mut n.control_points,
+                    &mut n.weights,
+                    &boundary,
+                );
+            }
             let mut ns = NurbsSurface::new(
                 n.degree_u,
                 n.degree_v,
@@ -993,6 +1003,27 @@ impl<'s, 'm> Builder<'s, 'm> {
             }
         }
     }
+}
+
+/// Points on a face's boundary, in file coordinates: its edges' vertices
+/// and the middles of their curves.
+fn boundary_points(face: SFace<'_>) -> Vec<[f64; 3]> {
+    let mut out = Vec::new();
+    for bound in face.bounds() {
+        for (edge, _) in bound.oriented_edges() {
+            for v in [edge.start(), edge.end()].into_iter().flatten() {
+                out.extend(v.point().map(|p| p.xyz()));
+            }
+            if let Some(c) = edge.to_nurbs().and_then(|n| {
+                NurbsCurve::new(n.degree, n.knots, &n.control_points, &n.weights).ok()
+            }) {
+                let (a, b) = c.domain();
+                let m = c.point(0.5 * (a + b));
+                out.push([m.x, m.y, m.z]);
+            }
+        }
+    }
+    out
 }
 
 /// A placement matrix read in file units, with its translation scaled to mm.

@@ -16,6 +16,7 @@ mod error;
 pub mod id_scan;
 mod references;
 pub mod sanity;
+mod seam;
 
 pub use error::StepError;
 
