@@ -42,6 +42,10 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
         // A long arrangement (thousands of meshed triangles) stops at the
         // study's time limit.
         thinwall_analysis::parallel::check_deadline();
+        // A many-cornered region (a meshed face's outline) is cut into
+        // tiles once, so each cell meets only the tiles by it.
+        let tiles = (c.robust && corners(c.region) > TILE_CORNERS)
+            .then(|| Tiles::of(c.region.clone(), c.bbox, 0));
         let mut next = Vec::with_capacity(cells.len() + 4);
         for cl in cells.drain(..) {
             if !overlaps(&cl.bbox, &c.bbox) {
@@ -49,9 +53,17 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
                 continue;
             }
             let me = MultiPolygon::new(vec![cl.poly.clone()]);
+            let local;
+            let region = match &tiles {
+                Some(t) => {
+                    local = t.near(&cl.bbox);
+                    &local
+                }
+                None => c.region,
+            };
             let inside = match c.robust {
-                true => thinwall_analysis::boolean::intersection(&me, c.region),
-                false => me.intersection(c.region),
+                true => thinwall_analysis::boolean::intersection(&me, region),
+                false => me.intersection(region),
             };
             let inside_area: f64 = inside.0.iter().map(area).sum();
             if inside_area <= min_area {
@@ -59,8 +71,8 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
                 continue;
             }
             let outside = match c.robust {
-                true => thinwall_analysis::boolean::difference(&me, c.region),
-                false => me.difference(c.region),
+                true => thinwall_analysis::boolean::difference(&me, region),
+                false => me.difference(region),
             };
             let mut covered = cl.covers.clone();
             covered.push(ci);
@@ -80,6 +92,78 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
     cells
 }
 
+/// A region with more corners than this is cut into tiles before cells
+/// meet it.
+const TILE_CORNERS: usize = 2048;
+
+/// Halvings of a region's box into tiles, at most.
+const MAX_TILE_DEPTH: usize = 16;
+
+fn corners(m: &MultiPolygon<f64>) -> usize {
+    m.iter()
+        .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
+        .sum()
+}
+
+/// A region cut by halving its box until each tile has few corners: the
+/// tiles partition it, so its part in any box is the tiles by that box
+/// (they touch only along the cuts).
+enum Tiles {
+    Leaf(Rect<f64>, MultiPolygon<f64>),
+    Split(Box<Tiles>, Box<Tiles>),
+}
+
+impl Tiles {
+    fn of(region: MultiPolygon<f64>, rect: Rect<f64>, depth: usize) -> Self {
+        if corners(&region) <= TILE_CORNERS / 4 || depth >= MAX_TILE_DEPTH {
+            return Tiles::Leaf(rect, region);
+        }
+        let (lo, hi) = (rect.min(), rect.max());
+        let [a, b] = if hi.x - lo.x >= hi.y - lo.y {
+            let mid = 0.5 * (lo.x + hi.x);
+            [
+                Rect::new(lo, geo::Coord { x: mid, y: hi.y }),
+                Rect::new(geo::Coord { x: mid, y: lo.y }, hi),
+            ]
+        } else {
+            let mid = 0.5 * (lo.y + hi.y);
+            [
+                Rect::new(lo, geo::Coord { x: hi.x, y: mid }),
+                Rect::new(geo::Coord { x: lo.x, y: mid }, hi),
+            ]
+        };
+        let half = |r: Rect<f64>| {
+            let part = thinwall_analysis::boolean::intersection(
+                &region,
+                &MultiPolygon::new(vec![r.to_polygon()]),
+            );
+            Box::new(Tiles::of(part, r, depth + 1))
+        };
+        Tiles::Split(half(a), half(b))
+    }
+
+    /// The region's polygons in the tiles whose boxes meet `b`.
+    fn near(&self, b: &Rect<f64>) -> MultiPolygon<f64> {
+        let mut out = Vec::new();
+        self.collect(b, &mut out);
+        MultiPolygon::new(out)
+    }
+
+    fn collect(&self, b: &Rect<f64>, out: &mut Vec<Polygon<f64>>) {
+        match self {
+            Tiles::Leaf(r, m) => {
+                if overlaps(r, b) {
+                    out.extend(m.0.iter().cloned());
+                }
+            }
+            Tiles::Split(x, y) => {
+                x.collect(b, out);
+                y.collect(b, out);
+            }
+        }
+    }
+}
+
 fn cell(poly: Polygon<f64>, covers: Vec<usize>) -> Cell {
     let bbox = poly.bounding_rect().expect("a cell has points");
     let area = area(&poly);
@@ -88,5 +172,69 @@ fn cell(poly: Polygon<f64>, covers: Vec<usize>) -> Cell {
         bbox,
         covers,
         area,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use geo::{Area, LineString};
+
+    /// A disc of 6000 corners with a hole, tiled: over any small box its
+    /// tiles hold what the whole region holds there, and an arrangement
+    /// cut by it robustly (tiled) gives the cells of one cut by the whole.
+    #[test]
+    fn tiles_hold_the_region_by_any_box() {
+        let ring = |r: f64, k: usize, ccw: bool| {
+            let mut v: Vec<(f64, f64)> = (0..k)
+                .map(|t| {
+                    let a = std::f64::consts::TAU * t as f64 / k as f64;
+                    (r * a.cos(), r * a.sin())
+                })
+                .collect();
+            if !ccw {
+                v.reverse();
+            }
+            v.push(v[0]);
+            LineString::from(v)
+        };
+        let region = MultiPolygon::new(vec![Polygon::new(
+            ring(10.0, 6000, true),
+            vec![ring(4.0, 3000, false)],
+        )]);
+        let bbox = region.bounding_rect().unwrap();
+        let tiles = Tiles::of(region.clone(), bbox, 0);
+        assert!(matches!(tiles, Tiles::Split(..)));
+        for (x, y, s) in [
+            (-10.0, -10.0, 20.0),
+            (3.0, 0.5, 2.0),
+            (-9.9, -1.0, 1.5),
+            (0.0, 0.0, 0.1),
+        ] {
+            let b = Rect::new((x, y), (x + s, y + s));
+            let cellp = MultiPolygon::new(vec![b.to_polygon()]);
+            let whole = thinwall_analysis::boolean::intersection(&cellp, &region).unsigned_area();
+            let local =
+                thinwall_analysis::boolean::intersection(&cellp, &tiles.near(&b)).unsigned_area();
+            assert!(
+                (whole - local).abs() <= 1e-9 * (s * s),
+                "{x} {y}: {whole} {local}"
+            );
+        }
+        let start = Rect::new((-12.0, -12.0), (12.0, 12.0)).to_polygon();
+        let band = MultiPolygon::new(vec![Rect::new((-12.0, -1.0), (12.0, 1.0)).to_polygon()]);
+        let cover = |region, robust| Cover {
+            region,
+            bbox: region.bounding_rect().unwrap(),
+            robust,
+        };
+        let cells = arrange(start, &[cover(&band, true), cover(&region, true)], 1e-9);
+        let covered: f64 = cells
+            .iter()
+            .filter(|c| c.covers.contains(&1))
+            .map(|c| c.area)
+            .sum();
+        assert!((covered - region.unsigned_area()).abs() < 1e-9 * region.unsigned_area());
+        assert_eq!(cells.iter().filter(|c| c.covers == vec![0, 1]).count(), 2);
     }
 }
