@@ -33,11 +33,13 @@ pub fn away_from(
     }
     // Quarter arcs of equal spans, over any range.
     let (k0, k1) = (knots_u[0], knots_u[11]);
-    if !(k1 > k0)
+    let span = k1 - k0;
+    if span.is_nan()
+        || span <= 0.0
         || knots_u
             .iter()
             .zip(CIRCLE_KNOTS)
-            .any(|(a, b)| ((a - k0) / (k1 - k0) - b).abs() > 1e-12)
+            .any(|(a, b)| ((a - k0) / span - b).abs() > 1e-12)
     {
         return;
     }
