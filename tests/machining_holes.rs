@@ -219,22 +219,9 @@ fn part_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, Vec<String>
     (truth.holes.len(), errors)
 }
 
-fn parts() -> Vec<std::path::PathBuf> {
-    let dir = std::env::var("THINWALL_HOLES_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|_| common::root().join("fixtures/holes"));
-    let mut v: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "step"))
-        .collect();
-    v.sort();
-    v
-}
-
 #[test]
 fn every_hole_is_one_feature_with_its_stages_in_any_pose() {
-    let parts = parts();
+    let parts = common::generated_parts("THINWALL_HOLES_DIR", "holes");
     assert!(!parts.is_empty());
     let (mut holes, mut errors) = (0, Vec::new());
     for (k, path) in parts.iter().enumerate() {

@@ -98,9 +98,9 @@ fn check_pocket(m: &MachiningFeature, p: &Pocket) -> Vec<String> {
     wrong
 }
 
-/// Every pocket of one panel, posed by `seed` (none: as built): what is
-/// wrong, one line each.
-fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> Vec<String> {
+/// Every pocket of one panel, posed by `seed` (none: as built): how many,
+/// and what is wrong, one line each.
+fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, Vec<String>) {
     let truth: Truth =
         serde_json::from_str(&std::fs::read_to_string(path.with_extension("truth.json")).unwrap())
             .unwrap();
@@ -136,35 +136,19 @@ fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> Vec<String> {
     for m in features.iter().filter(|m| m.kind == MachiningKind::Fillet) {
         errors.push(format!("{name}: {} is a fillet of its own", m.id));
     }
-    errors
-}
-
-fn panels() -> Vec<std::path::PathBuf> {
-    let dir = std::env::var("THINWALL_POCKETS_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|_| common::root().join("fixtures/pockets"));
-    let mut v: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "step"))
-        .collect();
-    v.sort();
-    v
+    (truth.pockets.len(), errors)
 }
 
 #[test]
 fn every_pocket_carries_its_corner_radius_floor_fillet_and_blends_in_any_pose() {
-    let parts = panels();
+    let parts = common::generated_parts("THINWALL_POCKETS_DIR", "pockets");
     assert!(!parts.is_empty());
     let (mut pockets, mut errors) = (0, Vec::new());
     for (k, path) in parts.iter().enumerate() {
         for seed in [None, Some(3800 + k as u64)] {
-            let truth: Truth = serde_json::from_str(
-                &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
-            )
-            .unwrap();
-            pockets += truth.pockets.len();
-            errors.extend(panel_errors(path, seed));
+            let (n, e) = panel_errors(path, seed);
+            pockets += n;
+            errors.extend(e);
         }
     }
     eprintln!(

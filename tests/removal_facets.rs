@@ -8,22 +8,14 @@
 
 mod common;
 
-use thinwall_geom::Frame;
-use thinwall_removal::{Removal, StockShape};
+use thinwall_removal::Removal;
 
 const CTC_03: &str = "nist/nist_ctc_03_asme1_ap242-e2.stp";
 
 #[test]
 fn tilted_holes_get_a_removal_that_adds_up() {
-    let path = common::shared_data().join(CTC_03);
-    let (part, _) = thinwall_step::read_file(path).unwrap();
-    let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
-    let bb = a.bounding_box();
-    let stock = StockShape::Block {
-        lo: bb.min,
-        hi: bb.max,
-    };
-    let r = Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal())
+    let (part, r) = common::block_removal(&common::shared_data().join(CTC_03));
+    let r = r
         .and_then(Removal::checked)
         .expect("a removal that adds up");
     let m = &r.meshed;
@@ -38,12 +30,7 @@ fn tilted_holes_get_a_removal_that_adds_up() {
     );
     // The tessellation for pictures is coarser (its own deviation), so the
     // two agree to its precision, not the removal's.
-    let meshed = common::tessellated_volume(&part);
-    assert!(
-        (r.part_volume - meshed).abs() <= 1e-3 * meshed,
-        "removal's part {} against the tessellation's {meshed}",
-        r.part_volume
-    );
+    common::assert_part_volume_is_the_tessellations(&part, &r, 1e-3, "CTC 03");
 }
 
 #[test]
@@ -90,33 +77,14 @@ fn a_turned_copy_gets_the_same_plan() {
 /// never given a wrong volume.
 #[test]
 fn pocketed_panels_get_removals_that_add_up() {
-    let dir = common::root().join("fixtures/pockets");
-    let mut panels: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "step"))
-        .collect();
-    panels.sort();
+    let panels = common::step_files(&common::root().join("fixtures/pockets"));
     let mut planned = Vec::new();
     for path in &panels {
-        let (part, _) = thinwall_step::read_file(path).unwrap();
-        let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
-        let bb = a.bounding_box();
-        let stock = StockShape::Block {
-            lo: bb.min,
-            hi: bb.max,
-        };
+        let (part, r) = common::block_removal(path);
         let name = path.file_name().unwrap().to_string_lossy().to_string();
-        match Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal())
-            .and_then(Removal::checked)
-        {
+        match r.and_then(Removal::checked) {
             Ok(r) => {
-                let meshed = common::tessellated_volume(&part);
-                assert!(
-                    (r.part_volume - meshed).abs() <= 1e-3 * meshed,
-                    "{name}: removal's part {} against the tessellation's {meshed}",
-                    r.part_volume
-                );
+                common::assert_part_volume_is_the_tessellations(&part, &r, 1e-3, &name);
                 planned.push(name);
             }
             Err(e) => {

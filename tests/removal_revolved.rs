@@ -14,7 +14,7 @@ mod common;
 
 use thinwall_geom::{Frame, Point3, Vector3};
 use thinwall_removal::pieces::{face_pieces, Facing, Height};
-use thinwall_removal::{flux, Removal, StockShape};
+use thinwall_removal::{flux, Removal};
 
 fn parts() -> Vec<std::path::PathBuf> {
     let data = common::shared_data();
@@ -115,28 +115,14 @@ fn block_removal(
     thinwall_brep::Part,
     Result<Removal, thinwall_removal::RemovalError>,
 ) {
-    let path = common::shared_data().join(format!("nist/{name}.stp"));
-    let (part, _) = thinwall_step::read_file(path).unwrap();
-    let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
-    let bb = a.bounding_box();
-    let stock = StockShape::Block {
-        lo: bb.min,
-        hi: bb.max,
-    };
-    let r = Removal::new(&part, Frame::world(), &stock, &[], bb.diagonal());
-    (part, r)
+    common::block_removal(&common::shared_data().join(format!("nist/{name}.stp")))
 }
 
 #[test]
 fn nist_stc_08_gets_a_whole_removal_of_the_tessellations_volume() {
     let (part, r) = block_removal("nist_stc_08_asme1_ap242-e3");
     let r = r.and_then(Removal::checked).unwrap();
-    let meshed = common::tessellated_volume(&part);
-    assert!(
-        (r.part_volume - meshed).abs() <= 1e-4 * meshed,
-        "removal's part {} against the tessellation's {meshed}",
-        r.part_volume
-    );
+    common::assert_part_volume_is_the_tessellations(&part, &r, 1e-4, "STC 08");
 }
 
 #[test]

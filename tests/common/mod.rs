@@ -28,6 +28,16 @@ pub fn thin_walled_parts() -> Vec<PathBuf> {
     v
 }
 
+/// Generated parts with their truth: the STEP files of the directory the
+/// environment variable `var` names (a held-out seed range), else of the
+/// project's `fixtures/<fixtures>`.
+pub fn generated_parts(var: &str, fixtures: &str) -> Vec<PathBuf> {
+    let dir = std::env::var(var)
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| root().join("fixtures").join(fixtures));
+    step_files(&dir)
+}
+
 pub fn step_files(dir: &Path) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
@@ -179,6 +189,46 @@ pub fn faces_reversed(text: &str) -> String {
     format!("{}{}{}", &text[..start], ids.join(","), &text[end..])
 }
 pub mod mutate;
+
+/// A part read from `path` and its removal from its own block along z
+/// (world frame), unchecked.
+pub fn block_removal(
+    path: &Path,
+) -> (
+    thinwall_brep::Part,
+    Result<thinwall_removal::Removal, thinwall_removal::RemovalError>,
+) {
+    let (part, _) = thinwall_step::read_file(path).unwrap();
+    let a = thinwall_analysis::PartAnalysis::new(&part, thinwall_analysis::Setup::default());
+    let bb = a.bounding_box();
+    let stock = thinwall_removal::StockShape::Block {
+        lo: bb.min,
+        hi: bb.max,
+    };
+    let r = thinwall_removal::Removal::new(
+        &part,
+        thinwall_geom::Frame::world(),
+        &stock,
+        &[],
+        bb.diagonal(),
+    );
+    (part, r)
+}
+
+/// The removal's part volume is the tessellation's within `rel` of it.
+pub fn assert_part_volume_is_the_tessellations(
+    part: &thinwall_brep::Part,
+    r: &thinwall_removal::Removal,
+    rel: f64,
+    what: &str,
+) {
+    let meshed = tessellated_volume(part);
+    assert!(
+        (r.part_volume - meshed).abs() <= rel * meshed,
+        "{what}: removal's part {} against the tessellation's {meshed}",
+        r.part_volume
+    );
+}
 
 /// The signed volume of a part's watertight picture tessellation (an
 /// independent computation of its volume), mm³.

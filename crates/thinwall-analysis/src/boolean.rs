@@ -46,18 +46,13 @@ pub fn intersection(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygo
 /// [`union_all`]'s pairwise tree is faster.
 pub fn union_tiles(tiles: &[Polygon<f64>]) -> MultiPolygon<f64> {
     use geo::Orient;
-    let shapes: Shapes = tiles
-        .iter()
-        .map(|p| {
-            let p = p.orient(geo::orient::Direction::Default);
-            std::iter::once(p.exterior())
-                .chain(p.interiors())
-                .map(open_ring)
-                .filter(|r| r.len() >= 3)
-                .collect::<Vec<_>>()
-        })
-        .filter(|rings| !rings.is_empty())
-        .collect();
+    let oriented = MultiPolygon::new(
+        tiles
+            .iter()
+            .map(|p| p.orient(geo::orient::Direction::Default))
+            .collect(),
+    );
+    let shapes = shapes(&oriented);
     if shapes.is_empty() {
         return MultiPolygon::new(vec![]);
     }

@@ -22,6 +22,12 @@ use thinwall_geom::{Point3, Surface, Vector3};
 /// a screw head).
 const CHAMFER_WIDTH_SHARE: f64 = 0.2;
 
+/// Whether an end widened to radius `r` over a drill of radius `drill` is
+/// a seat (a countersink, a counterbore) rather than a chamfer.
+fn is_seat(r: f64, drill: f64) -> bool {
+    r - drill > CHAMFER_WIDTH_SHARE * 2.0 * drill
+}
+
 /// One end of a hole: how its edge is finished.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -230,7 +236,7 @@ fn shape_hole(
         Some(up) if up.dot(&u).abs() > 1.0 - NEAR_PARALLEL_EPS => -up,
         _ => found,
     };
-    let forward = match (stations.closed_at_far(), stations.closed_at_near()) {
+    let forward = match (stations.closed_at(false), stations.closed_at(true)) {
         (true, false) => true,
         (false, true) => false,
         _ => match stations.seat_side() {
@@ -351,35 +357,28 @@ impl Stations {
         }
     }
 
-    fn at_near(&self, s: &Station) -> bool {
-        (s.t0 - self.lo).abs() < self.tol
+    /// Whether a face reaches the near end (`near`) or the far one.
+    fn at_end(&self, s: &Station, near: bool) -> bool {
+        if near {
+            (s.t0 - self.lo).abs() < self.tol
+        } else {
+            (s.t1 - self.hi).abs() < self.tol
+        }
     }
 
-    fn at_far(&self, s: &Station) -> bool {
-        (s.t1 - self.hi).abs() < self.tol
+    /// A flat bottom or a drill point closes that end.
+    fn closed_at(&self, near: bool) -> bool {
+        self.list
+            .iter()
+            .any(|s| self.at_end(s, near) && self.closes(s))
     }
 
-    /// A flat bottom or a drill point closes the far end.
-    fn closed_at_far(&self) -> bool {
-        self.list.iter().any(|s| {
-            self.at_far(s)
-                && match s.kind {
-                    StationKind::Bottom => true,
-                    StationKind::Cone { r0, .. } => r0 < self.tol,
-                    _ => false,
-                }
-        })
-    }
-
-    fn closed_at_near(&self) -> bool {
-        self.list.iter().any(|s| {
-            self.at_near(s)
-                && match s.kind {
-                    StationKind::Bottom => true,
-                    StationKind::Cone { r0, .. } => r0 < self.tol,
-                    _ => false,
-                }
-        })
+    fn closes(&self, s: &Station) -> bool {
+        match s.kind {
+            StationKind::Bottom => true,
+            StationKind::Cone { r0, .. } => r0 < self.tol,
+            _ => false,
+        }
     }
 
     /// The end with a seat (a countersink or a counterbore: its widest
@@ -389,17 +388,13 @@ impl Stations {
         let drill = self.drill_radius()?;
         let seat = |near: bool| {
             self.list.iter().any(|s| {
-                let end = if near {
-                    self.at_near(s)
-                } else {
-                    self.at_far(s)
-                };
+                let end = self.at_end(s, near);
                 let r = match s.kind {
                     StationKind::Bore { radius } => radius,
                     StationKind::Cone { r1, .. } => r1,
                     _ => 0.0,
                 };
-                end && r - drill > CHAMFER_WIDTH_SHARE * 2.0 * drill
+                end && is_seat(r, drill)
             })
         };
         match (seat(true), seat(false)) {
@@ -426,19 +421,13 @@ impl Stations {
         let end = |near: bool| {
             self.list
                 .iter()
-                .filter(|s| {
-                    if near {
-                        self.at_near(s)
-                    } else {
-                        self.at_far(s)
-                    }
-                })
+                .filter(|s| self.at_end(s, near))
                 .find_map(|s| hole_end(s, drill))
         };
         let tip = self
             .list
             .iter()
-            .filter(|s| self.at_far(s))
+            .filter(|s| self.at_end(s, false))
             .find_map(|s| match s.kind {
                 StationKind::Bottom => Some(HoleTip::Flat),
                 StationKind::Cone { angle_deg, r0, .. } if r0 < self.tol => {
@@ -498,7 +487,7 @@ fn hole_end(s: &Station, drill: f64) -> Option<HoleEnd> {
     match s.kind {
         StationKind::Cone { angle_deg, r0, r1 } if r0 > 0.0 => {
             let diameter = 2.0 * r1;
-            Some(if r1 - drill > CHAMFER_WIDTH_SHARE * 2.0 * drill {
+            Some(if is_seat(r1, drill) {
                 HoleEnd::Countersink {
                     angle_deg,
                     diameter,

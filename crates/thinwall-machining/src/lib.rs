@@ -637,14 +637,8 @@ fn depression_feature(
         a.sizes_across(group, &dir)
     };
     MachiningFeature {
-        id: MachiningId::default(),
-        kind,
-        body: a.part().face(group[0]).body.0,
         through,
-        profile,
         catalog,
-        direction: [dir.x, dir.y, dir.z],
-        faces: a.step_ids(whole),
         bottom_faces: a.step_ids(&bottom),
         side_faces: a.step_ids(&[&sides[..], &island_walls].concat()),
         island_faces: a.step_ids(&island_walls),
@@ -667,14 +661,6 @@ fn depression_feature(
             }),
         largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
         radii: radii_v,
-        blend_faces: vec![],
-        chamfer_faces: vec![],
-        corner_radius: None,
-        corner_radii: vec![],
-        floor_fillet: None,
-        wall_draft_deg: None,
-        hole: None,
-        reachable: None,
-        related: vec![],
+        ..MachiningFeature::on_faces(a, kind, profile, whole, &dir)
     }
 }

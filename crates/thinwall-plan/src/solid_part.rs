@@ -216,13 +216,9 @@ impl Builder {
             TCurve::BSplineCurve(c) => {
                 let points: Vec<[f64; 3]> =
                     c.control_points().iter().map(|p| [p.x, p.y, p.z]).collect();
-                let n = NurbsCurve::new(
-                    c.degree(),
-                    c.knot_vec().to_vec(),
-                    &points,
-                    &vec![1.0; points.len()],
-                )
-                .map_err(nurbs_error)?;
+                let weights = vec![1.0; points.len()];
+                let n = NurbsCurve::new(c.degree(), c.knot_vec().to_vec(), &points, &weights)
+                    .map_err(nurbs_error)?;
                 (CurveKind::Bspline, n)
             }
             TCurve::IntersectionCurve(_) => {
@@ -268,52 +264,41 @@ fn surface(name: &str, s: &TSurface) -> Result<Surface, SolidPartError> {
             solid: name.to_string(),
         }),
         TSurface::NurbsSurface(n) => {
+            let (points, weights): (Vec<_>, Vec<_>) =
+                n.control_points().iter().map(|row| cartesian(row)).unzip();
             let (ku, kv) = n.knot_vecs();
-            let grid: Vec<(Vec<[f64; 3]>, Vec<f64>)> = n
-                .control_points()
-                .iter()
-                .map(|row| cartesian(row))
-                .collect();
-            let (points, weights): (Vec<_>, Vec<_>) = grid.into_iter().unzip();
-            let nurbs = NurbsSurface::new(
-                n.udegree(),
-                n.vdegree(),
-                ku.to_vec(),
-                kv.to_vec(),
-                &points,
-                &weights,
-            )
-            .map_err(nurbs_error)?;
-            Ok(Surface::Freeform {
-                kind: FreeformKind::Bspline,
-                nurbs,
-            })
+            let degrees = (n.udegree(), n.vdegree());
+            freeform(degrees, (ku, kv), &points, &weights).map_err(nurbs_error)
         }
         TSurface::BSplineSurface(n) => {
-            let (ku, kv) = n.knot_vecs();
             let points: Vec<Vec<[f64; 3]>> = n
                 .control_points()
                 .iter()
                 .map(|row| row.iter().map(|p| [p.x, p.y, p.z]).collect())
                 .collect();
             let weights: Vec<Vec<f64>> = points.iter().map(|r| vec![1.0; r.len()]).collect();
-            let nurbs = NurbsSurface::new(
-                n.udegree(),
-                n.vdegree(),
-                ku.to_vec(),
-                kv.to_vec(),
-                &points,
-                &weights,
-            )
-            .map_err(nurbs_error)?;
-            Ok(Surface::Freeform {
-                kind: FreeformKind::Bspline,
-                nurbs,
-            })
+            let (ku, kv) = n.knot_vecs();
+            let degrees = (n.udegree(), n.vdegree());
+            freeform(degrees, (ku, kv), &points, &weights).map_err(nurbs_error)
         }
         TSurface::RevolutedCurve(_) => Err(SolidPartError::Unsupported {
             solid: name.to_string(),
             what: "a surface of revolution",
         }),
     }
+}
+
+/// A free-form surface of our B-rep from a NURBS's degrees, knots and
+/// `[u][v]` grids of Cartesian points and weights.
+fn freeform(
+    (du, dv): (usize, usize),
+    (ku, kv): (&truck_modeling::KnotVec, &truck_modeling::KnotVec),
+    points: &[Vec<[f64; 3]>],
+    weights: &[Vec<f64>],
+) -> Result<Surface, thinwall_geom::nurbs::NurbsError> {
+    let nurbs = NurbsSurface::new(du, dv, ku.to_vec(), kv.to_vec(), points, weights)?;
+    Ok(Surface::Freeform {
+        kind: FreeformKind::Bspline,
+        nurbs,
+    })
 }

@@ -4,6 +4,7 @@
 //! same faces in the same order wherever it stands.
 
 use super::flux::area;
+use crate::halving::{corners, halves};
 use geo::{BooleanOps, BoundingRect, MultiPolygon, Polygon, Rect};
 
 /// A region that covers part of the plane.
@@ -99,12 +100,6 @@ const TILE_CORNERS: usize = 2048;
 /// Halvings of a region's box into tiles, at most.
 const MAX_TILE_DEPTH: usize = 16;
 
-fn corners(m: &MultiPolygon<f64>) -> usize {
-    m.iter()
-        .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
-        .sum()
-}
-
 /// A region cut by halving its box until each tile has few corners: the
 /// tiles partition it, so its part in any box is the tiles by that box
 /// (they touch only along the cuts).
@@ -118,20 +113,7 @@ impl Tiles {
         if corners(&region) <= TILE_CORNERS / 4 || depth >= MAX_TILE_DEPTH {
             return Tiles::Leaf(rect, region);
         }
-        let (lo, hi) = (rect.min(), rect.max());
-        let [a, b] = if hi.x - lo.x >= hi.y - lo.y {
-            let mid = 0.5 * (lo.x + hi.x);
-            [
-                Rect::new(lo, geo::Coord { x: mid, y: hi.y }),
-                Rect::new(geo::Coord { x: mid, y: lo.y }, hi),
-            ]
-        } else {
-            let mid = 0.5 * (lo.y + hi.y);
-            [
-                Rect::new(lo, geo::Coord { x: hi.x, y: mid }),
-                Rect::new(geo::Coord { x: lo.x, y: mid }, hi),
-            ]
-        };
+        let [a, b] = halves(&rect);
         let half = |r: Rect<f64>| {
             let part = thinwall_analysis::boolean::intersection(
                 &region,

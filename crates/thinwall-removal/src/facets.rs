@@ -259,29 +259,14 @@ impl Facets {
         if region.0.is_empty() || tris.is_empty() {
             return 0.0;
         }
-        let corners: usize = region
-            .iter()
-            .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
-            .sum();
-        if tris.len() * corners <= DIRECT_WORK || tris.len() <= 2 || depth >= MAX_SPLIT_DEPTH {
+        if tris.len() * crate::halving::corners(&region) <= DIRECT_WORK
+            || tris.len() <= 2
+            || depth >= MAX_SPLIT_DEPTH
+        {
             return tris.iter().map(|&k| self.triangle_flux(k, &region)).sum();
         }
         thinwall_analysis::parallel::check_deadline();
-        let (lo, hi) = (rect.min(), rect.max());
-        let halves = if hi.x - lo.x >= hi.y - lo.y {
-            let mid = 0.5 * (lo.x + hi.x);
-            [
-                Rect::new(lo, Coord { x: mid, y: hi.y }),
-                Rect::new(Coord { x: mid, y: lo.y }, hi),
-            ]
-        } else {
-            let mid = 0.5 * (lo.y + hi.y);
-            [
-                Rect::new(lo, Coord { x: hi.x, y: mid }),
-                Rect::new(Coord { x: lo.x, y: mid }, hi),
-            ]
-        };
-        halves
+        crate::halving::halves(&rect)
             .into_iter()
             .map(|h| {
                 let part = intersection(&region, &MultiPolygon::new(vec![h.to_polygon()]));

@@ -18,6 +18,7 @@
 pub mod cells;
 pub mod facets;
 pub mod flux;
+mod halving;
 pub mod moments;
 pub mod outline;
 pub mod pieces;

@@ -16,6 +16,8 @@ const CIRCLE_KNOTS: [f64; 12] = [
     0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
 ];
 
+use thinwall_geom::{Point3, Vector3};
+
 type Grid<T> = Vec<Vec<T>>;
 
 /// Turn the seam of a full-turn surface of revolution (`points` and
@@ -79,59 +81,35 @@ fn rotate<T: Clone>(rows: &mut Grid<T>, by: usize) {
 
 /// Angles about the axis of a full turn, measured from its seam.
 struct Angles {
-    centre: [f64; 3],
-    x: [f64; 3],
-    y: [f64; 3],
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn unit(a: [f64; 3]) -> Option<[f64; 3]> {
-    let n = dot(a, a).sqrt();
-    (n > 1e-12).then(|| [a[0] / n, a[1] / n, a[2] / n])
+    centre: Point3,
+    x: Vector3,
+    y: Vector3,
 }
 
 impl Angles {
     /// From the profile control point farthest from the axis: rows 0 and
     /// 4 lie opposite each other (0° and 180°), row 2 at 90°.
     fn of(points: &Grid<[f64; 3]>) -> Option<Self> {
+        let p = |i: usize, k: usize| Point3::from(points[i][k]);
         let j = (0..points[0].len()).max_by(|&a, &b| {
-            let r = |k: usize| {
-                let d = sub(points[0][k], points[4][k]);
-                dot(d, d)
-            };
-            r(a).total_cmp(&r(b))
+            (p(0, a) - p(4, a))
+                .norm()
+                .total_cmp(&(p(0, b) - p(4, b)).norm())
         })?;
-        let (p0, p2, p4) = (points[0][j], points[2][j], points[4][j]);
-        let centre = [
-            0.5 * (p0[0] + p4[0]),
-            0.5 * (p0[1] + p4[1]),
-            0.5 * (p0[2] + p4[2]),
-        ];
-        let x = unit(sub(p0, centre))?;
-        let z = unit(cross(x, sub(p2, centre)))?;
-        let y = cross(z, x);
-        Some(Self { centre, x, y })
+        let centre = Point3::from((p(0, j).coords + p(4, j).coords) * 0.5);
+        let x = (p(0, j) - centre).try_normalize(1e-12)?;
+        let z = x.cross(&(p(2, j) - centre)).try_normalize(1e-12)?;
+        Some(Self {
+            centre,
+            x,
+            y: z.cross(&x),
+        })
     }
 
     /// A point's angle from the seam, 0..2π; none on the axis.
     fn of_point(&self, p: &[f64; 3]) -> Option<f64> {
-        let d = sub(*p, self.centre);
-        let (a, b) = (dot(d, self.x), dot(d, self.y));
+        let d = Point3::from(*p) - self.centre;
+        let (a, b) = (d.dot(&self.x), d.dot(&self.y));
         (a.hypot(b) > 1e-9).then(|| b.atan2(a).rem_euclid(std::f64::consts::TAU))
     }
 }
