@@ -228,7 +228,8 @@ mod tests {
 
     /// The drill plate's operations through the ABI: the four drilling
     /// operations, and the same count and order as the report's JSON; a
-    /// tilted cylinder is `TW_ERR_UNSUPPORTED` naming the face; a tool
+    /// turned panel's tilted faces meshed and named in the JSON; a removal
+    /// that does not add up `TW_ERR_UNSUPPORTED` naming a face; a tool
     /// file with a negative diameter `TW_ERR_INVALID_CONFIG` with its
     /// line; a negative depth an invalid argument. Out stays NULL on
     /// failure.
@@ -284,12 +285,19 @@ mod tests {
             tw_part_free(plate);
 
             // A turned panel's faces are tilted to the default up: meshed in
-            // the removal, which operations do not layer yet.
-            refused(
-                load("recognition/rib_grid_panel_turned.step"),
-                "removal.unsupported_face",
-                "meshed",
-            );
+            // the removal, layered all the same, the JSON naming them.
+            let turned = load("recognition/rib_grid_panel_turned.step");
+            let mut ops = std::ptr::null_mut();
+            let st = tw_operations(turned, std::ptr::null(), std::ptr::null(), 0.0, &mut ops);
+            assert_eq!(st, tw_status::TW_OK);
+            assert!(tw_operations_count(ops) > 0);
+            let mut json = std::ptr::null_mut();
+            assert_eq!(tw_operations_to_json(ops, &mut json), tw_status::TW_OK);
+            let text = CStr::from_ptr(json).to_str().unwrap().to_string();
+            crate::tw_string_free(json);
+            assert!(text.contains("\"meshed\"") && text.contains("volume_bound_mm3"));
+            tw_operations_free(ops);
+            tw_part_free(turned);
             // A removal that does not add up (NIST STC 06) is refused.
             let path = format!(
                 "{}/../../shared/data/nist/nist_stc_06_asme1_ap242-e3.stp",

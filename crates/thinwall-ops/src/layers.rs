@@ -9,6 +9,7 @@
 
 use geo::{Area, BoundingRect, Contains, Coord, LineString, MultiPolygon, Point, Polygon, Rect};
 use serde::Serialize;
+use thinwall_analysis::boolean;
 use thinwall_removal::pieces::{Facing, Height};
 use thinwall_removal::{outline, slab, Removal};
 
@@ -232,8 +233,36 @@ pub fn section(r: &Removal, z: f64) -> Vec<Polygon<f64>> {
         .iter()
         .flat_map(|b| slab::section(r, b, z).0)
         .collect();
-    outline::union(&pieces, JOIN_SNAP * r.size.max(1.0))
+    join(&pieces, r.size)
 }
+
+/// Sections of blocks joined into one region. Blocks that tile the
+/// section share their edges, which cancel ([`outline::union`], exact to
+/// the snap). Blocks that overlap (a meshed face's triangles crossing an
+/// exact neighbour's height within the deviation; a machining feature's
+/// solids meeting a slanted cut) fold that outline over itself, a field no
+/// boolean reads as its area: those sections are joined by a boolean
+/// union instead.
+pub(crate) fn join(pieces: &[Polygon<f64>], size: f64) -> Vec<Polygon<f64>> {
+    let joined = outline::union(pieces, JOIN_SNAP * size.max(1.0));
+    let region = MultiPolygon::new(joined);
+    let shoelace = region.unsigned_area();
+    let read = boolean::union(&region, &MultiPolygon::new(vec![])).unsigned_area();
+    if (shoelace - read).abs() <= FOLD_SHARE * shoelace.max(1.0) {
+        return region.0;
+    }
+    boolean::union_all(
+        pieces
+            .iter()
+            .map(|p| MultiPolygon::new(vec![p.clone()]))
+            .collect(),
+    )
+    .0
+}
+
+/// A joined outline whose area as a boolean reads it differs from its
+/// shoelace area by more than this share folds over itself.
+const FOLD_SHARE: f64 = 1e-6;
 
 /// The sum of every block's cross-section at `z`, mm² (the joined
 /// section must keep it).

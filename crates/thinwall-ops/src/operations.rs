@@ -27,6 +27,7 @@ use crate::tools::{CuttingTool, ToolLibrary};
 use petgraph::graph::NodeIndex;
 use serde::Serialize;
 use thinwall_analysis::parallel::Work;
+use thinwall_removal::pieces::Meshed;
 use thinwall_removal::Removal;
 
 impl Stage {
@@ -224,6 +225,11 @@ pub struct SetupOperations {
     /// along the plan only).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub other_setup: Vec<thinwall_plan::VolumeId>,
+    /// The removal's faces taken as triangles (tilted or free-form) and
+    /// the volume bound they imply: the layers' sections are exact to
+    /// the machining deviation there.
+    #[serde(skip_serializing_if = "Meshed::is_empty")]
+    pub meshed: Meshed,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -394,6 +400,7 @@ pub(crate) fn assemble(
         plain_travel_mm: travel(&plain),
         rest: rests(&field_tools),
         other_setup: Vec::new(),
+        meshed: Meshed::default(),
         layers,
         field_tools,
         operations,

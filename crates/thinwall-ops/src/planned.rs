@@ -24,7 +24,7 @@ use thinwall_classify::ProductAdjacency;
 use thinwall_plan::features::RemovalFeature;
 use thinwall_plan::Plan;
 use thinwall_removal::pieces::Height;
-use thinwall_removal::{outline, slab};
+use thinwall_removal::slab;
 
 /// A feature's solid as regions and heights.
 struct Solid {
@@ -154,7 +154,7 @@ pub fn by_feature(
                 .iter()
                 .flat_map(|s| slab::between(&s.region, &s.lower, &s.upper, z + tol).0)
                 .collect();
-            let joined = outline::union(&pieces, crate::layers::JOIN_SNAP * size.max(1.0));
+            let joined = crate::layers::join(&pieces, size);
             let fields: Vec<CutterField> = joined
                 .iter()
                 .filter_map(|p| without_slivers(p, tol))

@@ -327,8 +327,13 @@ pub fn select(
     // = section) then compares two booleans, not one number with itself.
     let rest = difference(&s.region, &done);
     let rest_mm2 = rest.unsigned_area();
-    // Less than the disks' polygon error: no rest worth a word.
-    let largest = shares.first().map_or(0.0, |s| s.diameter_mm);
+    // Less than the disks' polygon error: no rest worth a word (a field
+    // no tool enters: the smallest tool's).
+    let largest = shares
+        .first()
+        .map(|s| s.diameter_mm)
+        .or_else(|| mills.last().map(|t| t.diameter_mm))
+        .unwrap_or(0.0);
     let tiny = tiny.max(noise(largest));
     FieldTools {
         adjacency,

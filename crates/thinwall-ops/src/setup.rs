@@ -63,12 +63,10 @@ pub fn plan_setup(
     let size = a.bounding_box().diagonal();
     let removal =
         Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
-    exact_only(&removal.meshed)?;
     let holes = hole_sites(features, &frame, lib);
-    Ok((
-        frame,
-        operations(&removal, lib, axial_depth_mm, &holes, a.work()),
-    ))
+    let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
+    ops.meshed = removal.meshed.clone();
+    Ok((frame, ops))
 }
 
 /// The operations of `a`'s set-up along its `plan`: each machining feature
@@ -85,31 +83,14 @@ pub fn along_plan(
     if let Some(why) = &plan.removal.unavailable {
         return Err(OpsError::NoPlan(why.clone()));
     }
-    exact_only(&plan.removal.meshed)?;
     let stock = geo::Rect::new(
         geo::Coord { x: lo[0], y: lo[1] },
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
     let holes = hole_sites(features, &frame, lib);
-    let ops = crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
+    let mut ops =
+        crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
+    ops.meshed = plan.removal.meshed.clone();
     Ok((frame, ops))
-}
-
-/// Operations are layered on exact faces only: the sections of a meshed
-/// face's blocks do not yet add up to what is cleared, rest and drilled
-/// (a turned rib-grid panel is off by 3e-4 of a section), so a removal
-/// with one is refused naming it rather than given a sheet that does not
-/// add up.
-fn exact_only(meshed: &thinwall_removal::pieces::Meshed) -> Result<(), OpsError> {
-    match meshed.faces.first() {
-        Some(&step_id) => Err(OpsError::Removal(RemovalError::UnsupportedFace {
-            step_id,
-            reason: format!(
-                "meshed in the removal (one of {} such faces: tilted or free-form); operations are layered on exact faces only, for now",
-                meshed.faces.len()
-            ),
-        })),
-        None => Ok(()),
-    }
 }

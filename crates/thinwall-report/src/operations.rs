@@ -79,6 +79,18 @@ impl OperationsReport {
             self.tools.source,
             self.tools.tools.len()
         );
+        if !r.meshed.is_empty() {
+            let m = &r.meshed;
+            let _ = writeln!(
+                s,
+                "meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): sections there exact to that deviation, the removal within ±{:.3} mm³",
+                m.faces.len(),
+                m.triangles,
+                m.deviation_mm,
+                m.area_mm2,
+                m.volume_bound_mm3
+            );
+        }
         let _ = writeln!(
             s,
             "{:>4}  {:<11} {:<8} {:>6}  {:<7} {:>7}  {:>17}  {:>12}  {:>26}  {:>13}  {:>8}  after",
@@ -105,7 +117,7 @@ impl OperationsReport {
                 l.fields
                     .iter()
                     .zip(fts)
-                    .filter(|(f, ft)| f.too_small && ft.drilled.is_none())
+                    .filter(|(f, ft)| f.too_small && ft.drilled.is_none() && !ft.rest.is_empty())
                     .count()
             })
             .sum();
