@@ -93,6 +93,9 @@ typedef enum tw_stage {
   TW_STAGE_DRILL = 3,
   // Along the walls: a tool's boundary region at finishing conditions.
   TW_STAGE_FINISH_WALLS = 4,
+  // A pocket's walls, corners and floor fillet contoured by a tool
+  // chosen by its corner radius and floor fillet.
+  TW_STAGE_FINISH_RADII = 5,
 } tw_stage;
 
 // What a call did. Values are never reused for another meaning.

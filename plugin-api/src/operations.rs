@@ -35,6 +35,9 @@ pub enum tw_stage {
     TW_STAGE_DRILL = 3,
     /// Along the walls: a tool's boundary region at finishing conditions.
     TW_STAGE_FINISH_WALLS = 4,
+    /// A pocket's walls, corners and floor fillet contoured by a tool
+    /// chosen by its corner radius and floor fillet.
+    TW_STAGE_FINISH_RADII = 5,
 }
 
 /// The library of `tools_toml` (UTF-8 TOML text as the `--tools` file), or
@@ -177,6 +180,7 @@ pub unsafe extern "C" fn tw_operation(
                 Stage::Finish => tw_stage::TW_STAGE_FINISH,
                 Stage::FinishWalls => tw_stage::TW_STAGE_FINISH_WALLS,
                 Stage::Drill => tw_stage::TW_STAGE_DRILL,
+                Stage::FinishRadii => tw_stage::TW_STAGE_FINISH_RADII,
             };
         }
         put(diameter_mm, o.diameter_mm);
@@ -226,8 +230,8 @@ mod tests {
         tw_part_free(part);
     }
 
-    /// The drill plate's operations through the ABI: the four drilling
-    /// operations, and the same count and order as the report's JSON; a
+    /// The drill plate's operations through the ABI: the drilling
+    /// operations and their spots, and the same count and order as the report's JSON; a
     /// turned panel's tilted faces meshed and named in the JSON; a removal
     /// that does not add up `TW_ERR_UNSUPPORTED` naming a face; a tool
     /// file with a negative diameter `TW_ERR_INVALID_CONFIG` with its
@@ -258,7 +262,9 @@ mod tests {
                 assert_eq!(st, tw_status::TW_OK);
                 drills += usize::from(stage == tw_stage::TW_STAGE_DRILL);
             }
-            assert_eq!(drills, 5);
+            // Five drilling operations, and a spot before the drills at
+            // each of the two levels holes are entered from.
+            assert_eq!(drills, 7);
             let name = CStr::from_ptr(tw_operation_tool(ops, 0)).to_str().unwrap();
             let first = &(&*ops).report.setup.operations[0];
             assert_eq!(name, first.tool);

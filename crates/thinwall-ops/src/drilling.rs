@@ -32,6 +32,16 @@ pub enum DrillKind {
     /// [`HELICAL_MAX_SHARE`] of the hole's diameter goes down a helix
     /// ([`HELIX_RAMP_DEG`]) and takes it whole.
     Helical,
+    /// A counterbore (a bore with a flat shoulder below it): an end mill
+    /// of its diameter plunges (a drill's point would cone the shoulder).
+    Counterbore,
+    /// A spot drill marks the centre of a hole a drill makes, first.
+    Spot,
+    /// A countersink cutter of the cone's angle cuts the seat, after the
+    /// drill.
+    Countersink,
+    /// A 90° countersink breaks the hole's edge, after the drill.
+    Chamfer,
 }
 
 impl DrillKind {
@@ -41,6 +51,10 @@ impl DrillKind {
             DrillKind::Blind => "blind",
             DrillKind::Peck => "peck",
             DrillKind::Helical => "helical",
+            DrillKind::Counterbore => "counterbore",
+            DrillKind::Spot => "spot",
+            DrillKind::Countersink => "countersink",
+            DrillKind::Chamfer => "chamfer",
         }
     }
 }
@@ -134,6 +148,8 @@ struct TopBore {
     depth: f64,
     below: f64,
     last: bool,
+    /// A narrower bore follows: its bottom is a flat shoulder.
+    shoulder: bool,
 }
 
 /// The bores a tool from the top reaches, each with its site id: a plain
@@ -149,6 +165,7 @@ fn bores_from_top(m: &MachiningFeature, down: bool) -> Vec<(String, TopBore)> {
                 depth: m.depth,
                 below: 0.0,
                 last: true,
+                shoulder: false,
             },
         )]
     };
@@ -163,11 +180,12 @@ fn bores_from_top(m: &MachiningFeature, down: bool) -> Vec<(String, TopBore)> {
     let n = bores.len();
     let (mut below, mut narrowest) = (0.0, f64::INFINITY);
     let mut out = Vec::new();
-    for (k, (i, b)) in bores.into_iter().enumerate() {
+    for (k, &(i, b)) in bores.iter().enumerate() {
         if b.diameter > narrowest + DRILL_MATCH_MM {
             break;
         }
         narrowest = narrowest.min(b.diameter);
+        let next = bores.get(k + 1).map(|(_, n)| n.diameter);
         out.push((
             format!("{}.{}", m.id, i + 1),
             TopBore {
@@ -175,6 +193,7 @@ fn bores_from_top(m: &MachiningFeature, down: bool) -> Vec<(String, TopBore)> {
                 depth: b.depth,
                 below,
                 last: k + 1 == n,
+                shoulder: next.is_some_and(|d| d < b.diameter - DRILL_MATCH_MM),
             },
         ));
         below += b.depth;
@@ -200,6 +219,21 @@ fn drill_for<'t>(
     } else {
         DrillKind::Blind
     };
+    if bore.shoulder {
+        // A flat shoulder: an end mill of its diameter plunges, or a
+        // narrower one spirals; never a drill's point.
+        let plunge = mills
+            .iter()
+            .find(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM);
+        let helical = mills.iter().find(|t| {
+            t.diameter_mm <= HELICAL_MAX_SHARE * diameter && 2.0 * t.diameter_mm >= diameter
+        });
+        return match (plunge, helical) {
+            (Some(t), _) => (DrillKind::Counterbore, Some(*t)),
+            (None, Some(t)) => (DrillKind::Helical, Some(*t)),
+            (None, None) => (DrillKind::Counterbore, None),
+        };
+    }
     let drill = drills
         .iter()
         .filter(|t| (t.diameter_mm - diameter).abs() <= DRILL_MATCH_MM)

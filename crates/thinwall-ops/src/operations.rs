@@ -38,6 +38,7 @@ impl Stage {
             Stage::FinishWalls => "finish_walls",
             Stage::Finish => "finish",
             Stage::Drill => "drill",
+            Stage::FinishRadii => "finish_radii",
         }
     }
 
@@ -104,6 +105,12 @@ pub struct Operation {
     pub drill: Option<DrillKind>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub holes: Vec<String>,
+    /// Finishing by radii: the machining features (`M…`) whose walls and
+    /// floor fillets it contours, or (`corners`) whose corners alone.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub finishes: Vec<String>,
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub corners: bool,
 }
 
 impl Operation {
@@ -132,6 +139,8 @@ impl Operation {
             after: Vec::new(),
             drill: None,
             holes: Vec::new(),
+            finishes: Vec::new(),
+            corners: false,
         }
     }
 
@@ -221,6 +230,14 @@ pub struct SetupOperations {
     pub field_tools: Vec<Vec<FieldTools>>,
     pub operations: Vec<Operation>,
     pub rest: Vec<Rest>,
+    /// The pockets, slots, steps and passages finished by their corner
+    /// radius and floor fillet, with their tools and rests.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub radius_finishes: Vec<crate::finishing::RadiusFinish>,
+    /// The holes' stages besides their bores (spot, countersink, chamfer,
+    /// blend), each with its tool or why none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub hole_stages: Vec<crate::hole_stages::HoleStage>,
     /// The plan's machining features left to another set-up (operations
     /// along the plan only).
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -400,6 +417,8 @@ pub(crate) fn assemble(
         plain_travel_mm: travel(&plain),
         rest: rests(&field_tools),
         other_setup: Vec::new(),
+        radius_finishes: Vec::new(),
+        hole_stages: Vec::new(),
         meshed: Meshed::default(),
         layers,
         field_tools,
@@ -532,7 +551,7 @@ fn draft<'a>(
             Stage::SemiFinish => !s.first && s.cleared_mm2 - walls > 0.0,
             Stage::FinishWalls => walls > tiny,
             Stage::Finish => s.floor_mm2 > tiny && !layer.floors.is_empty(),
-            Stage::Drill => false,
+            Stage::Drill | Stage::FinishRadii => false,
         };
         if !works {
             continue;
@@ -694,6 +713,21 @@ impl Draft<'_> {
             after: Vec::new(),
             drill: self.drill,
             holes: holes.iter().map(|h| h.id.clone()).collect(),
+            finishes: Vec::new(),
+            corners: false,
         }
     }
+}
+
+/// The sheet's time and tool changes over its operations as they now
+/// stand (the plain order's changes grow by as many as the chosen's).
+pub(crate) fn recount(ops: &mut SetupOperations) {
+    let changes = ops
+        .operations
+        .windows(2)
+        .filter(|w| w[0].tool != w[1].tool)
+        .count();
+    ops.plain_tool_changes += changes.saturating_sub(ops.tool_changes);
+    ops.tool_changes = changes;
+    ops.time_min = ops.operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0;
 }

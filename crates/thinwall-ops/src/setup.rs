@@ -66,6 +66,7 @@ pub fn plan_setup(
     let holes = hole_sites(features, &frame, lib);
     let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
     ops.meshed = removal.meshed.clone();
+    finish_by_radii(&mut ops, a, features, &frame, lib);
     Ok((frame, ops))
 }
 
@@ -92,5 +93,23 @@ pub fn along_plan(
     let mut ops =
         crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
     ops.meshed = plan.removal.meshed.clone();
+    finish_by_radii(&mut ops, a, features, &frame, lib);
     Ok((frame, ops))
+}
+
+/// The features finished by their radii and the holes' stages, their
+/// operations put in.
+fn finish_by_radii(
+    ops: &mut SetupOperations,
+    a: &PartAnalysis,
+    features: &[MachiningFeature],
+    frame: &Frame,
+    lib: &ToolLibrary,
+) {
+    let finishes = crate::finishing::radius_finishes(a, features, frame, lib);
+    crate::finishing::append(ops, &finishes, lib);
+    ops.radius_finishes = finishes;
+    let stages = crate::hole_stages::hole_stages(features, frame, lib, &ops.holes);
+    crate::hole_stages::place(ops, &stages, lib);
+    ops.hole_stages = stages;
 }

@@ -20,6 +20,9 @@ pub enum Stage {
     /// A floor's finishing layer.
     Finish,
     Drill,
+    /// A pocket's walls, corners and floor fillet contoured by a tool
+    /// chosen by its radii (`finishing.rs`), after its layers' milling.
+    FinishRadii,
 }
 
 /// An operation's share of Popma's regions, mm² (they add up to its

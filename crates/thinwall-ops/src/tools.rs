@@ -11,8 +11,40 @@ pub const DEFAULT_TOOLS: &str = include_str!("../tools/default.toml");
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ToolKind {
+    /// Roughs, semi-finishes and finishes the layers (its corner radius a
+    /// small protective one).
     FlatEndMill,
+    /// An end mill whose corner radius forms a floor fillet: it finishes
+    /// pockets by their radii only (never in the roughing cascade).
+    BullNoseEndMill,
     Drill,
+    /// A short stiff drill that spots a hole's centre before the drill
+    /// (its point angle: 90° leaves a chamfer-ready spot).
+    SpotDrill,
+    /// A cone cutter for countersinks, and at 90° for a hole's chamfered
+    /// edge (its point angle is the cone's included angle; its diameter
+    /// the widest it cuts).
+    Countersink,
+}
+
+impl ToolKind {
+    /// Cuts with its side and a flat or rounded bottom (end mills), as
+    /// opposed to a point.
+    pub fn is_end_mill(self) -> bool {
+        matches!(self, ToolKind::FlatEndMill | ToolKind::BullNoseEndMill)
+    }
+
+    /// Its order in the library: end mills, bull-noses, drills, spot
+    /// drills, countersinks.
+    fn rank(self) -> u8 {
+        match self {
+            ToolKind::FlatEndMill => 0,
+            ToolKind::BullNoseEndMill => 1,
+            ToolKind::Drill => 2,
+            ToolKind::SpotDrill => 3,
+            ToolKind::Countersink => 4,
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -180,10 +212,15 @@ impl ToolLibrary {
                 message: "no [[tool]] in the file".to_string(),
             });
         }
+        // End mills largest first, pointed tools smallest first.
         tools.sort_by(|a, b| {
-            let key = |t: &CuttingTool| match t.kind {
-                ToolKind::FlatEndMill => (0, -t.diameter_mm),
-                ToolKind::Drill => (1, t.diameter_mm),
+            let key = |t: &CuttingTool| {
+                let d = if t.kind.is_end_mill() {
+                    -t.diameter_mm
+                } else {
+                    t.diameter_mm
+                };
+                (t.kind.rank(), d)
             };
             let (ka, kb) = (key(a), key(b));
             ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
@@ -201,9 +238,22 @@ impl ToolLibrary {
             .filter(|t| t.kind == ToolKind::FlatEndMill)
     }
 
+    /// The end mills that finish by the part's radii: flat ones and
+    /// bull-noses, largest first.
+    pub fn finishing_mills(&self) -> Vec<&CuttingTool> {
+        let mut v: Vec<&CuttingTool> = self.tools.iter().filter(|t| t.kind.is_end_mill()).collect();
+        v.sort_by(|a, b| b.diameter_mm.total_cmp(&a.diameter_mm));
+        v
+    }
+
     /// The drills, smallest first.
     pub fn drills(&self) -> impl Iterator<Item = &CuttingTool> {
-        self.tools.iter().filter(|t| t.kind == ToolKind::Drill)
+        self.of_kind(ToolKind::Drill)
+    }
+
+    /// The tools of one kind, in the library's order.
+    pub fn of_kind(&self, kind: ToolKind) -> impl Iterator<Item = &CuttingTool> {
+        self.tools.iter().filter(move |t| t.kind == kind)
     }
 }
 
@@ -226,8 +276,10 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
     let vc = positive(raw.cutting_speed_m_min, "cutting_speed_m_min")?;
     let fz = positive(raw.feed_per_tooth_mm, "feed_per_tooth_mm")?;
     let mill_only = |v: Option<f64>, key: &str| -> Result<(), String> {
-        match (raw.kind, v) {
-            (ToolKind::Drill, Some(_)) => Err(format!("`{key}` is for end mills, not drills")),
+        match (raw.kind.is_end_mill(), v) {
+            (false, Some(_)) => Err(format!(
+                "`{key}` is for end mills, not pointed tools (drills, spot drills, countersinks)"
+            )),
             _ => Ok(()),
         }
     };
@@ -237,10 +289,14 @@ fn check(raw: RawTool, line: usize) -> Result<CuttingTool, String> {
     mill_only(raw.finish_radial_depth_mm, "finish_radial_depth_mm")?;
     mill_only(raw.finish_axial_depth_mm, "finish_axial_depth_mm")?;
     mill_only(raw.full_cut_axial_depth_mm, "full_cut_axial_depth_mm")?;
-    let (corner, a_p, a_e) = match raw.kind {
-        ToolKind::FlatEndMill => end_mill_cut(&raw, d, cutting)?,
-        ToolKind::Drill => drill_cut(&raw, d, cutting)?,
+    let (corner, a_p, a_e) = if raw.kind.is_end_mill() {
+        end_mill_cut(&raw, d, cutting)?
+    } else {
+        drill_cut(&raw, d, cutting)?
     };
+    if raw.kind == ToolKind::BullNoseEndMill && corner <= 0.0 {
+        return Err("a bull-nose end mill needs a `corner_radius` above 0".to_string());
+    }
     let (finish_a_e, finish_a_p, full_a_p) = finishing(&raw, d, a_p, a_e)?;
     Ok(CuttingTool {
         name: raw.name,
@@ -306,11 +362,12 @@ fn end_mill_cut(raw: &RawTool, d: f64, cutting: f64) -> Result<(f64, f64, f64), 
     Ok((corner, a_p, a_e))
 }
 
-/// A drill's cut: no corner radius, its cutting length deep, its diameter wide.
+/// A pointed tool's cut (drill, spot drill, countersink): no corner
+/// radius, its cutting length deep, its diameter wide.
 fn drill_cut(raw: &RawTool, d: f64, cutting: f64) -> Result<(f64, f64, f64), String> {
     let angle = raw
         .point_angle_deg
-        .ok_or("`point_angle_deg` is missing (a drill needs it)")?;
+        .ok_or("`point_angle_deg` is missing (a pointed tool needs it)")?;
     if !(angle.is_finite() && angle > 0.0 && angle < 180.0) {
         return Err(format!(
             "`point_angle_deg` must lie strictly between 0 and 180, got {angle}"

@@ -134,6 +134,12 @@ impl OperationsReport {
                 x.width_mm
             );
         }
+        for f in &r.radius_finishes {
+            radius_line(&mut s, f);
+        }
+        for h in &r.hole_stages {
+            hole_stage_line(&mut s, h);
+        }
         if !r.other_setup.is_empty() {
             let _ = writeln!(
                 s,
@@ -167,7 +173,16 @@ fn operation_line(s: &mut String, o: &thinwall_ops::operations::Operation) {
         (Some(a), Some(b), _) if a.layer == b.layer => format!("{}", a.layer + 1),
         (Some(a), Some(b), _) => format!("{}-{}", a.layer + 1, b.layer + 1),
         (_, _, Some(kind)) => kind.name().to_string(),
+        _ if o.corners => "corners".to_string(),
+        _ if !o.finishes.is_empty() => "contour".to_string(),
         _ => "-".to_string(),
+    };
+    // A finish by radii names the machining features it finishes.
+    let feature = match (&o.feature, o.finishes.as_slice()) {
+        (Some(f), _) => f.to_string(),
+        (None, []) => "-".to_string(),
+        (None, [one]) => one.clone(),
+        (None, [first, rest @ ..]) => format!("{first}+{}", rest.len()),
     };
     let _ = writeln!(
             s,
@@ -176,7 +191,7 @@ fn operation_line(s: &mut String, o: &thinwall_ops::operations::Operation) {
             o.stage.name(),
             o.tool,
             o.diameter_mm,
-            o.feature.as_deref().unwrap_or("-"),
+            feature,
             layers,
             o.z_top_mm,
             o.z_bottom_mm,
@@ -185,4 +200,67 @@ fn operation_line(s: &mut String, o: &thinwall_ops::operations::Operation) {
             o.volume_mm3,
             o.time_min
         );
+}
+
+/// A feature finished by its radii: its radii, the bound, its tools and
+/// what no tool finishes.
+fn radius_line(s: &mut String, f: &thinwall_ops::finishing::RadiusFinish) {
+    use thinwall_ops::finishing::{Bound, RestCause};
+    let mm = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.2}"));
+    let bound = match f.bounded_by {
+        Bound::CornerRadius => "2 x its corner radius",
+        Bound::Width => "its floor's width",
+    };
+    let tool = |t: &Option<String>| t.clone().unwrap_or_else(|| "none".to_string());
+    let _ = writeln!(
+        s,
+        "radii: {} R {} / r {}, {:.2} deep: tool <= {:.2} ({bound}), corner radius <= {}; walls and fillet {}, corners {}",
+        f.feature,
+        mm(f.corner_radius_mm),
+        mm(f.floor_fillet_mm),
+        f.depth_mm,
+        f.largest_tool_mm,
+        mm(f.floor_fillet_mm),
+        tool(&f.walls),
+        tool(&f.corners)
+    );
+    for r in &f.rest {
+        let why = match r.cause {
+            RestCause::Corner => "its corners: no tool narrow enough",
+            RestCause::FloorFillet => "its floor fillet: no tool's corner radius small enough",
+            RestCause::Depth => "its walls below the tool's flutes: no tool long enough",
+        };
+        let _ = writeln!(
+            s,
+            "rest: {} {why}: {:.2} mm² of its surface{} left by {}",
+            f.feature,
+            r.area_mm2,
+            r.volume_mm3
+                .map_or(String::new(), |v| format!(", {v:.2} mm³")),
+            r.tool.as_deref().unwrap_or("any tool")
+        );
+    }
+}
+
+/// A hole's stage: what it cuts and its tool, or why none.
+fn hole_stage_line(s: &mut String, h: &thinwall_ops::hole_stages::HoleStage) {
+    use thinwall_ops::hole_stages::HoleStep;
+    let what = match h.step {
+        HoleStep::Spot => "spot",
+        HoleStep::Countersink => "countersink",
+        HoleStep::Chamfer => "chamfer",
+        HoleStep::Blend => "blended edge",
+    };
+    let angle = h.angle_deg.map_or(String::new(), |a| format!(" {a:.0}°"));
+    let end = if h.at_exit { " at its exit" } else { "" };
+    let by = match (&h.tool, &h.missing) {
+        (Some(t), _) => t.clone(),
+        (None, Some(why)) => format!("no tool: {why}"),
+        (None, None) => "no tool".to_string(),
+    };
+    let _ = writeln!(
+        s,
+        "hole {}: {what}{angle} Ø{:.2}{end}, {:.2} deep: {by}",
+        h.hole, h.diameter_mm, h.depth_mm
+    );
 }
