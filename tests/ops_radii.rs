@@ -157,13 +157,14 @@ fn pocket_errors(
             _ => {}
         }
         match &f.walls {
-            Some(t) if tool(t).corner_radius_mm > p.floor_fillet + TOL => {
-                if rest(RestCause::FloorFillet).is_none_or(|r| r.area_mm2 <= 0.0) {
-                    errors.push(format!(
-                        "{what}: {} fillet r {} by {t}, no rest",
-                        f.feature, p.floor_fillet
-                    ));
-                }
+            Some(t)
+                if tool(t).corner_radius_mm > p.floor_fillet + TOL
+                    && rest(RestCause::FloorFillet).is_none_or(|r| r.area_mm2 <= 0.0) =>
+            {
+                errors.push(format!(
+                    "{what}: {} fillet r {} by {t}, no rest",
+                    f.feature, p.floor_fillet
+                ));
             }
             None => errors.push(format!("{what}: {} no walls tool", f.feature)),
             _ => {}

@@ -759,14 +759,14 @@
       }
       viewer.render();
     }
-    const what = (o) => o.stage.replace('_', '-') + ' · ' + o.tool + (o.feature ? ' · ' + o.feature : '') + ' · ' + fmt(o.z_top_mm, 1) + '..' + fmt(o.z_bottom_mm, 1) + ' · ' + fmt(o.time_min) + ' min';
+    const what = (o) => o.stage.replace('_', '-') + ' · ' + o.tool + (o.feature ? ' · ' + o.feature : '') + ((o.finishes || []).length ? ' · ' + o.finishes.join(' ') + (o.corners ? ' (corners)' : '') : '') + ' · ' + fmt(o.z_top_mm, 1) + '..' + fmt(o.z_bottom_mm, 1) + ' · ' + fmt(o.time_min) + ' min';
     return {
       name: 'Operations',
       enter() {
         part.group.visible = true;
         part.opacity(0.28);
         part.paint(() => colour('other'));
-        legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (walls)', P['ops.finish_walls']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']]]);
+        legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (walls)', P['ops.finish_walls']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']], ['finish by radii', P['ops.finish_radii']]]);
         this.list();
         if (!selected) details('Operations', [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['tool changes', rep.setup.tool_changes + ' (' + rep.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(rep.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(rep.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (rep.setup.other_setup || []).join(' ')], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
         viewer.render();
@@ -782,7 +782,7 @@
         const g = o.regions;
         const table = el('table', null, el('tr', null, el('td', null, 'layer'), el('td', null, 'z mm · area mm² · volume mm³ · min')));
         for (const p of o.passes) table.append(el('tr', null, el('td', null, String(p.layer + 1)), el('td', null, fmt(p.z_top_mm, 1) + '..' + fmt(p.z_bottom_mm, 1) + ' · ' + fmt(p.area_mm2, 1) + ' · ' + fmt(p.volume_mm3, 0) + ' · ' + fmt(p.time_min))));
-        details('Step ' + o.step + ' — ' + o.stage.replace('_', '-') + ' with ' + o.tool, [['tool', o.tool + ', Ø' + fmt(o.diameter_mm, 1) + ' mm'], ['feature', o.feature], ['z', fmt(o.z_top_mm) + ' .. ' + fmt(o.z_bottom_mm) + ' mm'], ['area', fmt(o.area_mm2, 1) + ' mm²'], ['regions', g ? 'boundary ' + fmt(g.boundary_mm2, 1) + ' · full cut ' + fmt(g.full_cut_mm2, 1) + ' · roughing ' + fmt(g.roughing_mm2, 1) + ' mm²' : null], ['adjacency', o.adjacency.replace(/_/g, ' ')], ['volume', fmt(o.volume_mm3, 0) + ' mm³'], ['time', fmt(o.time_min) + ' min'], ['drilling', o.drill ? o.drill + ': ' + o.holes.join(' ') : null], ['after steps', o.after.join(', ') || '—']], o.passes.length ? [el('h3', null, 'Passes'), table] : []);
+        details('Step ' + o.step + ' — ' + o.stage.replace('_', '-') + ' with ' + o.tool, [['tool', o.tool + ', Ø' + fmt(o.diameter_mm, 1) + ' mm'], ['feature', o.feature], ['z', fmt(o.z_top_mm) + ' .. ' + fmt(o.z_bottom_mm) + ' mm'], ['area', fmt(o.area_mm2, 1) + ' mm²'], ['regions', g ? 'boundary ' + fmt(g.boundary_mm2, 1) + ' · full cut ' + fmt(g.full_cut_mm2, 1) + ' · roughing ' + fmt(g.roughing_mm2, 1) + ' mm²' : null], ['adjacency', o.adjacency.replace(/_/g, ' ')], ['volume', fmt(o.volume_mm3, 0) + ' mm³'], ['time', fmt(o.time_min) + ' min'], ['drilling', o.drill ? o.drill + ': ' + o.holes.join(' ') : null], ['finishes', (o.finishes || []).length ? o.finishes.join(' ') + (o.corners ? ': their corners' : ': walls, corners and floor fillets') : null], ['after steps', o.after.join(', ') || '—']], o.passes.length ? [el('h3', null, 'Passes'), table] : []);
       },
       pickFace(i) { faceInfo(i); },
     };

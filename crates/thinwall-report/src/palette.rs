@@ -76,12 +76,13 @@ pub fn table() -> BTreeMap<String, String> {
     for k in MachiningKind::ALL {
         m.insert(format!("machining.{}", k.name()), hex(machining(*k)));
     }
-    let named: [(&str, [u8; 3]); 24] = [
+    let named: [(&str, [u8; 3]); 25] = [
         ("ops.rough", [60, 120, 215]),
         ("ops.semi_finish", [150, 90, 200]),
         ("ops.finish_walls", [40, 160, 170]),
         ("ops.finish", [60, 170, 110]),
         ("ops.drill", [220, 120, 40]),
+        ("ops.finish_radii", [200, 60, 120]),
         ("access.advisable", [90, 190, 110]),
         ("reach.whole", [90, 190, 110]),
         ("reach.most", [190, 200, 80]),
