@@ -436,3 +436,65 @@ fn holes_get_their_spot_countersink_and_chamfer_in_any_pose() {
     assert!(errors.is_empty(), "{errors:#?}");
     assert!(cones >= 4 && named >= 4, "{cones} {named}");
 }
+
+/// One answer to "which tool fits" (issue 38): on every pocketed panel and
+/// plate of holes, each pocket and hole the set-up's tool enters gets the
+/// same largest tool from `recognize` (`largest_tool_diameter`), `access`
+/// (its feature tool, the recognizer's bound where no face's reach is
+/// narrower) and `operations` (its finish by radii), with the same bound.
+#[test]
+fn recognize_access_and_operations_give_one_largest_tool() {
+    use thinwall_study::{AccessRequest, LoadedPart, OperationsRequest, RecognizeRequest, Study};
+    let mut parts = pocket_parts();
+    parts.extend(common::generated_parts("THINWALL_HOLES_DIR", "holes"));
+    let (mut same, mut finished) = (0, 0);
+    for path in parts {
+        let what = path.display().to_string();
+        let loaded = LoadedPart::read_file(&path).unwrap();
+        let study = Study::new(&loaded);
+        let rec = thinwall_study::recognize(&study, &RecognizeRequest::default()).unwrap();
+        let setup = RecognizeRequest::default().setup;
+        let acc = thinwall_study::access(&study, &AccessRequest::new(setup.clone())).unwrap();
+        let ops = thinwall_study::operations(&study, &OperationsRequest::new(setup)).ok();
+        for m in &rec.outcome.machining {
+            let Some(fit) = m.largest_tool_diameter else {
+                continue;
+            };
+            let Some(t) = acc.report.features.iter().find(|t| t.feature == m.id) else {
+                continue;
+            };
+            // Reached from up at all (the other side's pockets are not).
+            let Some(got) = t.largest_tool_mm else {
+                continue;
+            };
+            assert!(
+                (got - fit).abs() <= TOL && t.bound == m.tool_bound,
+                "{what}: {}: access Ø{got} ({:?}), recognizer Ø{fit} ({:?})",
+                m.id,
+                t.bound,
+                m.tool_bound
+            );
+            same += 1;
+            let finish = ops.as_ref().and_then(|o| {
+                o.report
+                    .setup
+                    .radius_finishes
+                    .iter()
+                    .find(|f| f.feature == m.id.to_string())
+            });
+            if let Some(f) = finish {
+                assert!(
+                    (f.largest_tool_mm - fit).abs() <= TOL && Some(f.bounded_by) == m.tool_bound,
+                    "{what}: {}: operations Ø{} vs Ø{fit}",
+                    m.id,
+                    f.largest_tool_mm
+                );
+                finished += 1;
+            }
+        }
+    }
+    eprintln!(
+        "ONE ANSWER {same} features alike in recognize and access, {finished} in operations too"
+    );
+    assert!(same >= 40 && finished >= 12, "{same} {finished}");
+}

@@ -72,9 +72,20 @@ pub(crate) fn attach(
     m.corner_radius = measured.corners.first().copied();
     m.corner_radii = measured.corners;
     m.floor_fillet = measured.floor.first().copied();
+    // The floor's widest circle takes a tool that much wider whose corner
+    // radius sits in the fillet all round (a bull-nose of the fillet's
+    // radius).
+    let width = m
+        .largest_tool_diameter
+        .filter(|_| m.tool_bound == Some(crate::ToolBound::Width))
+        .map(|d| d + 2.0 * m.floor_fillet.unwrap_or(0.0));
+    m.largest_tool_diameter = width;
     if let Some(r) = m.corner_radius {
         // A tool wider than the corner's diameter leaves the corner uncut.
-        m.largest_tool_diameter = Some(m.largest_tool_diameter.map_or(2.0 * r, |d| d.min(2.0 * r)));
+        if width.is_none_or(|d| 2.0 * r <= d) {
+            m.largest_tool_diameter = Some(2.0 * r);
+            m.tool_bound = Some(crate::ToolBound::CornerRadius);
+        }
     }
 }
 

@@ -273,6 +273,7 @@ fn shape_hole(
         .map(|b| b.diameter)
         .reduce(f64::min)
         .or(m.largest_tool_diameter);
+    m.tool_bound = Some(crate::ToolBound::Bore);
     m.profile = match (&form.entry, form.bores.len()) {
         (Some(HoleEnd::Countersink { .. }), _) => Profile::Countersunk,
         (_, 2) => Profile::Counterbored,

@@ -44,6 +44,19 @@ mod solid;
 pub mod stock;
 
 pub use holes::{Bore, HoleEnd, HoleForm, HoleTip};
+
+/// What bounds a feature's largest tool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ToolBound {
+    /// Twice its smallest corner radius.
+    CornerRadius,
+    /// Its floor's (or cross-section's) widest circle, widened by a floor
+    /// fillet a bull-nose's corner sits in.
+    Width,
+    /// A hole's narrowest bore.
+    Bore,
+}
 pub use options::{MachiningError, Options, StockSpec};
 pub use patterns::{hole_patterns, HolePattern, Layout};
 pub use stock::Stock;
@@ -126,9 +139,15 @@ pub struct MachiningFeature {
     pub hole: Option<HoleForm>,
     /// Largest tool diameter that fits the floor (or the cross-section of a
     /// passage or hole) and its corners, mm; absent when there is no floor
-    /// to measure.
+    /// to measure. With a floor fillet r, for an end mill whose corner
+    /// radius is r (a bull-nose, its corner in the fillet: the floor's
+    /// widest circle plus 2r); its corners bound it to 2R. The one answer
+    /// the access layer and the operations take (issue 38).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub largest_tool_diameter: Option<f64>,
+    /// What bounds `largest_tool_diameter`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tool_bound: Option<ToolBound>,
     /// Whether the set-up's tool (along up, within its tilt limit) reaches
     /// it along its direction; absent when no set-up was given, and for
     /// blends and chamfers.
@@ -190,6 +209,7 @@ impl MachiningFeature {
             wall_draft_deg: None,
             hole: None,
             largest_tool_diameter: None,
+            tool_bound: None,
             reachable: None,
             related: vec![],
         }
@@ -636,6 +656,7 @@ fn depression_feature(
     } else {
         a.sizes_across(group, &dir)
     };
+    let largest = largest_tool(a, kind, &radii_v, &bottom);
     MachiningFeature {
         through,
         catalog,
@@ -659,7 +680,14 @@ fn depression_feature(
                 let p = c.origin + dir * (lo - c.origin.coords.dot(&dir));
                 [p.x, p.y, p.z]
             }),
-        largest_tool_diameter: largest_tool(a, kind, &radii_v, &bottom),
+        largest_tool_diameter: largest,
+        tool_bound: largest.map(|_| {
+            if kind == MachiningKind::Hole {
+                ToolBound::Bore
+            } else {
+                ToolBound::Width
+            }
+        }),
         radii: radii_v,
         ..MachiningFeature::on_faces(a, kind, profile, whole, &dir)
     }

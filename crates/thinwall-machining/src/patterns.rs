@@ -338,6 +338,7 @@ mod tests {
             wall_draft_deg: None,
             hole: None,
             largest_tool_diameter: Some(6.0),
+            tool_bound: Some(crate::ToolBound::Bore),
             reachable: None,
             related: vec![],
         }

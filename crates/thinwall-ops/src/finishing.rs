@@ -9,7 +9,8 @@
 //! its walls, corners and floor fillet, with the end mill (flat or
 //! bull-nose) that
 //! - is no wider than the feature allows (2R at its corners, its floor's
-//!   width: the recognizer's `largest_tool_diameter`, the one answer),
+//!   width: the recognizer's `largest_tool_diameter` and `tool_bound`, the
+//!   one answer access gives too),
 //! - has a corner radius no larger than r (a bull-nose with r forms the
 //!   fillet in the contour; a smaller one contours it), and
 //! - has flutes as long as the feature is deep,
@@ -27,20 +28,10 @@ use crate::tools::{CuttingTool, ToolLibrary};
 use serde::Serialize;
 use thinwall_analysis::{MachiningKind, PartAnalysis};
 use thinwall_geom::{Frame, Surface, Vector3};
-use thinwall_machining::MachiningFeature;
+use thinwall_machining::{MachiningFeature, ToolBound};
 
 /// Two radii or diameters closer than this are equal, mm.
 pub const RADIUS_MATCH_MM: f64 = 1e-3;
-
-/// What a finishing tool may be, and what bounds it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Bound {
-    /// Twice the smallest corner radius.
-    CornerRadius,
-    /// The floor's (or cross-section's) widest circle.
-    Width,
-}
 
 /// Why part of a feature is left unfinished.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -86,7 +77,7 @@ pub struct RadiusFinish {
     /// The widest tool it allows (the recognizer's bound), mm, and what
     /// bounds it.
     pub largest_tool_mm: f64,
-    pub bounded_by: Bound,
+    pub bounded_by: ToolBound,
     /// The widest tool its walls and floor fillet allow, corners aside
     /// (the floor's widest circle, widened by the fillet a bull-nose's
     /// corner sits in), mm.
@@ -174,10 +165,7 @@ fn finish(
         .map(|f| a.props(f).area)
         .sum();
     let depth = m.depth.max(0.0);
-    let bounded_by = match m.corner_radius {
-        Some(r) if 2.0 * r <= largest + RADIUS_MATCH_MM => Bound::CornerRadius,
-        _ => Bound::Width,
-    };
+    let bounded_by = m.tool_bound?;
     let mut f = RadiusFinish {
         feature: m.id.to_string(),
         corner_radius_mm: m.corner_radius,

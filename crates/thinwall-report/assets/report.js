@@ -648,7 +648,7 @@
       if (!feats.length) return [];
       const dia = (d) => (d != null ? 'Ø' + fmt(d) : '—');
       const table = el('table', null, el('tr', null, el('td', null, 'feature'), el('td', null, 'largest tool (face bounding it)'), el('td', null, 'fits the floor')));
-      for (const m of feats) table.append(el('tr', null, el('td', null, m.feature + ' ' + m.kind), el('td', null, dia(m.largest_tool_mm) + (m.bounded_by != null ? ' (#' + m.bounded_by + ')' : '')), el('td', null, dia(m.fits_mm))));
+      for (const m of feats) table.append(el('tr', null, el('td', null, m.feature + ' ' + m.kind), el('td', null, dia(m.largest_tool_mm) + (m.bound ? ' (its ' + m.bound.replace(/_/g, ' ') + ')' : m.bounded_by != null ? ' (#' + m.bounded_by + ')' : '')), el('td', null, dia(m.fits_mm))));
       return [el('h3', null, 'Largest tool reaching each machining feature whole'), table];
     }
     return {

@@ -40,7 +40,7 @@ impl ReachResult {
     ) -> Self {
         Self {
             wall_sides: wall_sides(a, &outcome.recognition, &faces, tool_diameter),
-            features: feature_tools(&outcome.machining, &faces),
+            features: feature_tools(a, &outcome.machining, &faces),
             faces,
         }
     }
@@ -183,13 +183,20 @@ impl AccessReport {
         }
         let mm = |d: Option<f64>| d.map_or("none".to_string(), |d| format!("Ø{d:.2}"));
         for m in &self.features {
+            let by = match (m.bound, m.bounded_by) {
+                (Some(b), _) => format!("its {}", bound_name(b)),
+                (None, Some(f)) => format!("#{f}"),
+                (None, None) => "-".to_string(),
+            };
+            let largest = match m.largest_tool_mm {
+                Some(d) => format!("largest tool Ø{d:.2} mm (bounded by {by})"),
+                None => format!("no tool reaches it whole from up (face {by})"),
+            };
             let _ = writeln!(
                 s,
-                "  {:<5} {:<9} largest tool reaching it whole {} mm (bounded by #{}), floors {}, fits {}",
+                "  {:<5} {:<9} {largest}, floors {}, fits {}",
                 m.feature.to_string(),
                 format!("{:?}", m.kind).to_lowercase(),
-                mm(m.largest_tool_mm),
-                m.bounded_by.map_or("-".to_string(), |f| f.to_string()),
                 mm(m.floors_mm),
                 mm(m.fits_mm),
             );
@@ -203,5 +210,14 @@ impl AccessReport {
         }
         let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
         s
+    }
+}
+
+/// What bounds a feature's largest tool, in words.
+fn bound_name(b: thinwall_machining::ToolBound) -> &'static str {
+    match b {
+        thinwall_machining::ToolBound::CornerRadius => "corner radius",
+        thinwall_machining::ToolBound::Width => "floor's width",
+        thinwall_machining::ToolBound::Bore => "bore",
     }
 }

@@ -205,11 +205,13 @@ fn operation_line(s: &mut String, o: &thinwall_ops::operations::Operation) {
 /// A feature finished by its radii: its radii, the bound, its tools and
 /// what no tool finishes.
 fn radius_line(s: &mut String, f: &thinwall_ops::finishing::RadiusFinish) {
-    use thinwall_ops::finishing::{Bound, RestCause};
+    use thinwall_machining::ToolBound;
+    use thinwall_ops::finishing::RestCause;
     let mm = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.2}"));
     let bound = match f.bounded_by {
-        Bound::CornerRadius => "2 x its corner radius",
-        Bound::Width => "its floor's width",
+        ToolBound::CornerRadius => "2 x its corner radius",
+        ToolBound::Width => "its floor's width",
+        ToolBound::Bore => "its bore",
     };
     let tool = |t: &Option<String>| t.clone().unwrap_or_else(|| "none".to_string());
     let _ = writeln!(

@@ -1,15 +1,19 @@
-//! The largest tool for each machining feature: the tool (the run's
-//! proportions, along the set-up's up) that reaches every face of a pocket,
-//! slot, step or hole whole, from its faces' largest tools, set beside the
-//! recognizer's bound (`largest_tool_diameter`: the largest circle in the
-//! floor, or a hole's bore), which knows the floor's shape but not the
-//! material around it.
+//! The largest tool for each machining feature, one answer with the
+//! recognizer and the operations (issue 38): the least of the recognizer's
+//! bound (`largest_tool_diameter`: 2R at its corners, its floor's widest
+//! circle widened by its floor fillet, a hole's bore) and the largest tool
+//! (the run's proportions, along the set-up's up) that reaches its faces
+//! whole, which knows the material around it. A floor its own fillet
+//! bounds, and the blends, are the bull-nose's the fillet asks for: judged
+//! by the bound, not by a flat tool's reach.
 
+use super::largest::TOOL_PRECISION;
 use super::FaceReach;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use thinwall_analysis::{MachiningId, MachiningKind};
-use thinwall_machining::MachiningFeature;
+use thinwall_analysis::{MachiningId, MachiningKind, PartAnalysis};
+use thinwall_geom::Surface;
+use thinwall_machining::{MachiningFeature, ToolBound};
 
 /// One machining feature's largest tools.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -20,8 +24,14 @@ pub struct FeatureTool {
     /// some face no tool of at least the smallest size reaches whole (a
     /// sharp inside corner, a face turned away from up).
     pub largest_tool_mm: Option<f64>,
-    /// The face whose own largest tool bounds it (STEP id).
+    /// The face whose own largest tool bounds it (STEP id), when a face's
+    /// reach does.
     pub bounded_by: Option<u64>,
+    /// The recognizer's bound, when it decides (the feature's shape is
+    /// narrower than any face's reach): its corner radius, its floor's
+    /// width, its bore.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bound: Option<ToolBound>,
     /// The largest tool reaching every floor of it whole, mm (none without
     /// floors, or when a floor is not reached whole by any).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -34,7 +44,11 @@ pub struct FeatureTool {
 /// Each machining feature's largest tools, from its faces' (judged with
 /// the largest-tool search on); features whose faces were not all judged
 /// are left out.
-pub fn feature_tools(machining: &[MachiningFeature], faces: &[FaceReach]) -> Vec<FeatureTool> {
+pub fn feature_tools(
+    a: &PartAnalysis,
+    machining: &[MachiningFeature],
+    faces: &[FaceReach],
+) -> Vec<FeatureTool> {
     let by_face: BTreeMap<(u32, u64), &FaceReach> =
         faces.iter().map(|f| ((f.body, f.face), f)).collect();
     let mut out = Vec::new();
@@ -45,7 +59,35 @@ pub fn feature_tools(machining: &[MachiningFeature], faces: &[FaceReach]) -> Vec
             .map(|s| by_face.get(&(m.body, *s)).copied())
             .collect();
         let Some(reach) = reach else { continue };
-        let (largest_tool_mm, bounded_by) = smallest(&reach);
+        // A floor its own fillet bounds all round, and the blends, are
+        // reached by the bull-nose the fillet asks for (the recognizer's
+        // bound, which knows its radii); their flat-tool reach answers for
+        // another tool. The walls' reach (the holder's way down) still
+        // counts.
+        // Likewise a hole's cones and blends (its countersink, chamfers,
+        // a drill's point) are the tools' of those stages: its bores are
+        // judged.
+        let cone = |step: u64| {
+            a.part()
+                .face_by_step_id(step)
+                .is_some_and(|f| matches!(a.part().face(f).surface, Surface::Cone { .. }))
+        };
+        let formed = |f: &&FaceReach| {
+            m.blend_faces.contains(&f.face)
+                || m.chamfer_faces.contains(&f.face)
+                || (m.bottom_faces.contains(&f.face) && m.floor_fillet.is_some())
+                || (m.kind == MachiningKind::Hole && cone(f.face))
+        };
+        let judged: Vec<&FaceReach> = reach.iter().copied().filter(|f| !formed(f)).collect();
+        let (by_faces, face) = smallest(&judged);
+        let (largest_tool_mm, bounded_by, bound) = match (by_faces, m.largest_tool_diameter) {
+            // Within the search's precision the exact bound wins.
+            (Some(d), Some(fit)) if fit <= d + (TOOL_PRECISION * d).max(0.01) => {
+                (Some(fit), None, m.tool_bound)
+            }
+            (None, Some(fit)) if judged.is_empty() => (Some(fit), None, m.tool_bound),
+            (d, _) => (d, face, None),
+        };
         let floors: Vec<&FaceReach> = reach
             .iter()
             .copied()
@@ -56,6 +98,7 @@ pub fn feature_tools(machining: &[MachiningFeature], faces: &[FaceReach]) -> Vec
             kind: m.kind,
             largest_tool_mm,
             bounded_by,
+            bound,
             floors_mm: if floors.is_empty() {
                 None
             } else {
