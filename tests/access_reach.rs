@@ -546,9 +546,17 @@ fn the_largest_tool_of_a_rounded_pocket_is_twice_its_corner_radius() {
             let f = faces.iter().find(|f| f.face == *b).unwrap();
             close(f.largest_tool_mm.unwrap(), 10.0, 1e-12, "corner blend");
         }
+        // The hole's bound is its bore (one answer with the recognizer),
+        // which its one face's reach meets exactly.
+        assert_eq!(hole.bound, Some(thinwall_machining::ToolBound::Bore));
+        let hole_m = out
+            .machining
+            .iter()
+            .find(|m| m.kind == thinwall_analysis::MachiningKind::Hole)
+            .unwrap();
         let bore = faces
             .iter()
-            .find(|f| Some(f.face) == hole.bounded_by)
+            .find(|f| hole_m.faces.contains(&f.face))
             .unwrap();
         assert_eq!(bore.fraction, 0.0, "Ø12 in the Ø8 bore");
         let note = bore.note.as_deref().unwrap_or_default();

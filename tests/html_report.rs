@@ -367,5 +367,7 @@ fn operations_page_holds_every_operation_and_its_fields() {
         }
         assert!(data["palette"][format!("ops.{}", o["stage"].as_str().unwrap())].is_string());
     }
-    assert_eq!(drills, 5);
+    // Five drilling operations and a spot before the drills at each of
+    // the two levels holes are entered from.
+    assert_eq!(drills, 7);
 }

@@ -8,10 +8,11 @@
 //! named with why.
 
 use crate::drilling::{DrillKind, HoleSite};
-use crate::operations::{Operation, SetupOperations, Stage};
+use crate::operations::{Operation, SetupOperations};
 use crate::rest::Adjacency;
+use crate::stage::Stage;
+pub use crate::stage::{HoleStage, HoleStep};
 use crate::tools::{CuttingTool, ToolKind, ToolLibrary};
-use serde::Serialize;
 use thinwall_analysis::MachiningKind;
 use thinwall_geom::{Frame, Vector3};
 use thinwall_machining::{HoleEnd, MachiningFeature};
@@ -19,43 +20,6 @@ use thinwall_machining::{HoleEnd, MachiningFeature};
 /// A countersink matches a cone when their included angles differ by no
 /// more, degrees.
 pub const ANGLE_MATCH_DEG: f64 = 0.5;
-
-/// What a stage does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum HoleStep {
-    Spot,
-    Countersink,
-    Chamfer,
-    /// A rounded edge (a corner-rounding cutter; none in a library of
-    /// end mills, drills and cones).
-    Blend,
-}
-
-/// One stage of a hole other than its bores.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct HoleStage {
-    /// The machining feature (`M…`).
-    pub hole: String,
-    pub step: HoleStep,
-    /// At the far end of a through hole from the tool: the other set-up's
-    /// (or a back-chamfering tool's).
-    pub at_exit: bool,
-    /// The cone's included angle, degrees (spot: the tool's).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub angle_deg: Option<f64>,
-    /// Its diameter on the face (spot: the drilled bore's), mm.
-    pub diameter_mm: f64,
-    /// Where it starts along up in the removal frame, and how deep it
-    /// cuts, mm.
-    pub z_top_mm: f64,
-    pub depth_mm: f64,
-    /// The tool of the library that makes it; none: why not.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub tool: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub missing: Option<String>,
-}
 
 /// The stages of `features`' holes the tool reaches from up in `frame`,
 /// given their bores' `sites` ([`crate::drilling::hole_sites`]).

@@ -233,11 +233,11 @@ pub struct SetupOperations {
     /// The pockets, slots, steps and passages finished by their corner
     /// radius and floor fillet, with their tools and rests.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub radius_finishes: Vec<crate::finishing::RadiusFinish>,
+    pub radius_finishes: Vec<crate::stage::RadiusFinish>,
     /// The holes' stages besides their bores (spot, countersink, chamfer,
     /// blend), each with its tool or why none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub hole_stages: Vec<crate::hole_stages::HoleStage>,
+    pub hole_stages: Vec<crate::stage::HoleStage>,
     /// The plan's machining features left to another set-up (operations
     /// along the plan only).
     #[serde(skip_serializing_if = "Vec::is_empty")]

@@ -1,11 +1,14 @@
-//! What an operation does (its stage), its share of Popma's regions, and
-//! an operation before it has a place in the order (`Draft`): the types
-//! the operations and their order share.
+//! What an operation does (its stage), its share of Popma's regions, an
+//! operation before it has a place in the order (`Draft`), and what the
+//! finishing by radii and the holes' stages find (`RadiusFinish`,
+//! `HoleStage`): the types the operations, their order and those steps
+//! share.
 
 use crate::drilling::DrillKind;
 use crate::rest::Adjacency;
 use crate::tools::CuttingTool;
 use serde::Serialize;
+use thinwall_machining::ToolBound;
 
 /// What an operation does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
@@ -52,4 +55,112 @@ pub(crate) struct Draft<'a> {
     pub(crate) holes: Vec<usize>,
     pub(crate) drilled_mm3: f64,
     pub(crate) entry_mm: f64,
+}
+
+/// Why part of a feature is left unfinished.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RestCause {
+    /// No tool of the library is narrow enough for its corners: a wider
+    /// one leaves material in them.
+    Corner,
+    /// No tool's corner radius is small enough for its floor fillet: a
+    /// rounder one leaves material in it.
+    FloorFillet,
+    /// No tool that fits is long enough: the walls below its flutes'
+    /// reach are left.
+    Depth,
+}
+
+/// What no tool of the library finishes.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RadiusRest {
+    pub cause: RestCause,
+    /// The tool that leaves it (the one finishing the rest of the feature),
+    /// if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tool: Option<String>,
+    /// The part's surface left unfinished, mm².
+    pub area_mm2: f64,
+    /// The material left standing on it, mm³ (corners and fillets; none
+    /// below a short tool's reach, which the roughing decides).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub volume_mm3: Option<f64>,
+}
+
+/// One feature finished by its radii.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RadiusFinish {
+    /// The machining feature (`M…`).
+    pub feature: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corner_radius_mm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub floor_fillet_mm: Option<f64>,
+    pub depth_mm: f64,
+    /// The widest tool it allows (the recognizer's bound), mm, and what
+    /// bounds it.
+    pub largest_tool_mm: f64,
+    pub bounded_by: ToolBound,
+    /// The widest tool its walls and floor fillet allow, corners aside
+    /// (the floor's widest circle, widened by the fillet a bull-nose's
+    /// corner sits in), mm.
+    pub walls_tool_mm: f64,
+    /// Its walls' and floor fillet's finishing tool.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub walls: Option<String>,
+    /// Its corners' (the walls' tool where it fits them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corners: Option<String>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rest: Vec<RadiusRest>,
+    /// Along up in the removal frame: its top and bottom, mm.
+    pub z_top_mm: f64,
+    pub z_bottom_mm: f64,
+    /// Its walls' and blends' area, mm², and their length along the floor,
+    /// mm (the contour's length).
+    pub area_mm2: f64,
+    pub contour_mm: f64,
+    /// Its corners' area, mm², and their arcs' length, mm.
+    pub corner_area_mm2: f64,
+    pub corner_arc_mm: f64,
+    /// Its floor fillets' length along the floor, mm.
+    pub fillet_length_mm: f64,
+}
+
+/// What a stage does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HoleStep {
+    Spot,
+    Countersink,
+    Chamfer,
+    /// A rounded edge (a corner-rounding cutter; none in a library of
+    /// end mills, drills and cones).
+    Blend,
+}
+
+/// One stage of a hole other than its bores.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct HoleStage {
+    /// The machining feature (`M…`).
+    pub hole: String,
+    pub step: HoleStep,
+    /// At the far end of a through hole from the tool: the other set-up's
+    /// (or a back-chamfering tool's).
+    pub at_exit: bool,
+    /// The cone's included angle, degrees (spot: the tool's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_deg: Option<f64>,
+    /// Its diameter on the face (spot: the drilled bore's), mm.
+    pub diameter_mm: f64,
+    /// Where it starts along up in the removal frame, and how deep it
+    /// cuts, mm.
+    pub z_top_mm: f64,
+    pub depth_mm: f64,
+    /// The tool of the library that makes it; none: why not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tool: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub missing: Option<String>,
 }

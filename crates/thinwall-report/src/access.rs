@@ -181,26 +181,7 @@ impl AccessReport {
             }
             s.push('\n');
         }
-        let mm = |d: Option<f64>| d.map_or("none".to_string(), |d| format!("Ø{d:.2}"));
-        for m in &self.features {
-            let by = match (m.bound, m.bounded_by) {
-                (Some(b), _) => format!("its {}", bound_name(b)),
-                (None, Some(f)) => format!("#{f}"),
-                (None, None) => "-".to_string(),
-            };
-            let largest = match m.largest_tool_mm {
-                Some(d) => format!("largest tool Ø{d:.2} mm (bounded by {by})"),
-                None => format!("no tool reaches it whole from up (face {by})"),
-            };
-            let _ = writeln!(
-                s,
-                "  {:<5} {:<9} {largest}, floors {}, fits {}",
-                m.feature.to_string(),
-                format!("{:?}", m.kind).to_lowercase(),
-                mm(m.floors_mm),
-                mm(m.fits_mm),
-            );
-        }
+        feature_lines(&mut s, &self.features);
         for (id, sides) in &self.wall_sides {
             for (k, side) in sides.iter().enumerate() {
                 if let Some(r) = &side.reason {
@@ -219,5 +200,29 @@ fn bound_name(b: thinwall_machining::ToolBound) -> &'static str {
         thinwall_machining::ToolBound::CornerRadius => "corner radius",
         thinwall_machining::ToolBound::Width => "floor's width",
         thinwall_machining::ToolBound::Bore => "bore",
+    }
+}
+
+/// One line per machining feature: its largest tool and what bounds it.
+fn feature_lines(s: &mut String, features: &[FeatureTool]) {
+    let mm = |d: Option<f64>| d.map_or("none".to_string(), |d| format!("Ø{d:.2}"));
+    for m in features {
+        let by = match (m.bound, m.bounded_by) {
+            (Some(b), _) => format!("its {}", bound_name(b)),
+            (None, Some(f)) => format!("#{f}"),
+            (None, None) => "-".to_string(),
+        };
+        let largest = match m.largest_tool_mm {
+            Some(d) => format!("largest tool Ø{d:.2} mm (bounded by {by})"),
+            None => format!("no tool reaches it whole from up (face {by})"),
+        };
+        let _ = writeln!(
+            s,
+            "  {:<5} {:<9} {largest}, floors {}, fits {}",
+            m.feature.to_string(),
+            format!("{:?}", m.kind).to_lowercase(),
+            mm(m.floors_mm),
+            mm(m.fits_mm),
+        );
     }
 }
