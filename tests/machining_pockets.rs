@@ -5,8 +5,9 @@
 //! of the material it removes (its corner cylinders, floor fillets and the
 //! tori where they meet among them, as its `blend_faces`), with its corner
 //! radius, floor fillet and depth within 1e-6, no draft, and a largest tool
-//! no wider than its corners allow; no blend is left a fillet of its own.
-//! The same as built and turned.
+//! no wider than its corners allow; no blend is left a fillet of its own;
+//! in the stiffness view its blends are in its web and on the walls round
+//! it. The same as built and turned.
 //!
 //! `THINWALL_POCKETS_DIR=DIR` runs the same checks on another directory of
 //! generated panels (a seed range never looked at: the held-out figure).
@@ -112,17 +113,31 @@ fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, Vec<String
         (nalgebra::Rotation3::identity(), nalgebra::Vector3::zeros()),
         common::rigid_motion,
     );
+    // The stiffness view in the set-up turned with the part.
+    let up = r * nalgebra::Vector3::z();
+    let stiffness = common::recognize_with(
+        &part,
+        [up.x, up.y, up.z],
+        &thinwall_recognize::Config::default(),
+    );
     let back = move |c: nalgebra::Point3<f64>| r.inverse() * (c - t);
     let name = format!("{} {seed:?}", path.display());
     let mut errors = Vec::new();
     for (i, p) in truth.pockets.iter().enumerate() {
         let want = faces_in(&part, &a, p, &back);
         match features.iter().find(|m| m.faces == want) {
-            Some(m) => errors.extend(
-                check_pocket(m, p)
-                    .into_iter()
-                    .map(|w| format!("{name} pocket {i} ({}): {w}", m.id)),
-            ),
+            Some(m) => {
+                errors.extend(
+                    check_pocket(m, p)
+                        .into_iter()
+                        .map(|w| format!("{name} pocket {i} ({}): {w}", m.id)),
+                );
+                errors.extend(
+                    blends_in_web(&stiffness, m)
+                        .into_iter()
+                        .map(|w| format!("{name} pocket {i} ({}): {w}", m.id)),
+                );
+            }
             None => errors.push(format!(
                 "{name} pocket {i}: no feature with its {} faces (features: {:?})",
                 want.len(),
@@ -137,6 +152,39 @@ fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, Vec<String
         errors.push(format!("{name}: {} is a fillet of its own", m.id));
     }
     (truth.pockets.len(), errors)
+}
+
+/// The stiffness view of a pocket's blends (issue 38): the fillet details
+/// made of its blend faces are in the wall its floor is a side of (the
+/// web) and on the walls round it, not one arbitrary wall's. (Whether that web is called a web is the walls-through-a-web
+/// question: a frame's web between outer walls standing on both sides of
+/// it is still read as a rib.)
+fn blends_in_web(stiffness: &thinwall_recognize::Recognition, m: &MachiningFeature) -> Vec<String> {
+    use thinwall_analysis::StiffnessKind;
+    let holds_floor = |id| {
+        stiffness
+            .features
+            .iter()
+            .find(|f| f.id == id)
+            .is_some_and(|f| m.bottom_faces.iter().any(|b| f.faces.contains(b)))
+    };
+    let mut errors = Vec::new();
+    let details = stiffness.features.iter().filter(|f| {
+        f.kind == StiffnessKind::Fillet && f.faces.iter().all(|x| m.blend_faces.contains(x))
+    });
+    for f in details {
+        let floor = f.wall.is_some_and(holds_floor);
+        // Its walls listed after the web where thin walls stand round it
+        // (a plate's thick rim is no wall).
+        let listed = f.walls.is_empty() || f.walls.first() == f.wall.as_ref();
+        if !floor || !listed {
+            errors.push(format!(
+                "{} in {:?} (its floor's: {floor}), on {:?}",
+                f.id, f.wall, f.walls
+            ));
+        }
+    }
+    errors
 }
 
 #[test]

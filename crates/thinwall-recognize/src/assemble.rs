@@ -21,6 +21,9 @@ pub struct Draft {
     pub refs: Vec<Option<usize>>,
     /// Per wall: its feature's position, when reported.
     pub wall_feature: Vec<Option<usize>>,
+    /// Per feature position: the other walls' positions a pocket's blends
+    /// touch (`StiffnessFeature::walls`).
+    pub also: BTreeMap<usize, Vec<usize>>,
 }
 
 /// The wall features (squat slabs left out: they are bases, not walls).
@@ -35,6 +38,7 @@ pub fn walls(
         features: Vec::new(),
         refs: Vec::new(),
         wall_feature: vec![None; walls.len()],
+        also: BTreeMap::new(),
     };
     for (w, wall) in walls.iter().enumerate() {
         if sizes[w].squat {
@@ -247,7 +251,7 @@ pub fn details(
             }
         }
     }
-    let wall_of_detail = |faces: &[FaceId]| -> Option<usize> {
+    let walls_of_detail = |faces: &[FaceId]| -> Vec<usize> {
         let mut touched: Vec<usize> = Vec::new();
         for &f in faces {
             for (g, _) in a.graph().neighbours(f) {
@@ -259,16 +263,63 @@ pub fn details(
             }
         }
         touched.sort_by_key(|&w| (sizes[w].squat, !sizes[w].thin, sizes[w].base.is_none(), w));
-        touched.first().copied()
+        touched
+    };
+    let wall_of_detail = |faces: &[FaceId]| walls_of_detail(faces).first().copied();
+    let up = a.up();
+    // Whether blend faces round a pocket's corner (a cylinder along up),
+    // as a fillet along one wall's foot does not.
+    let rounds_a_corner = |faces: &[FaceId]| {
+        faces.iter().any(|&f| match a.part().face(f).surface {
+            thinwall_geom::Surface::Cylinder { frame, .. } => {
+                frame.z.dot(&up).abs() > 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS
+            }
+            _ => false,
+        })
+    };
+    // Whether a wall's side square to up is a floor the blend faces meet.
+    let floor_of = |faces: &[FaceId], wall: &Wall| {
+        wall.normals.iter().zip(&wall.sides).any(|(n, side)| {
+            n.dot(&up).abs() > 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS
+                && side.iter().any(|&g| {
+                    faces
+                        .iter()
+                        .any(|&f| a.graph().neighbours(f).any(|(h, _)| h == g))
+                })
+        })
     };
     for b in &claims.blends {
         let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
         f.body = a.part().face(b.faces[0]).body.0;
         f.radius = b.radius;
         f.convex = Some(b.convex);
+        let touched: Vec<usize> = walls_of_detail(&b.faces)
+            .into_iter()
+            .filter(|&w| d.wall_feature[w].is_some())
+            .collect();
+        // A pocket's blends run round its floor (a side of the web, square
+        // to up) and round its corners up the walls standing on it: they
+        // are the pocket's, in its web and on its walls, not one arbitrary
+        // wall's (a fillet along one wall's foot keeps that wall).
+        let web = touched
+            .iter()
+            .copied()
+            .find(|&w| floor_of(&b.faces, &walls[w]));
+        let primary = match web {
+            Some(web) if !b.convex && touched.len() > 1 && rounds_a_corner(&b.faces) => {
+                let mut rest: Vec<usize> = touched.iter().copied().filter(|&w| w != web).collect();
+                rest.sort_unstable();
+                let pos = d.features.len();
+                d.also.insert(
+                    pos,
+                    rest.iter().filter_map(|&w| d.wall_feature[w]).collect(),
+                );
+                Some(web)
+            }
+            _ => touched.first().copied(),
+        };
         d.features.push(f);
-        d.refs
-            .push(wall_of_detail(&b.faces).and_then(|w| d.wall_feature[w]));
+        d.refs.push(primary.and_then(|w| d.wall_feature[w]));
     }
     for e in &claims.engravings {
         let mut f = StiffnessFeature::new(StiffnessKind::Engraving, a.step_ids(&e.faces));
@@ -295,7 +346,10 @@ pub fn details(
 /// new position.
 pub fn number(d: Draft) -> (Vec<StiffnessFeature>, Vec<usize>) {
     let Draft {
-        mut features, refs, ..
+        mut features,
+        refs,
+        also,
+        ..
     } = d;
     let mut order: Vec<usize> = (0..features.len()).collect();
     order.sort_by_key(|&i| {
@@ -319,6 +373,12 @@ pub fn number(d: Draft) -> (Vec<StiffnessFeature>, Vec<usize>) {
             f.base = target;
         } else {
             f.wall = target;
+        }
+        if let Some(others) = also.get(&i) {
+            f.walls = target
+                .into_iter()
+                .chain(others.iter().map(|&r| ids[r]))
+                .collect();
         }
     }
     let mut new_pos = vec![0; features.len()];

@@ -85,6 +85,11 @@ pub struct StiffnessFeature {
     /// Depressions and details: the wall it is in or on.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wall: Option<FeatureId>,
+    /// A pocket's blends (its corner radii and floor fillet, running round
+    /// the floor a web is and up the walls standing on it): every wall they
+    /// touch, the web (`wall`) first. Empty for a detail of one wall.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub walls: Vec<FeatureId>,
     /// Holes: mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub diameter: Option<f64>,
@@ -177,6 +182,7 @@ impl StiffnessFeature {
             top_end_faces: None,
             base: None,
             wall: None,
+            walls: Vec::new(),
             diameter: None,
             large: None,
             through: None,

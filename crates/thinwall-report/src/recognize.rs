@@ -271,7 +271,17 @@ fn others_text(s: &mut String, others: &[&StiffnessFeature]) {
             f.kind.name(),
             size,
             f.faces.len(),
-            f.wall.map_or_else(|| "-".into(), |w| w.to_string())
+            match f.walls.split_first() {
+                // A pocket's blends: in its web, on its walls.
+                Some((web, on)) => format!(
+                    "{web}, on {}",
+                    on.iter()
+                        .map(|w| w.to_string())
+                        .collect::<Vec<_>>()
+                        .join(" ")
+                ),
+                None => f.wall.map_or_else(|| "-".into(), |w| w.to_string()),
+            }
         );
     }
 }
