@@ -81,9 +81,10 @@ pub enum Command {
     Access(AccessArgs),
     /// Operations of a set-up: layers from the stock's top (and at every
     /// flat face), cutter fields, the largest tools that fit with their
-    /// rest areas and regions (boundary, full cut, roughing), floors'
-    /// finishing, holes drilled by subtype, in an order that cuts tool
-    /// changes (docs/OPERATIONS.md).
+    /// rest areas and regions (boundary, full cut, roughing), walls' and
+    /// floors' finishing, pockets finished by their corner radius and floor
+    /// fillet, holes spotted, drilled by subtype, countersunk and
+    /// chamfered, in an order that cuts tool changes (docs/OPERATIONS.md).
     Operations(OperationsArgs),
     /// Size a thin wall's machining features (B_RF, h_RF, H_RF) with the
     /// step-approach bending model (docs/PLANNING.md).
