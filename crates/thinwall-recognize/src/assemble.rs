@@ -266,28 +266,6 @@ pub fn details(
         touched
     };
     let wall_of_detail = |faces: &[FaceId]| walls_of_detail(faces).first().copied();
-    let up = a.up();
-    // Whether blend faces round a pocket's corner (a cylinder along up),
-    // as a fillet along one wall's foot does not.
-    let rounds_a_corner = |faces: &[FaceId]| {
-        faces.iter().any(|&f| match a.part().face(f).surface {
-            thinwall_geom::Surface::Cylinder { frame, .. } => {
-                frame.z.dot(&up).abs() > 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS
-            }
-            _ => false,
-        })
-    };
-    // Whether a wall's side square to up is a floor the blend faces meet.
-    let floor_of = |faces: &[FaceId], wall: &Wall| {
-        wall.normals.iter().zip(&wall.sides).any(|(n, side)| {
-            n.dot(&up).abs() > 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS
-                && side.iter().any(|&g| {
-                    faces
-                        .iter()
-                        .any(|&f| a.graph().neighbours(f).any(|(h, _)| h == g))
-                })
-        })
-    };
     for b in &claims.blends {
         let mut f = StiffnessFeature::new(StiffnessKind::Fillet, a.step_ids(&b.faces));
         f.body = a.part().face(b.faces[0]).body.0;
@@ -297,16 +275,8 @@ pub fn details(
             .into_iter()
             .filter(|&w| d.wall_feature[w].is_some())
             .collect();
-        // A pocket's blends run round its floor (a side of the web, square
-        // to up) and round its corners up the walls standing on it: they
-        // are the pocket's, in its web and on its walls, not one arbitrary
-        // wall's (a fillet along one wall's foot keeps that wall).
-        let web = touched
-            .iter()
-            .copied()
-            .find(|&w| floor_of(&b.faces, &walls[w]));
-        let primary = match web {
-            Some(web) if !b.convex && touched.len() > 1 && rounds_a_corner(&b.faces) => {
+        let primary = match pocket_web(a, b, &touched, walls) {
+            Some(web) => {
                 let mut rest: Vec<usize> = touched.iter().copied().filter(|&w| w != web).collect();
                 rest.sort_unstable();
                 let pos = d.features.len();
@@ -316,7 +286,7 @@ pub fn details(
                 );
                 Some(web)
             }
-            _ => touched.first().copied(),
+            None => touched.first().copied(),
         };
         d.features.push(f);
         d.refs.push(primary.and_then(|w| d.wall_feature[w]));
@@ -339,6 +309,41 @@ pub fn details(
         d.refs
             .push(wall_of_detail(&[*c]).and_then(|w| d.wall_feature[w]));
     }
+}
+
+/// The wall (among `touched`) a pocket's blends `b` are in: a pocket's
+/// blends run round its floor (a side of the web, square to up) and round
+/// its corners (a cylinder along up) up the walls standing on it, so they
+/// are the pocket's, in its web and on its walls, not one arbitrary wall's;
+/// none for a fillet along one wall's foot, which keeps that wall.
+fn pocket_web(
+    a: &PartAnalysis,
+    b: &crate::details::Blend,
+    touched: &[usize],
+    walls: &[Wall],
+) -> Option<usize> {
+    let up = a.up();
+    let along = |v: &thinwall_geom::Vector3| {
+        v.dot(&up).abs() > 1.0 - thinwall_geom::tolerance::NEAR_PARALLEL_EPS
+    };
+    let rounds_a_corner = b.faces.iter().any(|&f| {
+        matches!(a.part().face(f).surface, thinwall_geom::Surface::Cylinder { frame, .. } if along(&frame.z))
+    });
+    if b.convex || touched.len() < 2 || !rounds_a_corner {
+        return None;
+    }
+    let meets = |g: FaceId| {
+        b.faces
+            .iter()
+            .any(|&f| a.graph().neighbours(f).any(|(h, _)| h == g))
+    };
+    touched.iter().copied().find(|&w| {
+        let wall = &walls[w];
+        wall.normals
+            .iter()
+            .zip(&wall.sides)
+            .any(|(n, side)| along(n) && side.iter().any(|&g| meets(g)))
+    })
 }
 
 /// Number the features by kind, then by smallest face id, and sort them so;
