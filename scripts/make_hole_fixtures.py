@@ -17,10 +17,10 @@ included angle).
 usage: python3 scripts/make_hole_fixtures.py [OUT_DIR [FIRST_SEED [COUNT]]]
        (default fixtures/holes, seeds 1..4)
 """
-import json, math, os, random, sys
+import math, os, random, sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from make_recognition_fixtures import box, cut, fuse, write, _edge  # noqa: E402
+from make_recognition_fixtures import box, cut, fuse, write_generated, _edge  # noqa: E402
 from OCP.BRepAdaptor import BRepAdaptor_Curve  # noqa: E402
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Fuse  # noqa: E402
 from OCP.BRepBuilderAPI import BRepBuilderAPI_Transform  # noqa: E402
@@ -168,16 +168,7 @@ def part(seed):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/holes"
-    first = int(sys.argv[2]) if len(sys.argv) > 2 else 1
-    count = int(sys.argv[3]) if len(sys.argv) > 3 else 4
-    os.makedirs(out, exist_ok=True)
-    for seed in range(first, first + count):
-        body, truth = part(seed)
-        write(body, os.path.join(out, f"holes_{seed}.step"))
-        with open(os.path.join(out, f"holes_{seed}.truth.json"), "w") as f:
-            json.dump(truth, f, indent=1)
-            f.write("\n")
+    write_generated("holes", part, "fixtures/holes", 4)
 
 
 if __name__ == "__main__":

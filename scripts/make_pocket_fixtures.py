@@ -16,10 +16,10 @@ depth and lightening hole diameter (0 for none).
 usage: python3 scripts/make_pocket_fixtures.py [OUT_DIR [FIRST_SEED [COUNT]]]
        (default fixtures/pockets, seeds 1..8)
 """
-import json, os, random, sys
+import os, random, sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from make_recognition_fixtures import box, cut, write, near, _edge  # noqa: E402
+from make_recognition_fixtures import box, cut, write_generated, near, _edge  # noqa: E402
 from OCP.BRepAdaptor import BRepAdaptor_Curve  # noqa: E402
 from OCP.BRepFilletAPI import BRepFilletAPI_MakeFillet  # noqa: E402
 from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder  # noqa: E402
@@ -124,16 +124,7 @@ def panel(seed):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "fixtures/pockets"
-    first = int(sys.argv[2]) if len(sys.argv) > 2 else 1
-    count = int(sys.argv[3]) if len(sys.argv) > 3 else 8
-    os.makedirs(out, exist_ok=True)
-    for seed in range(first, first + count):
-        part, truth = panel(seed)
-        write(part, os.path.join(out, f"pockets_{seed}.step"))
-        with open(os.path.join(out, f"pockets_{seed}.truth.json"), "w") as f:
-            json.dump(truth, f, indent=1)
-            f.write("\n")
+    write_generated("pockets", panel, "fixtures/pockets", 8)
 
 
 if __name__ == "__main__":

@@ -110,6 +110,22 @@ def write(shape, path):
     assert w.Write(path) == IFSelect_RetDone
 
 
+def write_generated(stem, make, default_out, default_count):
+    """A generator's command line `[OUT [FIRST [COUNT]]]`: for each seed,
+    `make(seed)` -> (shape, truth) written as OUT/STEM_SEED.step and
+    OUT/STEM_SEED.truth.json."""
+    out = sys.argv[1] if len(sys.argv) > 1 else default_out
+    first = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+    count = int(sys.argv[3]) if len(sys.argv) > 3 else default_count
+    os.makedirs(out, exist_ok=True)
+    for seed in range(first, first + count):
+        shape, truth = make(seed)
+        write(shape, os.path.join(out, f"{stem}_{seed}.step"))
+        with open(os.path.join(out, f"{stem}_{seed}.truth.json"), "w") as f:
+            json.dump(truth, f, indent=1)
+            f.write("\n")
+
+
 def wall(kind, side_pred, thin=True, thickness=None, fs=None, name=None):
     return {"kind": kind, "thin": thin, "thickness": thickness, "side_faces_at": pick(fs, side_pred), "name": name}
 

@@ -15,8 +15,9 @@ use thinwall_geom::{Surface, Vector3};
 use thinwall_graph::Convexity;
 
 /// The kinds a blend chain can belong to: milled depressions (a hole's
-/// blended entry is a stage of the hole, not taken here).
-fn takes_blends(kind: MachiningKind) -> bool {
+/// blended entry is a stage of the hole, not taken here). They carry a
+/// corner radius and floor fillet (and the operations finish them so).
+pub fn takes_blends(kind: MachiningKind) -> bool {
     matches!(
         kind,
         MachiningKind::Pocket | MachiningKind::Slot | MachiningKind::Step | MachiningKind::Passage

@@ -43,6 +43,7 @@ mod shape;
 mod solid;
 pub mod stock;
 
+pub use blends::takes_blends;
 pub use holes::{Bore, HoleEnd, HoleForm, HoleTip};
 
 /// What bounds a feature's largest tool.

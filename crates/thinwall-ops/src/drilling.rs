@@ -108,13 +108,10 @@ pub fn hole_sites(
         .iter()
         .filter(|m| m.kind == MachiningKind::Hole && m.reachable != Some(false))
     {
-        let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
-        // The tool goes down into the hole (its direction −up); a through
-        // hole entered from below is drilled from up all the same, from its
-        // other end.
-        let down = dir.dot(&frame.z) < -1.0 + 1e-6;
-        let from_below = m.through && dir.dot(&frame.z) > 1.0 - 1e-6;
-        let Some(c) = m.centre.filter(|_| down || from_below) else {
+        let Some(down) = entered_from_up(m, frame) else {
+            continue;
+        };
+        let Some(c) = m.centre else {
             continue;
         };
         let d = Point3::new(c[0], c[1], c[2]) - frame.origin;
@@ -138,6 +135,22 @@ pub fn hole_sites(
         }
     }
     out
+}
+
+/// Whether the tool along `frame.z` enters hole `m` from up: `Some(true)`
+/// when it goes down into it (the hole's direction −up), `Some(false)` for
+/// a through hole entered from below (drilled from up all the same, from
+/// its other end), none otherwise.
+pub(crate) fn entered_from_up(m: &MachiningFeature, frame: &Frame) -> Option<bool> {
+    let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
+    let along = dir.dot(&frame.z);
+    if along < -1.0 + 1e-6 {
+        Some(true)
+    } else if m.through && along > 1.0 - 1e-6 {
+        Some(false)
+    } else {
+        None
+    }
 }
 
 /// One bore of a hole as the tool meets it from the top: its diameter,

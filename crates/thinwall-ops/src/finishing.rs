@@ -27,7 +27,7 @@ use crate::rest::Adjacency;
 use crate::stage::Stage;
 pub use crate::stage::{RadiusFinish, RadiusRest, RestCause};
 use crate::tools::{CuttingTool, ToolLibrary};
-use thinwall_analysis::{MachiningKind, PartAnalysis};
+use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Frame, Surface, Vector3};
 use thinwall_machining::MachiningFeature;
 
@@ -36,12 +36,23 @@ pub const RADIUS_MATCH_MM: f64 = 1e-3;
 
 /// The geometry of a feature's blends the choice needs.
 struct Blends {
-    /// Per corner (a concave cylinder along up): radius, turn (rad),
-    /// height (mm), area (mm²).
-    corners: Vec<(f64, f64, f64, f64)>,
+    /// Per corner: a concave cylinder along up.
+    corners: Vec<Corner>,
     /// The floor fillets' length along the floor and area.
     fillet_length: f64,
     fillet_area: f64,
+}
+
+/// One rounded corner of a feature.
+struct Corner {
+    /// mm.
+    radius: f64,
+    /// How far it turns, rad (area / (radius · height)).
+    turn: f64,
+    /// Along up, mm.
+    height: f64,
+    /// mm².
+    area: f64,
 }
 
 /// The features of `features` to finish by their radii in the set-up of
@@ -64,10 +75,8 @@ pub fn radius_finishes(
 /// a floor fillet.
 fn takes_radii(m: &MachiningFeature, frame: &Frame) -> bool {
     let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
-    matches!(
-        m.kind,
-        MachiningKind::Pocket | MachiningKind::Slot | MachiningKind::Step | MachiningKind::Passage
-    ) && m.reachable != Some(false)
+    thinwall_machining::takes_blends(m.kind)
+        && m.reachable != Some(false)
         && dir.dot(&frame.z) < -1.0 + 1e-6
         && (m.corner_radius.is_some() || m.floor_fillet.is_some())
         && m.largest_tool_diameter.is_some()
@@ -111,8 +120,8 @@ fn finish(
         z_bottom_mm: lo - base,
         area_mm2: walls_area,
         contour_mm: if depth > 0.0 { walls_area / depth } else { 0.0 },
-        corner_area_mm2: blends.corners.iter().map(|c| c.3).sum(),
-        corner_arc_mm: blends.corners.iter().map(|c| c.0 * c.1).sum(),
+        corner_area_mm2: blends.corners.iter().map(|c| c.area).sum(),
+        corner_arc_mm: blends.corners.iter().map(|c| c.radius * c.turn).sum(),
         fillet_length_mm: blends.fillet_length,
     };
     choose(&mut f, &blends, mills);
@@ -202,19 +211,19 @@ fn choose(f: &mut RadiusFinish, b: &Blends, mills: &[&CuttingTool]) {
         // library) leaves in every corner narrower than its radius.
         let by = walls.or_else(|| mills.last().copied());
         let rho = by.map_or(0.0, |t| 0.5 * t.diameter_mm);
-        let left: Vec<&(f64, f64, f64, f64)> = b
+        let left: Vec<&Corner> = b
             .corners
             .iter()
-            .filter(|c| c.0 < rho - RADIUS_MATCH_MM)
+            .filter(|c| c.radius < rho - RADIUS_MATCH_MM)
             .collect();
         if !left.is_empty() {
             f.rest.push(RadiusRest {
                 cause: RestCause::Corner,
                 tool: by.map(|t| t.name.clone()),
-                area_mm2: left.iter().map(|c| c.3).sum(),
+                area_mm2: left.iter().map(|c| c.area).sum(),
                 volume_mm3: Some(
                     left.iter()
-                        .map(|&&(r, turn, h, _)| corner_rest_mm2(rho, r, turn) * h)
+                        .map(|c| corner_rest_mm2(rho, c.radius, c.turn) * c.height)
                         .sum(),
                 ),
             });
@@ -245,7 +254,15 @@ pub fn append(ops: &mut SetupOperations, finishes: &[RadiusFinish], lib: &ToolLi
             {
                 Some(o) => o,
                 None => {
-                    drafts.push(Operation::finishing(t, corners, f));
+                    drafts.push(Operation {
+                        corners,
+                        ..Operation::empty(
+                            Stage::FinishRadii,
+                            t,
+                            [f.z_top_mm, f.z_bottom_mm],
+                            Adjacency::SideAndBottom,
+                        )
+                    });
                     drafts.last_mut().expect("just pushed")
                 }
             };
@@ -301,33 +318,6 @@ fn contour(f: &RadiusFinish, t: &CuttingTool, corners: bool) -> (f64, f64) {
     (f.area_mm2, path / t.feed_mm_min())
 }
 
-impl Operation {
-    /// An empty finishing operation of tool `t` (its corners alone or
-    /// walls and fillet), to be filled with its features.
-    fn finishing(t: &CuttingTool, corners: bool, f: &RadiusFinish) -> Self {
-        Operation {
-            step: 0,
-            stage: Stage::FinishRadii,
-            tool: t.name.clone(),
-            diameter_mm: t.diameter_mm,
-            feature: None,
-            z_top_mm: f.z_top_mm,
-            z_bottom_mm: f.z_bottom_mm,
-            adjacency: Adjacency::SideAndBottom,
-            area_mm2: 0.0,
-            regions: None,
-            volume_mm3: 0.0,
-            time_min: 0.0,
-            passes: Vec::new(),
-            after: Vec::new(),
-            drill: None,
-            holes: Vec::new(),
-            finishes: Vec::new(),
-            corners,
-        }
-    }
-}
-
 /// The area a tool of radius `rho` leaves in a corner of radius `r`
 /// turning by `turn` (rad; a right angle's corner turns by π/2): between
 /// the two arcs, (ρ² − r²)(tan(θ/2) − θ/2), mm².
@@ -375,7 +365,12 @@ fn blends(a: &PartAnalysis, m: &MachiningFeature, up: &Vector3) -> Blends {
                 let (lo, hi) = a.extent(&[f], up);
                 let h = hi - lo;
                 if h > 0.0 && radius > 0.0 {
-                    b.corners.push((radius, area / (radius * h), h, area));
+                    b.corners.push(Corner {
+                        radius,
+                        turn: area / (radius * h),
+                        height: h,
+                        area,
+                    });
                 }
             }
             Surface::Cylinder { radius, .. } => {

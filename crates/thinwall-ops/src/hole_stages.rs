@@ -7,14 +7,14 @@
 //! of the library makes (a blended edge, an exit on the far side) are
 //! named with why.
 
-use crate::drilling::{DrillKind, HoleSite};
+use crate::drilling::{entered_from_up, DrillKind, HoleSite};
 use crate::operations::{Operation, SetupOperations};
 use crate::rest::Adjacency;
 use crate::stage::Stage;
 pub use crate::stage::{HoleStage, HoleStep};
 use crate::tools::{CuttingTool, ToolKind, ToolLibrary};
 use thinwall_analysis::MachiningKind;
-use thinwall_geom::{Frame, Vector3};
+use thinwall_geom::Frame;
 use thinwall_machining::{HoleEnd, MachiningFeature};
 
 /// A countersink matches a cone when their included angles differ by no
@@ -34,13 +34,11 @@ pub fn hole_stages(
         .iter()
         .filter(|m| m.kind == MachiningKind::Hole && m.reachable != Some(false))
     {
-        let dir = Vector3::new(m.direction[0], m.direction[1], m.direction[2]);
-        let down = dir.dot(&frame.z) < -1.0 + 1e-6;
-        let from_below = m.through && dir.dot(&frame.z) > 1.0 - 1e-6;
-        if !(down || from_below) {
+        let Some(down) = entered_from_up(m, frame) else {
             continue;
-        }
-        let own: Vec<&HoleSite> = sites.iter().filter(|h| of_hole(&h.id, m)).collect();
+        };
+        let id = m.id.to_string();
+        let own: Vec<&HoleSite> = sites.iter().filter(|h| same_hole(&h.id, &id)).collect();
         let Some(top) = own.iter().map(|h| h.z_top_mm).reduce(f64::max) else {
             continue;
         };
@@ -78,12 +76,6 @@ pub fn hole_stages(
         }
     }
     out
-}
-
-/// Whether site `id` is a bore of `m` (`M4`, `M4.1`, …).
-fn of_hole(id: &str, m: &MachiningFeature) -> bool {
-    let own = m.id.to_string();
-    id == own || id.strip_prefix(&own).is_some_and(|r| r.starts_with('.'))
 }
 
 /// Made by a drill's point (spotted first).
@@ -207,7 +199,7 @@ pub fn place(ops: &mut SetupOperations, stages: &[HoleStage], lib: &ToolLibrary)
             let op = match out.iter_mut().find(|o| o.tool == t.name) {
                 Some(o) => o,
                 None => {
-                    out.push(Operation::hole_stage(t, step, s));
+                    out.push(stage_operation(t, step, s));
                     out.last_mut().expect("just pushed")
                 }
             };
@@ -226,14 +218,11 @@ pub fn place(ops: &mut SetupOperations, stages: &[HoleStage], lib: &ToolLibrary)
         .iter()
         .filter(|s| s.step == HoleStep::Spot && s.tool.is_some())
         .collect();
+    let spotted_holes: Vec<&str> = spotted.iter().map(|s| s.hole.as_str()).collect();
     loop {
         // A drilling operation of spotted holes not yet after its spot.
         let waiting = |all: &[Operation], o: &Operation| {
-            o.stage == Stage::Drill
-                && o.drill.is_some_and(|d| !d.is_stage())
-                && o.holes
-                    .iter()
-                    .any(|h| spotted.iter().any(|s| same_hole(h, &s.hole)))
+            drills_bore_of(o, &spotted_holes)
                 && !o
                     .after
                     .iter()
@@ -273,13 +262,9 @@ pub fn place(ops: &mut SetupOperations, stages: &[HoleStage], lib: &ToolLibrary)
         }
     }
     let drills_of = |ops: &[Operation], holes: &[String]| -> Vec<usize> {
+        let holes: Vec<&str> = holes.iter().map(String::as_str).collect();
         ops.iter()
-            .filter(|o| o.stage == Stage::Drill && o.drill.is_some_and(|k| !k.is_stage()))
-            .filter(|o| {
-                o.holes
-                    .iter()
-                    .any(|h| holes.iter().any(|x| same_hole(h, x)))
-            })
+            .filter(|o| drills_bore_of(o, &holes))
             .map(|o| o.step)
             .collect()
     };
@@ -291,6 +276,16 @@ pub fn place(ops: &mut SetupOperations, stages: &[HoleStage], lib: &ToolLibrary)
         }
     }
     crate::operations::recount(ops);
+}
+
+/// Whether `o` drills (or mills down) a bore of one of `holes`, as opposed
+/// to a stage of theirs.
+fn drills_bore_of(o: &Operation, holes: &[&str]) -> bool {
+    o.stage == Stage::Drill
+        && o.drill.is_some_and(|d| !d.is_stage())
+        && o.holes
+            .iter()
+            .any(|h| holes.iter().any(|x| same_hole(h, x)))
 }
 
 /// Site id `site` (`M4.2`) belongs to hole `hole` (`M4`).
@@ -328,34 +323,22 @@ impl DrillKind {
     }
 }
 
-impl Operation {
-    /// An empty operation of tool `t` for one step of holes' stages.
-    fn hole_stage(t: &CuttingTool, step: HoleStep, s: &HoleStage) -> Self {
-        let kind = match step {
-            HoleStep::Spot => DrillKind::Spot,
-            HoleStep::Countersink => DrillKind::Countersink,
-            HoleStep::Chamfer | HoleStep::Blend => DrillKind::Chamfer,
-        };
-        Operation {
-            step: 0,
-            stage: Stage::Drill,
-            tool: t.name.clone(),
-            diameter_mm: t.diameter_mm,
-            feature: None,
-            z_top_mm: s.z_top_mm,
-            z_bottom_mm: s.z_top_mm - s.depth_mm,
-            adjacency: Adjacency::Side,
-            area_mm2: 0.0,
-            regions: None,
-            volume_mm3: 0.0,
-            time_min: 0.0,
-            passes: Vec::new(),
-            after: Vec::new(),
-            drill: Some(kind),
-            holes: Vec::new(),
-            finishes: Vec::new(),
-            corners: false,
-        }
+/// An operation of tool `t` for one step of holes' stages, to be filled
+/// with its holes.
+fn stage_operation(t: &CuttingTool, step: HoleStep, s: &HoleStage) -> Operation {
+    let kind = match step {
+        HoleStep::Spot => DrillKind::Spot,
+        HoleStep::Countersink => DrillKind::Countersink,
+        HoleStep::Chamfer | HoleStep::Blend => DrillKind::Chamfer,
+    };
+    Operation {
+        drill: Some(kind),
+        ..Operation::empty(
+            Stage::Drill,
+            t,
+            [s.z_top_mm, s.z_top_mm - s.depth_mm],
+            Adjacency::Side,
+        )
     }
 }
 

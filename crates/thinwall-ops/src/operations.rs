@@ -123,19 +123,43 @@ impl Operation {
         pass: Pass,
     ) -> Self {
         Operation {
-            step: 0,
-            stage,
-            tool: tool.name.clone(),
-            diameter_mm: tool.diameter_mm,
             feature,
-            z_top_mm: pass.z_top_mm,
-            z_bottom_mm: pass.z_bottom_mm,
-            adjacency,
             area_mm2: pass.area_mm2,
             regions: pass.regions,
             volume_mm3: pass.volume_mm3,
             time_min: pass.time_min,
-            passes: vec![pass],
+            ..Operation::empty(stage, tool, [pass.z_top_mm, pass.z_bottom_mm], adjacency)
+        }
+        .with_pass(pass)
+    }
+
+    fn with_pass(mut self, pass: Pass) -> Self {
+        self.passes.push(pass);
+        self
+    }
+
+    /// An operation of `tool` at `stage` between heights `z` (top, bottom)
+    /// with nothing in it yet: no passes, figures, holes or features.
+    pub(crate) fn empty(
+        stage: Stage,
+        tool: &CuttingTool,
+        z: [f64; 2],
+        adjacency: Adjacency,
+    ) -> Self {
+        Operation {
+            step: 0,
+            stage,
+            tool: tool.name.clone(),
+            diameter_mm: tool.diameter_mm,
+            feature: None,
+            z_top_mm: z[0],
+            z_bottom_mm: z[1],
+            adjacency,
+            area_mm2: 0.0,
+            regions: None,
+            volume_mm3: 0.0,
+            time_min: 0.0,
+            passes: Vec::new(),
             after: Vec::new(),
             drill: None,
             holes: Vec::new(),
@@ -694,27 +718,15 @@ impl Draft<'_> {
             .map(|h| h.z_bottom_mm)
             .fold(f64::INFINITY, f64::min);
         Operation {
-            step: 0,
-            stage: Stage::Drill,
-            tool: self.tool.name.clone(),
-            diameter_mm: self.tool.diameter_mm,
-            feature: None,
-            z_top_mm: top,
-            z_bottom_mm: bottom,
-            adjacency: self.adjacency,
             area_mm2: self.area,
-            regions: None,
             volume_mm3: self.drilled_mm3,
             time_min: holes
                 .iter()
                 .map(|h| drilling_time_min(self.tool, h.kind, h.z_top_mm - h.z_bottom_mm))
                 .sum(),
-            passes: Vec::new(),
-            after: Vec::new(),
             drill: self.drill,
             holes: holes.iter().map(|h| h.id.clone()).collect(),
-            finishes: Vec::new(),
-            corners: false,
+            ..Operation::empty(Stage::Drill, self.tool, [top, bottom], self.adjacency)
         }
     }
 }

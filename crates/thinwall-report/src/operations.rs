@@ -80,15 +80,11 @@ impl OperationsReport {
             self.tools.tools.len()
         );
         if !r.meshed.is_empty() {
-            let m = &r.meshed;
             let _ = writeln!(
                 s,
-                "meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): sections there exact to that deviation, the removal within ±{:.3} mm³",
-                m.faces.len(),
-                m.triangles,
-                m.deviation_mm,
-                m.area_mm2,
-                m.volume_bound_mm3
+                "meshed: {}: sections there exact to that deviation, the removal within ±{:.3} mm³",
+                crate::plan::meshed_faces(&r.meshed),
+                r.meshed.volume_bound_mm3
             );
         }
         let _ = writeln!(

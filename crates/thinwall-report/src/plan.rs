@@ -185,11 +185,21 @@ fn meshed_line(s: &mut String, m: &thinwall_plan::removal::pieces::Meshed) {
     }
     let _ = writeln!(
         s,
-        "  meshed: {} face(s) as {} triangles within {:.4} mm ({:.1} mm²): the removal within ±{:.3} mm³ of the exact one",
+        "  meshed: {}: the removal within ±{:.3} mm³ of the exact one",
+        meshed_faces(m),
+        m.volume_bound_mm3
+    );
+}
+
+/// A removal's meshed faces in words: how many, as how many triangles,
+/// within what deviation, over what area (the plan's and the operations'
+/// sheets say it alike).
+pub(crate) fn meshed_faces(m: &thinwall_plan::removal::pieces::Meshed) -> String {
+    format!(
+        "{} face(s) as {} triangles within {:.4} mm ({:.1} mm²)",
         m.faces.len(),
         m.triangles,
         m.deviation_mm,
-        m.area_mm2,
-        m.volume_bound_mm3
-    );
+        m.area_mm2
+    )
 }
