@@ -102,6 +102,11 @@ int main(int argc, char **argv) {
         if (tw_result_feature_wall(res, i, &t, &h, &l, &thin) == TW_OK) {
             printf("  %-4s %-7s t=%.2f h=%.2f L=%.2f %s faces=%zu first=#%llu\n", tw_result_feature_id(res, i),
                    tw_result_feature_kind(res, i), t, h, l, thin ? "thin" : "thick", got, (unsigned long long)ids[0]);
+            double below = 0;
+            bool below_thin = false;
+            if (tw_result_feature_other_side(res, i, &below, &below_thin) == TW_OK) {
+                printf("       through its base: other side h=%.2f %s\n", below, below_thin ? "thin" : "thick");
+            }
         } else {
             printf("  %-4s %-7s faces=%zu first=#%llu\n", tw_result_feature_id(res, i), tw_result_feature_kind(res, i),
                    got, (unsigned long long)ids[0]);

@@ -540,6 +540,17 @@ enum tw_status tw_result_feature_wall(const struct tw_result *res,
                                       double *length,
                                       bool *thin);
 
+// A wall running through its base to both of its sides (a frame's outer
+// wall, a rib through a double-sided web): its height on the base's other
+// side, mm, and whether that part needs stiffness support
+// (`tw_result_feature_wall`'s height is on the side this set-up
+// machines). Any out-pointer may be NULL. `TW_ERR_NOT_APPLICABLE` for a
+// feature that is not a wall or stands on one side of its base only.
+enum tw_status tw_result_feature_other_side(const struct tw_result *res,
+                                            size_t i,
+                                            double *height,
+                                            bool *thin);
+
 // The STEP entity ids of feature `i`'s faces. With `buf` NULL, only
 // `*len` is written (a length query). Otherwise, when `cap` is too small,
 // `*len` gets the needed length and `TW_ERR_BUFFER_TOO_SMALL` is returned;

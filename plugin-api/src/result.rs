@@ -191,6 +191,48 @@ pub unsafe extern "C" fn tw_result_feature_wall(
     })
 }
 
+/// A wall running through its base to both of its sides (a frame's outer
+/// wall, a rib through a double-sided web): its height on the base's other
+/// side, mm, and whether that part needs stiffness support
+/// (`tw_result_feature_wall`'s height is on the side this set-up
+/// machines). Any out-pointer may be NULL. `TW_ERR_NOT_APPLICABLE` for a
+/// feature that is not a wall or stands on one side of its base only.
+#[no_mangle]
+pub unsafe extern "C" fn tw_result_feature_other_side(
+    res: *const tw_result,
+    i: usize,
+    height: *mut f64,
+    thin: *mut bool,
+) -> tw_status {
+    guard("tw_result_feature_other_side", || {
+        if res.is_null() {
+            return Err(null("res"));
+        }
+        let f = &(&*res)
+            .report
+            .stiffness_features
+            .get(i)
+            .ok_or((
+                tw_status::TW_ERR_OUT_OF_RANGE,
+                format!("feature {i} out of range"),
+            ))?
+            .feature;
+        let o = f.other_side.as_ref().ok_or_else(|| {
+            (
+                tw_status::TW_ERR_NOT_APPLICABLE,
+                format!("{} does not run through its base", f.id),
+            )
+        })?;
+        if !height.is_null() {
+            *height = o.height;
+        }
+        if !thin.is_null() {
+            *thin = o.thin;
+        }
+        Ok(())
+    })
+}
+
 /// The STEP entity ids of feature `i`'s faces. With `buf` NULL, only
 /// `*len` is written (a length query). Otherwise, when `cap` is too small,
 /// `*len` gets the needed length and `TW_ERR_BUFFER_TOO_SMALL` is returned;

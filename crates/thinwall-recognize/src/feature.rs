@@ -13,6 +13,20 @@ pub struct Plane {
     pub normal: [f64; 3],
 }
 
+/// A wall's figures on the far side of the base it runs through.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct OtherSide {
+    /// The base's side faces it stands on there (`step_id`s).
+    pub base_faces: Vec<u64>,
+    /// From that side of the base to the wall's end, mm.
+    pub height: f64,
+    /// Cantilever deflection of that part under the milling force, mm.
+    pub deflection: f64,
+    /// h/t of that part.
+    pub slenderness: f64,
+    pub thin: bool,
+}
+
 /// One stiffness feature. Walls fill the wall fields; depressions and
 /// details name the `wall` they are in or on.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -51,6 +65,13 @@ pub struct StiffnessFeature {
     /// mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub length: Option<f64>,
+    /// A wall running through its base to both of its sides (a frame's
+    /// outer wall, a rib through a double-sided web): its figures on the
+    /// base's other side. `height`, `deflection` and the foot are on the
+    /// side this set-up machines (the base's side facing up); `thin` holds
+    /// when either side needs support.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub other_side: Option<OtherSide>,
     /// Cantilever deflection under the milling force, mm.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub deflection: Option<f64>,
@@ -172,6 +193,7 @@ impl StiffnessFeature {
             thickness_top: None,
             height: None,
             length: None,
+            other_side: None,
             deflection: None,
             slenderness: None,
             model_note: None,

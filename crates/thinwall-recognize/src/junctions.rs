@@ -1,6 +1,8 @@
 //! How walls meet: T-junctions (a wall standing on another with base
 //! material on both sides of its foot), L-junctions (at the edge of the
-//! other), looking through concave blends (foot fillets).
+//! other), walls running through a base to both of its sides (a frame's
+//! outer walls and the ribs through a double-sided web), looking through
+//! concave blends (foot fillets).
 
 use crate::walls::Wall;
 use std::collections::HashMap;
@@ -16,8 +18,13 @@ pub struct Junction {
     pub base: usize,
     /// T: the leaf's both sides meet the same side of the base.
     pub tee: bool,
-    /// The base's side (0/1) the leaf's foot lies on.
+    /// The base's side (0/1) the leaf's foot lies on; for a wall through
+    /// its base, the side this set-up machines (the one facing up most).
     pub base_side: usize,
+    /// The leaf runs through the base and stands on both of its sides
+    /// (on `1 - base_side` too): a rib through a double-sided web (`tee`),
+    /// a frame's outer wall (an L on each side).
+    pub through: bool,
     /// Length of the foot, mm (junction edges on one side of the leaf).
     pub length: f64,
 }
@@ -92,57 +99,104 @@ pub fn find_junctions(a: &PartAnalysis, walls: &[Wall]) -> Vec<Junction> {
             }
         }
     }
-    let mut out = Vec::new();
     let mut keys: Vec<_> = links.keys().copied().collect();
     keys.sort();
+    let up = a.up();
+    let upper = |b: usize| usize::from(walls[b].normals[1].dot(&up) > walls[b].normals[0].dot(&up));
+    let mut out = Vec::new();
     for (a, b) in keys {
         let m = links[&(a, b)];
-        // a stands on b as a T: both sides of a reach the same side t of b.
-        for (t, (from0, from1)) in m[0].iter().zip(&m[1]).enumerate() {
-            if *from0 > 0.0 && *from1 > 0.0 {
-                out.push(Junction {
-                    leaf: a,
-                    base: b,
-                    tee: true,
-                    base_side: t,
-                    length: 0.5 * (from0 + from1),
-                });
-            }
-        }
-        // L: exactly one side of a meets exactly one side of b, and neither
-        // is a T in either direction (checked from b's view as well).
         let reverse = links.get(&(b, a)).copied().unwrap_or([[0.0; 2]; 2]);
-        let a_tee = (0..2).any(|t| m[0][t] > 0.0 && m[1][t] > 0.0);
-        let b_tee = (0..2).any(|s| reverse[0][s] > 0.0 && reverse[1][s] > 0.0);
-        if a_tee || b_tee || a > b {
-            continue;
-        }
-        let pairs: Vec<(usize, usize)> = (0..2)
-            .flat_map(|s| (0..2).map(move |t| (s, t)))
-            .filter(|&(s, t)| m[s][t] > 0.0)
-            .collect();
-        if pairs.len() != 1 {
-            continue;
-        }
-        let (s, t) = pairs[0];
-        let length = m[s][t];
-        // Both directions; `resolve_l_junctions` keeps the right one.
-        out.push(Junction {
-            leaf: a,
-            base: b,
-            tee: false,
-            base_side: t,
-            length,
-        });
-        out.push(Junction {
-            leaf: b,
-            base: a,
-            tee: false,
-            base_side: s,
-            length,
-        });
+        out.extend(junctions_of_pair(a, b, &m, &reverse, upper(b)));
     }
     out
+}
+
+/// The junctions of wall `a` on wall `b` from the lengths `m[s][t]` along
+/// which side `s` of `a` meets side `t` of `b` (and `reverse`, `b`'s on
+/// `a`): a T on one side of `b` or through it (a T on both), a flange
+/// through `b` (one side of `a` meets both of `b`'s), or an L (both
+/// directions, for [`resolve_l_junctions`]). `upper` is `b`'s side facing
+/// up most.
+fn junctions_of_pair(
+    a: usize,
+    b: usize,
+    m: &[[f64; 2]; 2],
+    reverse: &[[f64; 2]; 2],
+    upper: usize,
+) -> Vec<Junction> {
+    let junction = |leaf, base, tee, base_side, through, length| Junction {
+        leaf,
+        base,
+        tee,
+        base_side,
+        through,
+        length,
+    };
+    let meets = |s: usize, t: usize| m[s][t] > 0.0;
+    let tees: Vec<usize> = (0..2).filter(|&t| meets(0, t) && meets(1, t)).collect();
+    let tee_length = |t: usize| 0.5 * (m[0][t] + m[1][t]);
+    match tees.len() {
+        2 => {
+            let length = tee_length(0).max(tee_length(1));
+            return vec![junction(a, b, true, upper, true, length)];
+        }
+        1 => return vec![junction(a, b, true, tees[0], false, tee_length(tees[0]))],
+        _ => {}
+    }
+    // A flange through `b`: one side of `a` meets both sides of `b`, the
+    // other side none (kept only where `b` is a floor: `prefer_floors`).
+    for s in 0..2 {
+        if meets(s, 0) && meets(s, 1) && !meets(1 - s, 0) && !meets(1 - s, 1) {
+            let length = m[s][0].max(m[s][1]);
+            return vec![junction(a, b, false, upper, true, length)];
+        }
+    }
+    // L: exactly one side of a meets exactly one side of b, and neither is
+    // a T in either direction (checked from b's view as well).
+    let b_tee = (0..2).any(|s| reverse[0][s] > 0.0 && reverse[1][s] > 0.0);
+    let pairs: Vec<(usize, usize)> = (0..2)
+        .flat_map(|s| (0..2).map(move |t| (s, t)))
+        .filter(|&(s, t)| meets(s, t))
+        .collect();
+    if b_tee || a > b || pairs.len() != 1 {
+        return Vec::new();
+    }
+    let (s, t) = pairs[0];
+    // Both directions; `resolve_l_junctions` keeps the right one.
+    vec![
+        junction(a, b, false, t, false, m[s][t]),
+        junction(b, a, false, s, false, m[s][t]),
+    ]
+}
+
+/// Where a wall runs through a floor (a wall whose sides face along up,
+/// within `cos_floor`) the floor is its base, never its leaf: a frame's
+/// web is crossed by its outer walls and ribs, which stand on both of its
+/// sides. A flange-through reading of any other pair is dropped (the other
+/// wall is then a T on it, as before), and so is a floor standing on a wall
+/// that runs through it.
+pub fn prefer_floors(
+    junctions: Vec<Junction>,
+    walls: &[Wall],
+    up: &thinwall_geom::Vector3,
+    cos_floor: f64,
+) -> Vec<Junction> {
+    let floor = |w: usize| walls[w].curved.is_none() && walls[w].normals[0].dot(up).abs() >= cos_floor;
+    let crossed: std::collections::HashSet<(usize, usize)> = junctions
+        .iter()
+        .filter(|j| j.through && floor(j.base) && !floor(j.leaf))
+        .map(|j| (j.leaf, j.base))
+        .collect();
+    junctions
+        .into_iter()
+        .filter(|j| {
+            if crossed.contains(&(j.base, j.leaf)) {
+                return false; // the floor as a leaf of a wall through it
+            }
+            !j.through || j.tee || crossed.contains(&(j.leaf, j.base))
+        })
+        .collect()
 }
 
 /// Decide which wall of each L-junction is the base: a wall carrying
@@ -167,7 +221,7 @@ pub fn resolve_l_junctions(
     junctions
         .into_iter()
         .filter_map(|j| {
-            if j.tee {
+            if j.tee || j.through {
                 return Some(j);
             }
             let (leaf_carries, base_carries) =

@@ -34,7 +34,7 @@ pub mod walls;
 
 pub use config::{Config, ConfigError};
 pub use curved::MidSurface;
-pub use feature::{Plane, StiffnessFeature, WallGeometry};
+pub use feature::{OtherSide, Plane, StiffnessFeature, WallGeometry};
 pub use junctions::Junction;
 pub use thinwall_analysis::{FeatureId, StiffnessKind};
 
@@ -67,8 +67,9 @@ pub fn recognize(a: &PartAnalysis, config: &Config) -> Recognition {
         .iter()
         .map(|w| w.mid_plane().0.coords.dot(&up))
         .collect();
+    let cos_floor = config.thresholds.parallel_angle_deg.to_radians().cos();
     let junctions = junctions::resolve_l_junctions(
-        junctions::find_junctions(a, &walls),
+        junctions::prefer_floors(junctions::find_junctions(a, &walls), &walls, &up, cos_floor),
         |w| heights[w],
         a.tol().feature,
     );

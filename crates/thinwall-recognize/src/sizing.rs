@@ -30,6 +30,20 @@ pub struct WallSize {
     /// `min_extent_to_thickness` × t): kept as a base for others, never
     /// reported.
     pub squat: bool,
+    /// A wall through its base: its figures on the base's other side
+    /// (`height` and the rest are on the side this set-up machines).
+    pub other_side: Option<OtherSide>,
+}
+
+/// A wall's figures on the far side of the base it runs through.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OtherSide {
+    /// The base's side it stands on there (0/1).
+    pub base_side: usize,
+    /// mm, from that side of the base to the wall's end.
+    pub height: f64,
+    pub deflection: f64,
+    pub thin: bool,
 }
 
 /// Size every wall: walls on a base from the base, walls without one (webs)
@@ -55,15 +69,20 @@ pub fn size_walls(
         // A drafted wall is judged on its thinnest section (the top, for a
         // wall tapering from its foot): a uniform wall that thin deflects
         // at least as much, so the verdict errs towards support.
-        s.deflection = deflection_mm(
-            wall.thickness_range.0,
-            s.height,
-            s.length.max(s.height),
-            &config.thinness,
-        );
-        s.thin = s.deflection > config.thinness.allowed_deflection_mm;
+        let t = wall.thickness_range.0;
+        let deflection = |h: f64| deflection_mm(t, h, s.length.max(h), &config.thinness);
+        let allowed = config.thinness.allowed_deflection_mm;
+        s.deflection = deflection(s.height);
+        if let Some(o) = &mut s.other_side {
+            o.deflection = deflection(o.height);
+            o.thin = o.deflection > allowed;
+        }
+        // Thin where it needs support on either side of its base.
+        s.thin = s.deflection > allowed || s.other_side.as_ref().is_some_and(|o| o.thin);
         let least = config.thresholds.min_extent_to_thickness * wall.thickness_range.0;
-        s.squat = s.height < least || s.length < least;
+        // A wall through its base is squat only where it is on both sides.
+        let tallest = s.other_side.as_ref().map_or(s.height, |o| o.height.max(s.height));
+        s.squat = tallest < least || s.length < least;
     }
     sizes
 }
@@ -104,16 +123,27 @@ fn on_base(
         height_dir: up,
         foot_plane: None,
         squat: false,
+        other_side: None,
     };
     if let Some(j) = best {
-        // A curved base's tangent plane under the leaf's middle.
-        let (origin, n) = walls[j.base].side_plane_near(j.base_side, &wall.mid_plane().0);
         let pts = wall.outline();
-        let rise = pts
-            .iter()
-            .map(|p| (p - origin).dot(&n).abs())
-            .fold(0.0, f64::max);
-        size.height = wall.developed_height(&n).unwrap_or(rise);
+        let (side, other) = if j.through {
+            through_sides(&walls[j.base], j.base_side, wall, &up)
+        } else {
+            (j.base_side, None)
+        };
+        // A curved base's tangent plane under the leaf's middle.
+        let (origin, n) = walls[j.base].side_plane_near(side, &wall.mid_plane().0);
+        size.height = match &other {
+            // On this side of the base only.
+            Some(_) => rise_above((origin, n), &pts),
+            None => wall.developed_height(&n).unwrap_or_else(|| {
+                pts.iter()
+                    .map(|p| (p - origin).dot(&n).abs())
+                    .fold(0.0, f64::max)
+            }),
+        };
+        size.other_side = other;
         let along = wall.frame.z.cross(&n);
         size.length = match (
             wall.developed_span(&n),
@@ -129,8 +159,40 @@ fn on_base(
     size
 }
 
+/// How far the points rise above a plane (a point on it and its outward
+/// normal), mm: none below it count.
+fn rise_above((origin, n): (Point3, Vector3), pts: &[Point3]) -> f64 {
+    pts.iter().map(|p| (p - origin).dot(&n)).fold(0.0, f64::max)
+}
+
+/// A wall through `base`: the base's side this set-up machines — the one
+/// facing up most (`upper`), or where both face alike (a vertical base),
+/// the one the wall rises higher above — and the wall's figures on the
+/// other side (deflection and thinness filled in by `size_walls`).
+fn through_sides(base: &Wall, upper: usize, wall: &Wall, up: &Vector3) -> (usize, Option<OtherSide>) {
+    let pts = wall.outline();
+    let mid = wall.mid_plane().0;
+    let rise = |t: usize| rise_above(base.side_plane_near(t, &mid), &pts);
+    let facing = |t: usize| base.side_plane_near(t, &mid).1.dot(up);
+    let side = if (facing(0) - facing(1)).abs() > thinwall_geom::tolerance::NEAR_PARALLEL_EPS {
+        upper
+    } else if (rise(0) - rise(1)).abs() > thinwall_geom::tolerance::SAME_LENGTH_MM {
+        usize::from(rise(1) > rise(0))
+    } else {
+        upper
+    };
+    let other = OtherSide {
+        base_side: 1 - side,
+        height: rise(1 - side),
+        deflection: 0.0,
+        thin: false,
+    };
+    (side, Some(other))
+}
+
 /// A wall without a base (a web) is measured by its widest cell: the side
-/// its leaves stand on (most of them), each face of it a cell.
+/// its leaves stand on (most of them; both sides of a web that walls run
+/// through), each face of it a cell.
 fn without_base(
     a: &PartAnalysis,
     wall: &Wall,
@@ -141,20 +203,26 @@ fn without_base(
     let leaf_sides: Vec<usize> = junctions
         .iter()
         .filter(|j| j.base == w)
-        .map(|j| j.base_side)
+        .flat_map(|j| {
+            let other = j.through.then_some(1 - j.base_side);
+            std::iter::once(j.base_side).chain(other)
+        })
         .collect();
-    let side = usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
+    let majority = usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
+    let through = junctions.iter().any(|j| j.base == w && j.through);
+    let sides: Vec<usize> = if through { vec![0, 1] } else { vec![majority] };
     let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {
         vec![wall.region.clone()]
     } else if let Some(c) = &wall.curved {
         // Developed, at the mid-surface.
-        c.side_polygons[side]
+        sides
             .iter()
-            .map(|(_, p)| p.clone())
+            .flat_map(|&s| c.side_polygons[s].iter().map(|(_, p)| p.clone()))
             .collect()
     } else {
-        wall.sides[side]
+        sides
             .iter()
+            .flat_map(|&s| wall.sides[s].iter())
             .filter_map(|&f| a.planar(f))
             .map(|p| p.polygon_in(&wall.frame))
             .collect()
@@ -176,13 +244,16 @@ fn without_base(
         .unwrap_or(wall.frame.x);
 }
 
-/// Kinds: a wall carrying thin leaves is a web; a wall on a base is a rib
-/// (T-foot) or a flange (L-foot); else a wall.
+/// Kinds: a wall carrying thin leaves, or one that walls run through (an
+/// I-section's web, squat outer walls or not), is a web; a wall on a base
+/// is a rib (T-foot) or a flange (L-foot); else a wall.
 pub fn kinds(sizes: &[WallSize]) -> Vec<StiffnessKind> {
     (0..sizes.len())
         .map(|w| {
-            let thin_leaves = sizes.iter().any(|s| s.base == Some(w) && s.thin);
-            if thin_leaves {
+            let carries = sizes
+                .iter()
+                .any(|s| s.base == Some(w) && (s.thin || s.other_side.is_some() || s.squat));
+            if carries {
                 StiffnessKind::Web
             } else if sizes[w].base.is_some() {
                 if sizes[w].tee {

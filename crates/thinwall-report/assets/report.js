@@ -281,6 +281,7 @@
       ['thickness', mm(f.thickness)], ['thickness at foot / top', f.thickness_foot !== undefined ? mm(f.thickness_foot) + ' / ' + mm(f.thickness_top) : null],
       ['surface', midSurface(f.mid_surface)],
       ['height', mm(f.height)], ['length', mm(f.length)], ['deflection', mm(f.deflection === undefined ? undefined : f.deflection)],
+      ['through its base', f.other_side ? 'on the other side h ' + mm(f.other_side.height) + ', δ ' + mm(f.other_side.deflection) + ', h/t ' + fmt(f.other_side.slenderness) + (f.other_side.thin ? ', thin' : ', not thin') : null],
       ['slenderness (h/t)', f.slenderness === undefined ? null : fmt(f.slenderness)], ['diameter', mm(f.diameter)], ['width', mm(f.width)],
       ['radius', mm(f.radius)], ['through', f.through === undefined ? null : String(f.through)], ['large', f.large === undefined ? null : String(f.large)],
       ['base', f.base], ['in wall', f.wall], ['note', f.model_note], ...access,

@@ -233,7 +233,27 @@ fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
             f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
             f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
             f.faces.len(),
-            f.base.map(|b| b.to_string()).unwrap_or_default() + &curved_note(f)
+            f.base.map(|b| b.to_string()).unwrap_or_default()
+                + if f.other_side.is_some() { " (through)" } else { "" }
+                + &curved_note(f)
+        );
+    }
+}
+
+/// Walls through their base: their figures on its other side.
+fn other_sides_text(s: &mut String, walls: &[&StiffnessFeature]) {
+    for f in walls {
+        let (Some(o), Some(base)) = (&f.other_side, f.base) else {
+            continue;
+        };
+        let _ = writeln!(
+            s,
+            "  {}: runs through {base} to both of its sides; on the other: h {} mm, defl. {:.4} mm, h/t {:.1}, {}",
+            f.id,
+            mm(Some(o.height)),
+            o.deflection,
+            o.slenderness,
+            if o.thin { "thin" } else { "not thin" }
         );
     }
 }
@@ -420,6 +440,7 @@ impl RecognitionReport {
         let (walls, others): (Vec<&StiffnessFeature>, Vec<&StiffnessFeature>) =
             feats.iter().copied().partition(|f| f.kind.is_wall());
         walls_text(&mut s, &walls);
+        other_sides_text(&mut s, &walls);
         others_text(&mut s, &others);
         for f in walls.iter().filter(|f| f.model_note.is_some()) {
             let _ = writeln!(
