@@ -68,8 +68,18 @@ fn expected_walls(t: &Truth) -> Vec<Expected> {
                 kind,
             })
         };
-        wall(format!("outer wall {axis} lo"), 0.0, frame, StiffnessKind::Flange);
-        wall(format!("outer wall {axis} hi"), size - frame, size, StiffnessKind::Flange);
+        wall(
+            format!("outer wall {axis} lo"),
+            0.0,
+            frame,
+            StiffnessKind::Flange,
+        );
+        wall(
+            format!("outer wall {axis} hi"),
+            size - frame,
+            size,
+            StiffnessKind::Flange,
+        );
         for (k, (&a, &b)) in hi.iter().zip(&lo[1..]).enumerate() {
             wall(format!("rib {axis}.{k}"), a, b, StiffnessKind::Rib);
         }
@@ -128,7 +138,10 @@ fn check_wall(
         (None, None) => {}
         (Some(want), Some(o)) if (o.height - want).abs() <= TOL => {
             if !o.base_faces.iter().all(|x| web.faces.contains(x)) || o.base_faces.is_empty() {
-                say(format!("other side on faces {:?}, not the web's", o.base_faces));
+                say(format!(
+                    "other side on faces {:?}, not the web's",
+                    o.base_faces
+                ));
             }
         }
         (want, got) => say(format!(
@@ -147,7 +160,10 @@ fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, usize, Vec
             .unwrap();
     let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
     let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "panel.step").unwrap();
-    let (r, t) = seed.map_or((Rotation3::identity(), Vector3::zeros()), common::rigid_motion);
+    let (r, t) = seed.map_or(
+        (Rotation3::identity(), Vector3::zeros()),
+        common::rigid_motion,
+    );
     let up = r * Vector3::z();
     let config = Config::default();
     let rec = common::recognize_with(&part, [up.x, up.y, up.z], &config);
@@ -164,9 +180,16 @@ fn panel_errors(path: &std::path::Path, seed: Option<u64>) -> (usize, usize, Vec
     };
     let mut errors = Vec::new();
     if (web.thickness.unwrap_or(f64::NAN) - truth.web).abs() > TOL {
-        errors.push(format!("{name}: web t {:?} (want {})", web.thickness, truth.web));
+        errors.push(format!(
+            "{name}: web t {:?} (want {})",
+            web.thickness, truth.web
+        ));
     }
-    let height = truth.pockets.iter().map(|p| p.bounds[5]).fold(0.0, f64::max);
+    let height = truth
+        .pockets
+        .iter()
+        .map(|p| p.bounds[5])
+        .fold(0.0, f64::max);
     let heights = (
         height - truth.web_z[1],
         truth.both_sides.then_some(truth.web_z[0]),

@@ -16,7 +16,10 @@ fn other_side_of_walls_through_a_web() {
     .unwrap();
     unsafe {
         let mut part = null_mut();
-        assert_eq!(tw_part_load_file(path.as_ptr(), &mut part), tw_status::TW_OK);
+        assert_eq!(
+            tw_part_load_file(path.as_ptr(), &mut part),
+            tw_status::TW_OK
+        );
         let mut opt = null_mut();
         assert_eq!(tw_options_new(&mut opt), tw_status::TW_OK);
         let mut res = null_mut();

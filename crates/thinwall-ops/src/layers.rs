@@ -106,7 +106,7 @@ pub struct RoughingLayer {
 /// point. Levels closer than `tol` are one (the flat face's wins).
 pub fn levels(r: &Removal, axial_depth_mm: f64, tol: f64) -> Vec<(f64, Vec<u64>)> {
     let (mut top, mut bottom) = (f64::NEG_INFINITY, f64::INFINITY);
-    for b in &r.blocks {
+    for b in reachable(r) {
         top = top.max(r.bound_range(&b.upper)[1]);
         bottom = bottom.min(r.bound_range(&b.lower)[0]);
     }
@@ -152,9 +152,7 @@ pub fn levels(r: &Removal, axial_depth_mm: f64, tol: f64) -> Vec<(f64, Vec<u64>)
 pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
     let tol = 1e-6 * r.size.max(1.0);
     let levels = levels(r, opts.axial_depth_mm, tol);
-    let Some(top) = r
-        .blocks
-        .iter()
+    let Some(top) = reachable(r)
         .map(|b| r.bound_range(&b.upper)[1])
         .max_by(f64::total_cmp)
     else {
@@ -225,15 +223,37 @@ pub(crate) fn without_slivers(p: &Polygon<f64>, tol: f64) -> Option<Polygon<f64>
     ))
 }
 
-/// The removal region's cross-section at `z`: every block's, joined where
-/// they meet.
+/// The removal region's cross-section at `z` that a tool along up reaches:
+/// every reachable block's, joined where they meet.
 pub fn section(r: &Removal, z: f64) -> Vec<Polygon<f64>> {
-    let pieces: Vec<Polygon<f64>> = r
-        .blocks
-        .iter()
+    let pieces: Vec<Polygon<f64>> = reachable(r)
         .flat_map(|b| slab::section(r, b, z).0)
         .collect();
     join(&pieces, r.size)
+}
+
+/// The blocks a tool along up reaches (nothing of the part above them):
+/// what lies under the part (the far side of a double-sided web) is
+/// another set-up's, never this one's layers.
+pub fn reachable(r: &Removal) -> impl Iterator<Item = &thinwall_removal::Block> {
+    r.blocks.iter().filter(|b| b.reachable)
+}
+
+/// The volume of the blocks a tool along up does not reach, mm³: none
+/// under [`MERGE`](thinwall_geom::tolerance::MERGE) of the stock's volume
+/// (rounding of a turned part's faces, not material).
+pub fn out_of_reach_mm3(r: &Removal) -> f64 {
+    let v: f64 = r
+        .blocks
+        .iter()
+        .filter(|b| !b.reachable)
+        .map(|b| b.volume)
+        .sum();
+    if v > thinwall_geom::tolerance::MERGE * r.stock_volume {
+        v
+    } else {
+        0.0
+    }
 }
 
 /// Sections of blocks joined into one region. Blocks that tile the
@@ -264,11 +284,10 @@ pub(crate) fn join(pieces: &[Polygon<f64>], size: f64) -> Vec<Polygon<f64>> {
 /// shoelace area by more than this share folds over itself.
 const FOLD_SHARE: f64 = 1e-6;
 
-/// The sum of every block's cross-section at `z`, mm² (the joined
-/// section must keep it).
+/// The sum of every reachable block's cross-section at `z`, mm² (the
+/// joined section must keep it).
 pub fn section_area_by_blocks(r: &Removal, z: f64) -> f64 {
-    r.blocks
-        .iter()
+    reachable(r)
         .map(|b| slab::section(r, b, z).unsigned_area())
         .sum()
 }

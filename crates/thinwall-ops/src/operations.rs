@@ -271,6 +271,12 @@ pub struct SetupOperations {
     /// the machining deviation there.
     #[serde(skip_serializing_if = "Meshed::is_empty")]
     pub meshed: Meshed,
+    /// Material under the part that a tool along up cannot reach (the
+    /// far side of a double-sided web, an undercut): another set-up's,
+    /// mm³ (operations from the stock's top; along the plan, its features
+    /// are in `other_setup`).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub out_of_reach_mm3: f64,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -444,6 +450,7 @@ pub(crate) fn assemble(
         radius_finishes: Vec::new(),
         hole_stages: Vec::new(),
         meshed: Meshed::default(),
+        out_of_reach_mm3: 0.0,
         layers,
         field_tools,
         operations,
@@ -742,4 +749,8 @@ pub(crate) fn recount(ops: &mut SetupOperations) {
     ops.plain_tool_changes += changes.saturating_sub(ops.tool_changes);
     ops.tool_changes = changes;
     ops.time_min = ops.operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0;
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }

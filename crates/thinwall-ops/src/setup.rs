@@ -66,6 +66,7 @@ pub fn plan_setup(
     let holes = hole_sites(features, &frame, lib);
     let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
     ops.meshed = removal.meshed.clone();
+    ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(&removal);
     finish_by_radii(&mut ops, a, features, &frame, lib);
     Ok((frame, ops))
 }

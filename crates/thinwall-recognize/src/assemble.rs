@@ -102,7 +102,9 @@ fn wall_feature(
     let slenderness = |h: f64| if t > 0.0 { h / t } else { 0.0 };
     f.slenderness = Some(slenderness(s.height));
     f.other_side = s.other_side.as_ref().map(|o| OtherSide {
-        base_faces: base.map(|b| a.step_ids(&b.sides[o.base_side])).unwrap_or_default(),
+        base_faces: base
+            .map(|b| a.step_ids(&b.sides[o.base_side]))
+            .unwrap_or_default(),
         height: o.height,
         deflection: o.deflection,
         slenderness: slenderness(o.height),

@@ -146,10 +146,9 @@ fn junctions_of_pair(
     }
     // A flange through `b`: one side of `a` meets both sides of `b`, the
     // other side none (kept only where `b` is a floor: `prefer_floors`).
-    for s in 0..2 {
+    for (s, row) in m.iter().enumerate() {
         if meets(s, 0) && meets(s, 1) && !meets(1 - s, 0) && !meets(1 - s, 1) {
-            let length = m[s][0].max(m[s][1]);
-            return vec![junction(a, b, false, upper, true, length)];
+            return vec![junction(a, b, false, upper, true, row[0].max(row[1]))];
         }
     }
     // L: exactly one side of a meets exactly one side of b, and neither is
@@ -182,7 +181,8 @@ pub fn prefer_floors(
     up: &thinwall_geom::Vector3,
     cos_floor: f64,
 ) -> Vec<Junction> {
-    let floor = |w: usize| walls[w].curved.is_none() && walls[w].normals[0].dot(up).abs() >= cos_floor;
+    let floor =
+        |w: usize| walls[w].curved.is_none() && walls[w].normals[0].dot(up).abs() >= cos_floor;
     let crossed: std::collections::HashSet<(usize, usize)> = junctions
         .iter()
         .filter(|j| j.through && floor(j.base) && !floor(j.leaf))

@@ -81,7 +81,10 @@ pub fn size_walls(
         s.thin = s.deflection > allowed || s.other_side.as_ref().is_some_and(|o| o.thin);
         let least = config.thresholds.min_extent_to_thickness * wall.thickness_range.0;
         // A wall through its base is squat only where it is on both sides.
-        let tallest = s.other_side.as_ref().map_or(s.height, |o| o.height.max(s.height));
+        let tallest = s
+            .other_side
+            .as_ref()
+            .map_or(s.height, |o| o.height.max(s.height));
         s.squat = tallest < least || s.length < least;
     }
     sizes
@@ -169,7 +172,12 @@ fn rise_above((origin, n): (Point3, Vector3), pts: &[Point3]) -> f64 {
 /// facing up most (`upper`), or where both face alike (a vertical base),
 /// the one the wall rises higher above — and the wall's figures on the
 /// other side (deflection and thinness filled in by `size_walls`).
-fn through_sides(base: &Wall, upper: usize, wall: &Wall, up: &Vector3) -> (usize, Option<OtherSide>) {
+fn through_sides(
+    base: &Wall,
+    upper: usize,
+    wall: &Wall,
+    up: &Vector3,
+) -> (usize, Option<OtherSide>) {
     let pts = wall.outline();
     let mid = wall.mid_plane().0;
     let rise = |t: usize| rise_above(base.side_plane_near(t, &mid), &pts);
@@ -208,7 +216,8 @@ fn without_base(
             std::iter::once(j.base_side).chain(other)
         })
         .collect();
-    let majority = usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
+    let majority =
+        usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
     let through = junctions.iter().any(|j| j.base == w && j.through);
     let sides: Vec<usize> = if through { vec![0, 1] } else { vec![majority] };
     let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {

@@ -136,6 +136,13 @@ impl OperationsReport {
         for h in &r.hole_stages {
             hole_stage_line(&mut s, h);
         }
+        if r.out_of_reach_mm3 > 0.0 {
+            let _ = writeln!(
+                s,
+                "left to another set-up: {:.1} mm³ under the part, which a tool along this set-up's up does not reach",
+                r.out_of_reach_mm3
+            );
+        }
         if !r.other_setup.is_empty() {
             let _ = writeln!(
                 s,

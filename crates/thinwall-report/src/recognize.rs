@@ -234,7 +234,11 @@ fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
             f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
             f.faces.len(),
             f.base.map(|b| b.to_string()).unwrap_or_default()
-                + if f.other_side.is_some() { " (through)" } else { "" }
+                + if f.other_side.is_some() {
+                    " (through)"
+                } else {
+                    ""
+                }
                 + &curved_note(f)
         );
     }
