@@ -235,3 +235,67 @@ fn outer_walls_and_ribs_run_through_a_double_sided_web_in_any_pose() {
     assert!(checked > 0);
     assert!(errors.is_empty(), "{}", errors.join("\n"));
 }
+
+/// Each set-up of a panel pocketed from both sides (up along +z and along
+/// −z, as built) sizes a rib through the web on its own side: the plan's
+/// wall height is that side's pockets' depth, the rib's step-approach
+/// layers stay within it above the foot, and the web's permissible height
+/// caps the rib's layers alike from either side (the side the rib stands
+/// on is the one its height runs from, not where its middle happens to be).
+#[test]
+fn each_set_up_sizes_a_wall_through_the_web_on_its_own_side() {
+    let rules = thinwall_plan::RuleSet::default_rules();
+    let mut ribs = 0;
+    for path in common::generated_parts("THINWALL_POCKETS_DIR", "pockets") {
+        let truth: Truth = serde_json::from_str(
+            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
+        )
+        .unwrap();
+        if !truth.both_sides {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let top = truth
+            .pockets
+            .iter()
+            .map(|p| p.bounds[5])
+            .fold(0.0, f64::max);
+        let mut adapted = Vec::new();
+        for (up, depth) in [(1.0, top - truth.web_z[1]), (-1.0, truth.web_z[0])] {
+            let (_, plan) = common::plan_text(&text, [0.0, 0.0, up], &rules);
+            let name = format!("{} up {up}", path.display());
+            for w in plan.walls.iter().filter(|w| w.kind == StiffnessKind::Rib) {
+                ribs += 1;
+                let h = w.sizes.wall.height;
+                assert!(
+                    (h - depth).abs() <= TOL,
+                    "{name}: {} h {h}, want {depth}",
+                    w.id
+                );
+                for l in plan.layers.iter().filter(|l| l.owner == w.id) {
+                    assert!(
+                        l.from_foot[1] <= h + TOL,
+                        "{name}: {} {:?}",
+                        l.id,
+                        l.from_foot
+                    );
+                }
+            }
+            let mut by_web: Vec<String> = plan
+                .adaptations
+                .iter()
+                .filter(|a| a.rule == thinwall_plan::adapt::AdaptRule::ConnectedWall)
+                .map(|a| a.change.clone())
+                .collect();
+            by_web.sort();
+            adapted.push(by_web);
+        }
+        assert_eq!(
+            adapted[0],
+            adapted[1],
+            "{}: the web caps the ribs differently from either side",
+            path.display()
+        );
+    }
+    assert!(ribs > 0);
+}

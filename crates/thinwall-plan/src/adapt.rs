@@ -269,9 +269,10 @@ fn connected_walls(
         if !web.sizes.thin || web.sizes.deflection_mm > web.sizes.parameters.allowed_deflection_mm {
             continue;
         }
-        // The web's side the leaf stands on, and its permissible height.
-        let mid = gl.frame.origin - gl.frame.z * (0.5 * gl.thickness);
-        let web_side = u8::from((mid - gw.frame.origin).dot(&gw.frame.z) < -0.5 * gw.thickness);
+        // The web's side the leaf stands on (its height runs away from
+        // it: for a wall through the web, the side this set-up machines),
+        // and its permissible height.
+        let web_side = u8::from(gl.height_direction.dot(&gw.frame.z) < 0.0);
         let large = crate::steps::large_side(out, scene, web_id, gw, &up);
         let cap = if web_side == large {
             web.sizes.big_h
