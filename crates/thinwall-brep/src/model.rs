@@ -172,9 +172,43 @@ pub struct Part {
     pub edges: Vec<Edge>,
     pub vertices: Vec<Vertex>,
     pub supplemental: Supplemental,
+    /// The faces each edge bounds, built on first use ([`Part::edge_faces`]).
+    #[serde(skip)]
+    pub edge_faces_cache: EdgeFaces,
+}
+
+/// Per edge, the faces whose loops use it (a cache: any two are equal, so
+/// a part compares by its geometry and topology alone).
+#[derive(Clone, Debug, Default)]
+pub struct EdgeFaces(std::sync::OnceLock<Vec<Vec<FaceId>>>);
+
+impl PartialEq for EdgeFaces {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl Part {
+    /// The faces whose loops use edge `e` (two on a closed shell; a seam
+    /// edge's face once), in face order. Built once per part.
+    pub fn edge_faces(&self, e: EdgeId) -> &[FaceId] {
+        let map = self.edge_faces_cache.0.get_or_init(|| {
+            let mut map = vec![Vec::new(); self.edges.len()];
+            for (fi, f) in self.faces.iter().enumerate() {
+                for &l in &f.loops {
+                    for ce in &self.loop_(l).coedges {
+                        let list: &mut Vec<FaceId> = &mut map[ce.edge.index()];
+                        if list.last() != Some(&FaceId(fi as u32)) {
+                            list.push(FaceId(fi as u32));
+                        }
+                    }
+                }
+            }
+            map
+        });
+        map.get(e.index()).map_or(&[], Vec::as_slice)
+    }
+
     pub fn face(&self, id: FaceId) -> &Face {
         &self.faces[id.index()]
     }

@@ -18,8 +18,9 @@
 //! columns saw one face and not the other.
 
 use thinwall_analysis::polygon::coedge_params;
-use thinwall_brep::{FaceId, Part};
-use thinwall_geom::{CurveKind, Frame, Point3};
+use thinwall_brep::{EdgeId, FaceId, Part};
+use thinwall_geom::tolerance::{NEAR_PARALLEL_EPS, SAME_LENGTH_MM};
+use thinwall_geom::{CurveKind, Frame, Point3, Surface};
 
 /// Chords per knot span of a curved edge.
 const CHORDS_PER_SPAN: usize = 16;
@@ -38,7 +39,7 @@ pub fn face_loop_points(part: &Part, face: FaceId) -> Vec<Vec<Point3>> {
                     pts.push(part.vertex(if ce.forward { e.start } else { e.end }).point);
                     continue;
                 };
-                edge_points(&e.curve, c, ce.forward, &mut pts);
+                edge_points(part, ce.edge, c, ce.forward, &mut pts);
             }
             pts
         })
@@ -55,7 +56,7 @@ pub fn edge_interior_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3
         return Vec::new();
     };
     let mut pts = Vec::new();
-    edge_points(&edge.curve, c, true, &mut pts);
+    edge_points(part, e, c, true, &mut pts);
     // Its start vertex is the loop's, not the edge's inside.
     if !pts.is_empty() {
         pts.remove(0);
@@ -63,76 +64,180 @@ pub fn edge_interior_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3
     pts
 }
 
-/// An edge's points from its start (its end left to the next edge): a
-/// circle arc's by angle ([`arc_points`]), any other curve's per span.
+/// An edge's points from its start (its end left to the next edge): cut
+/// evenly by angle about the axis it runs round — the cylinder one of its
+/// faces is (so a cylinder's top and bottom edges, which project onto one
+/// arc when it stands along up, are cut alike whatever their curves), else
+/// a circle's own — or per span ([`chord_points`]) for any other curve or
+/// an edge along a cylinder's generator.
 fn edge_points(
-    kind: &CurveKind,
+    part: &Part,
+    e: EdgeId,
     c: &thinwall_geom::NurbsCurve,
     forward: bool,
     pts: &mut Vec<Point3>,
 ) {
-    match kind {
-        CurveKind::Circle { frame, radius } => arc_points(frame, *radius, c, forward, pts),
-        _ => chord_points(c, forward, pts),
+    let edge = part.edge(e);
+    let circle = match &edge.curve {
+        CurveKind::Circle { frame, radius } => Some((frame, *radius)),
+        _ => None,
+    };
+    let cylinder = part
+        .edge_faces(e)
+        .iter()
+        .filter_map(|&f| match &part.face(f).surface {
+            Surface::Cylinder { frame, radius } => Some((frame, *radius)),
+            _ => None,
+        })
+        .max_by(|a, b| a.1.total_cmp(&b.1));
+    let axis = cylinder.or(circle).map(|(f, _)| *f);
+    let done = axis.is_some_and(|axis| {
+        // A circle coaxial with the axis is evaluated in closed form.
+        let coaxial = circle.filter(|(cf, _)| {
+            cf.z.dot(&axis.z).abs() > 1.0 - NEAR_PARALLEL_EPS
+                && (cf.origin - axis.origin).cross(&axis.z).norm() <= SAME_LENGTH_MM
+        });
+        turn_points(
+            &axis,
+            coaxial.map(|(cf, r)| (cf.origin, r)),
+            c,
+            forward,
+            pts,
+        )
+    });
+    if !done {
+        chord_points(c, forward, pts);
     }
 }
 
-/// A circle arc's chord ends from its start, even in angle between its
-/// ends (the same points for any two arcs with the same centre, radius
-/// and ends, either way round), each chord followed by its midpoint pushed
-/// out by 4/3 of the sagitta. `CHORDS_PER_SPAN` chords a quarter turn.
-fn arc_points(
-    frame: &Frame,
-    radius: f64,
+/// The points of a curve running round `axis` (z the axis, x and y
+/// across it), even in angle between its ends (the same angles for any
+/// two curves with the same ends about one axis, either way round), each
+/// chord followed by its midpoint pushed out by 4/3 of the sagitta;
+/// `CHORDS_PER_SPAN` chords a quarter turn. A coaxial circle (its centre
+/// and radius) is evaluated in closed form, any other curve at the
+/// parameter where it reaches each angle. False, nothing pushed, for a
+/// curve that does not turn about the axis (a generator).
+fn turn_points(
+    axis: &Frame,
+    circle: Option<(Point3, f64)>,
     c: &thinwall_geom::NurbsCurve,
     forward: bool,
     pts: &mut Vec<Point3>,
-) {
+) -> bool {
     use std::f64::consts::{FRAC_PI_2, TAU};
     let (t0, t1) = c.domain();
     let angle = |p: &Point3| {
-        let d = p - frame.origin;
-        d.dot(&frame.y).atan2(d.dot(&frame.x))
+        let d = p - axis.origin;
+        d.dot(&axis.y).atan2(d.dot(&axis.x))
     };
-    let at = |theta: f64| frame.origin + (frame.x * theta.cos() + frame.y * theta.sin()) * radius;
     let (a0, a1, am) = (
         angle(&c.point(t0)),
         angle(&c.point(t1)),
         angle(&c.point(0.5 * (t0 + t1))),
     );
-    // The counter-clockwise turn from the start to the end (a whole turn
-    // for a closed circle), and whether the curve runs that way.
-    let ccw = |from: f64, to: f64| {
-        let t = (to - from).rem_euclid(TAU);
-        if t <= 1e-12 {
+    let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
+    let closed = (c.point(t0) - c.point(t1)).norm() <= SAME_LENGTH_MM;
+    let still = |x: f64| x <= TURN_EPS || TAU - x <= TURN_EPS;
+    if !closed && still(ccw(a0, a1)) && still(ccw(a0, am)) {
+        return false;
+    }
+    let sweep = if closed {
+        // A whole turn: counter-clockwise when a quarter along the curve
+        // lies less than half a turn that way.
+        let aq = angle(&c.point(t0 + 0.25 * (t1 - t0)));
+        if ccw(a0, aq) < std::f64::consts::PI {
             TAU
         } else {
-            t
+            -TAU
         }
-    };
-    let turn = ccw(a0, a1);
-    let sweep = if ccw(a0, am) < turn { turn } else { turn - TAU };
-    let (start, sweep) = if forward {
-        (a0, sweep)
     } else {
-        (a0 + sweep, -sweep)
+        // Counter-clockwise when the middle lies on that side of the start.
+        let turn = ccw(a0, a1);
+        if ccw(a0, am) < turn {
+            turn
+        } else {
+            turn - TAU
+        }
     };
     // Arcs of equal turn get equal counts: a quarter is 16 chords even a
     // rounding over it.
     let n = ((CHORDS_PER_SPAN as f64 * sweep.abs() / FRAC_PI_2) - 1e-6)
         .ceil()
         .max(1.0) as usize;
+    let at = |theta: f64| -> Point3 {
+        match circle {
+            Some((o, r)) => o + (axis.x * theta.cos() + axis.y * theta.sin()) * r,
+            None => c.point(param_at(c, &angle, (a0, sweep, closed), theta)),
+        }
+    };
+    let mut thetas: Vec<f64> = (0..=2 * n)
+        .map(|k| a0 + sweep * k as f64 / (2 * n) as f64)
+        .collect();
+    if !forward {
+        thetas.reverse();
+    }
     for k in 0..n {
-        let (a, b) = (
-            start + sweep * k as f64 / n as f64,
-            start + sweep * (k + 1) as f64 / n as f64,
+        let (p, m, q) = (
+            at(thetas[2 * k]),
+            at(thetas[2 * k + 1]),
+            at(thetas[2 * k + 2]),
         );
-        let (p, q, m) = (at(a), at(b), at(0.5 * (a + b)));
         let chord_mid = p + (q - p) * 0.5;
         pts.push(p);
         pts.push(chord_mid + (m - chord_mid) * (4.0 / 3.0));
     }
+    true
 }
+
+/// Turns (radians) under this are no turn: an edge along a generator.
+const TURN_EPS: f64 = 1e-9;
+
+/// The parameter where curve `c`, turning by `sweep` about an axis from
+/// angle `a0` (a whole turn when `closed`), reaches angle `theta`, by
+/// bisection: the share of the turn grows along the curve.
+fn param_at(
+    c: &thinwall_geom::NurbsCurve,
+    angle: &dyn Fn(&Point3) -> f64,
+    (a0, sweep, closed): (f64, f64, bool),
+    theta: f64,
+) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    let (t0, t1) = c.domain();
+    let half = 0.5 * (t0 + t1);
+    // The turn from the start at parameter t, unwrapped: just before the
+    // start (rounding) is a little below 0, a whole turn's end near 2π.
+    let turned = |t: f64| {
+        let x = (sweep.signum() * (angle(&c.point(t)) - a0)).rem_euclid(TAU);
+        let before_start = if closed {
+            t < half && x > PI
+        } else {
+            x > 0.5 * (sweep.abs() + TAU)
+        };
+        let wrapped_end = closed && t >= half && x < PI;
+        if before_start {
+            x - TAU
+        } else if wrapped_end {
+            x + TAU
+        } else {
+            x
+        }
+    };
+    let want = (theta - a0) / sweep * sweep.abs();
+    let (mut lo, mut hi) = (t0, t1);
+    for _ in 0..PARAM_BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if turned(mid) < want {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// Bisections of a parameter range: 2^-48 of it.
+const PARAM_BISECTIONS: usize = 48;
 
 /// A curve's chord ends from its start (its end left to the next edge),
 /// each curved chord followed by its midpoint pushed out by 4/3 of the
