@@ -8,7 +8,7 @@ mod common;
 use thinwall_analysis::parallel::Work;
 
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
-use thinwall_geom::Vector3;
+use thinwall_geom::{Frame, Vector3};
 use thinwall_ops::layers::{
     levels, out_of_reach_mm3, roughing_layers, section_area_by_blocks, EdgeKind, LayerOptions,
 };
@@ -529,4 +529,98 @@ fn a_set_up_layers_only_what_its_up_reaches_in_any_pose() {
         parts.len()
     );
     assert!(two_sided > 0);
+}
+
+/// One generated panel posed by `seed`, its removal with up along the
+/// panel's +z turned (`sign` 1) or against it (−1), checked; the frame.
+fn posed_removal(path: &std::path::Path, seed: Option<u64>, sign: f64) -> (Removal, Frame, f64) {
+    let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
+    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "panel.step").unwrap();
+    let (rot, _) = seed.map_or(
+        (nalgebra::Rotation3::identity(), nalgebra::Vector3::zeros()),
+        common::rigid_motion,
+    );
+    let up = rot * Vector3::z() * sign;
+    let a = PartAnalysis::new(
+        &part,
+        Setup::new([up.x, up.y, up.z], Machine::ThreeAxis).unwrap(),
+    );
+    let (frame, lo, hi) = frame_of(&a, up);
+    let size = a.bounding_box().diagonal();
+    let r = Removal::new(&part, frame, &StockShape::Block { lo, hi }, &[], size)
+        .and_then(Removal::checked)
+        .unwrap_or_else(|e| panic!("{} {seed:?} up {sign}: {e}", path.display()));
+    (r, frame, size)
+}
+
+/// Both sides of the generated panels, one set-up after the other (issue
+/// 37), as built and turned: the set-up from the opposite side, after the
+/// first, cuts what the first could not reach under the web (what it left
+/// = what the second cuts + what neither reaches, within both removals'
+/// precision; neither leaves nothing on these panels); the first
+/// side's pockets and through columns (lightening holes) are gone, so the
+/// second side's layers stop at the web's underside.
+#[test]
+fn the_opposite_side_cuts_what_the_first_left_in_any_pose() {
+    let parts = common::generated_parts("THINWALL_POCKETS_DIR", "pockets");
+    let (mut sides, mut layers) = (0, 0);
+    for (k, path) in parts.iter().enumerate() {
+        let truth: PanelTruth = serde_json::from_str(
+            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
+        )
+        .unwrap();
+        for seed in [None, Some(4200 + k as u64)] {
+            let (first, _, size) = posed_removal(path, seed, 1.0);
+            let (second, frame, _) = posed_removal(path, seed, -1.0);
+            let second = second.after_opposite();
+            let cut: f64 = thinwall_ops::layers::reachable(&second)
+                .map(|b| b.volume)
+                .sum();
+            let (left, neither) = (out_of_reach_mm3(&first), out_of_reach_mm3(&second));
+            let bound = first.meshed.volume_bound_mm3
+                + second.meshed.volume_bound_mm3
+                + 1e-6 * (first.stock_volume + second.stock_volume);
+            let name = format!("{} {seed:?}", path.display());
+            assert_eq!(neither, 0.0, "{name}: neither side reaches {neither} mm³");
+            assert!(
+                (left - cut).abs() <= bound,
+                "{name}: the first left {left} mm³, the second cuts {cut} (bound {bound})"
+            );
+            // A turned one-sided panel leaves rounding, not material.
+            let cuts = cut > thinwall_geom::tolerance::MERGE * second.stock_volume;
+            assert_eq!(
+                cuts, truth.both_sides,
+                "{name}: the second side cuts {cut} mm³"
+            );
+            // The second side stops at the web's underside: beyond it all
+            // was the first side's (the lightening holes too).
+            let (rot, t) = seed.map_or(
+                (nalgebra::Rotation3::identity(), nalgebra::Vector3::zeros()),
+                common::rigid_motion,
+            );
+            let underside = rot * nalgebra::Point3::new(0.0, 0.0, truth.web_z[0]) + t;
+            let z_under = frame.to_local(&underside).z;
+            let opts = LayerOptions {
+                axial_depth_mm: 6.0,
+                smallest_tool_mm: 4.0,
+            };
+            for l in roughing_layers(&second, &opts) {
+                if l.area_mm2 > 4.0 * 1e-6 * size * size {
+                    assert!(
+                        l.z_bottom_mm >= z_under - 1e-6 * size,
+                        "{name}: the second side cuts {} mm² down to {}, beyond the web's underside at {z_under}",
+                        l.area_mm2,
+                        l.z_bottom_mm
+                    );
+                    layers += 1;
+                }
+            }
+            sides += usize::from(cuts);
+        }
+    }
+    eprintln!(
+        "{} panels as built and turned: {sides} second sides with material to cut, in {layers} layers, none beyond the web",
+        parts.len()
+    );
+    assert!(sides > 0);
 }

@@ -248,6 +248,12 @@ pub struct OperationsArgs {
     /// whole removal layered at once.
     #[arg(long)]
     pub by_feature: bool,
+    /// Then the set-up from the opposite side (up reversed), after this
+    /// one: what this one cannot reach under the part (a web pocketed
+    /// from both sides), its through holes and the stock round the part
+    /// already gone. Not with --by-feature.
+    #[arg(long)]
+    pub both_sides: bool,
     /// Output format.
     #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "text")]
     pub format: Format,

@@ -113,6 +113,7 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     request.tools = tools_of(a.tools.as_deref())?;
     request.axial_depth = a.axial_depth;
     request.by_feature = a.by_feature;
+    request.both_sides = a.both_sides;
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
     let operated = study::operations(&limits::study(&loaded), &request)?;

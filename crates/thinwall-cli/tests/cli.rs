@@ -323,15 +323,31 @@ fn classify_json_and_errors() {
 }
 
 /// Check `value` against the parts of JSON Schema our schemas use:
-/// `required`, `properties`, `items`, `type`, `enum`, `pattern` (as a
-/// prefix or whole-match of simple patterns is not needed: only presence
-/// and kinds). Returns the problems, with their paths.
+/// `required`, `properties`, `items`, `type`, `enum`, `$ref` to the root's
+/// `$defs`, `pattern` (as a prefix or whole-match of simple patterns is
+/// not needed: only presence and kinds). Returns the problems, with their
+/// paths.
 fn schema_problems(
     schema: &serde_json::Value,
     value: &serde_json::Value,
     path: &str,
 ) -> Vec<String> {
+    schema_problems_in(schema, schema, value, path)
+}
+
+fn schema_problems_in(
+    root: &serde_json::Value,
+    schema: &serde_json::Value,
+    value: &serde_json::Value,
+    path: &str,
+) -> Vec<String> {
     use serde_json::Value;
+    if let Some(Value::String(r)) = schema.get("$ref") {
+        let name = r.strip_prefix("#/$defs/").expect("refs to $defs only");
+        let def = &root["$defs"][name];
+        assert!(def.is_object(), "{path}: no $defs/{name}");
+        return schema_problems_in(root, def, value, path);
+    }
     let mut out = Vec::new();
     if let Some(t) = schema.get("type") {
         let kinds: Vec<&str> = match t {
@@ -368,13 +384,13 @@ fn schema_problems(
     if let (Some(Value::Object(props)), Some(obj)) = (schema.get("properties"), value.as_object()) {
         for (k, sub) in props {
             if let Some(v) = obj.get(k) {
-                out.extend(schema_problems(sub, v, &format!("{path}/{k}")));
+                out.extend(schema_problems_in(root, sub, v, &format!("{path}/{k}")));
             }
         }
     }
     if let (Some(items), Some(arr)) = (schema.get("items"), value.as_array()) {
         for (i, v) in arr.iter().enumerate() {
-            out.extend(schema_problems(items, v, &format!("{path}/{i}")));
+            out.extend(schema_problems_in(root, items, v, &format!("{path}/{i}")));
         }
     }
     out
@@ -451,6 +467,17 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
         .iter()
         .all(|l| l["feature"].is_string()));
     outputs.push(("operations", by_feature));
+    // Both sides of a web pocketed from both sides: the second set-up cuts
+    // what the first left under the web.
+    let both = of(
+        &["operations", "--both-sides", "--format", "json"],
+        "pockets/pockets_4.step",
+    );
+    assert!(both["setup"]["out_of_reach_mm3"].as_f64().unwrap() > 0.0);
+    assert!(both["second"]["setup"]["operations"]
+        .as_array()
+        .is_some_and(|o| !o.is_empty()));
+    outputs.push(("operations", both));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
         assert!(problems.is_empty(), "{problems:#?}");
@@ -937,6 +964,29 @@ fn operations_sheet_json_and_errors() {
     );
     assert!(plain["setup"]["operations"].as_array().unwrap().is_empty());
     assert!(plain["setup"]["layers"].as_array().unwrap().is_empty());
+
+    // The second side is planned on the whole removal only: along the
+    // plan it is a request error (exit 2) naming the option.
+    let both = bin()
+        .arg("operations")
+        .arg(&pocket)
+        .args(["--by-feature", "--both-sides"])
+        .output()
+        .unwrap();
+    assert_eq!(both.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&both.stderr).contains("both_sides"));
+    // A one-sided part: the second side has nothing left to cut.
+    let second =
+        json_of(
+            bin()
+                .arg("operations")
+                .arg(&pocket)
+                .args(["--both-sides", "--format", "json"]),
+        );
+    assert!(second["second"]["setup"]["layers"]
+        .as_array()
+        .unwrap()
+        .is_empty());
 
     // A tool file with a negative diameter, or an unknown key: exit 2 and
     // the line.

@@ -232,21 +232,23 @@ pub fn section(r: &Removal, z: f64) -> Vec<Polygon<f64>> {
     join(&pieces, r.size)
 }
 
-/// The blocks a tool along up reaches (nothing of the part above them):
-/// what lies under the part (the far side of a double-sided web) is
-/// another set-up's, never this one's layers.
+/// The blocks this set-up cuts: those a tool along up reaches (nothing of
+/// the part above them) that no earlier set-up took. What lies under the
+/// part (the far side of a double-sided web) is another set-up's, never
+/// this one's layers.
 pub fn reachable(r: &Removal) -> impl Iterator<Item = &thinwall_removal::Block> {
-    r.blocks.iter().filter(|b| b.reachable)
+    r.blocks.iter().filter(|b| b.reachable && !b.cleared)
 }
 
-/// The volume of the blocks a tool along up does not reach, mm³: none
+/// The volume of the blocks a tool along up does not reach and no earlier
+/// set-up took, mm³: none
 /// under [`MERGE`](thinwall_geom::tolerance::MERGE) of the stock's volume
 /// (rounding of a turned part's faces, not material).
 pub fn out_of_reach_mm3(r: &Removal) -> f64 {
     let v: f64 = r
         .blocks
         .iter()
-        .filter(|b| !b.reachable)
+        .filter(|b| !b.reachable && !b.cleared)
         .map(|b| b.volume)
         .sum();
     if v > thinwall_geom::tolerance::MERGE * r.stock_volume {

@@ -19,5 +19,5 @@ pub mod setup;
 mod stage;
 pub mod tools;
 
-pub use setup::{plan_setup, OpsError};
+pub use setup::{plan_setup, OpsError, Turn};
 pub use tools::{CuttingTool, ToolKind, ToolLibrary, ToolsError};

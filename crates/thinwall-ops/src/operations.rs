@@ -277,6 +277,11 @@ pub struct SetupOperations {
     /// are in `other_setup`).
     #[serde(skip_serializing_if = "is_zero")]
     pub out_of_reach_mm3: f64,
+    /// What a set-up from the opposite side took before this one (through
+    /// columns: holes through the part, the stock round it), mm³; none
+    /// for a first set-up.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub cleared_before_mm3: f64,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -451,6 +456,7 @@ pub(crate) fn assemble(
         hole_stages: Vec::new(),
         meshed: Meshed::default(),
         out_of_reach_mm3: 0.0,
+        cleared_before_mm3: 0.0,
         layers,
         field_tools,
         operations,

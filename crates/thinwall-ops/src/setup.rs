@@ -49,25 +49,48 @@ fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f
     Ok(frame_of(a, a.up()))
 }
 
+/// Which set-up of a part's sequence this is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Turn {
+    /// The first: the stock is whole.
+    First,
+    /// After a set-up from the opposite side: its through columns are
+    /// gone ([`Removal::after_opposite`]).
+    AfterOpposite,
+}
+
 /// The operations of `a`'s set-up with `lib` (the stock is the part's
-/// oriented box), and the removal frame their contours are in. `features`
-/// are the part's machining features found in this set-up (its up the
-/// tool axis): the holes among them are drilled.
+/// oriented box, less what the set-up before took: `turn`), and the
+/// removal frame their contours are in. `features` are the part's
+/// machining features found in this set-up (its up the tool axis): the
+/// holes among them are drilled.
 pub fn plan_setup(
     a: &PartAnalysis,
     features: &[MachiningFeature],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
+    turn: Turn,
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
-    let removal =
+    let mut removal =
         Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
-    let holes = hole_sites(features, &frame, lib);
+    if turn == Turn::AfterOpposite {
+        removal = removal.after_opposite();
+    }
+    // Through holes were drilled from the first side; blind ones entered
+    // from this side are this set-up's.
+    let drilled_here: Vec<MachiningFeature> = features
+        .iter()
+        .filter(|m| turn == Turn::First || !m.through)
+        .cloned()
+        .collect();
+    let holes = hole_sites(&drilled_here, &frame, lib);
     let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
     ops.meshed = removal.meshed.clone();
     ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(&removal);
-    finish_by_radii(&mut ops, a, features, &frame, lib);
+    ops.cleared_before_mm3 = removal.cleared_volume();
+    finish_by_radii(&mut ops, a, &drilled_here, &frame, lib);
     Ok((frame, ops))
 }
 

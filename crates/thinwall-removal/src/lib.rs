@@ -109,6 +109,12 @@ pub struct Block {
     pub upper: Bound,
     /// Nothing of the part lies above it.
     pub reachable: bool,
+    /// Nothing of the part lies below it: a set-up from the opposite side
+    /// reaches it.
+    pub open_below: bool,
+    /// Taken already by a set-up from the opposite side, done before this
+    /// one ([`Removal::after_opposite`]).
+    pub cleared: bool,
     pub volume: f64,
 }
 
@@ -347,6 +353,7 @@ impl Columns<'_> {
             }
         }
         let top = stock_iv.last().map(|iv| iv.1 .0);
+        let bottom = stock_iv.first().map(|iv| iv.0 .0);
         let sliver = mean_width(&c.poly) < SLIVER_WIDTH * self.size;
         for (lo, hi) in subtract(&stock_iv, &solid) {
             let vol = |b: &Bound| flux::flux(&b.height(self.part, self.stock_pieces), &c.poly);
@@ -360,6 +367,8 @@ impl Columns<'_> {
                 lower: lo.1,
                 upper: hi.1,
                 reachable: Some(hi.0) == top,
+                open_below: Some(lo.0) == bottom,
+                cleared: false,
                 volume,
             });
         }
@@ -530,6 +539,28 @@ impl Removal {
     }
 
     /// Sum of the blocks' volumes, mm³.
+    /// This removal after a set-up from the opposite side: that set-up
+    /// took every block it reached, those with nothing of the part below
+    /// them here (the pockets on its side, the through holes, the stock
+    /// round the part), so they are `cleared`; what this side reaches
+    /// besides is what that set-up could not (the far side of a web
+    /// pocketed from both sides).
+    pub fn after_opposite(mut self) -> Self {
+        for b in &mut self.blocks {
+            b.cleared = b.open_below;
+        }
+        self
+    }
+
+    /// The volume of the blocks an earlier set-up took, mm³.
+    pub fn cleared_volume(&self) -> f64 {
+        self.blocks
+            .iter()
+            .filter(|b| b.cleared)
+            .map(|b| b.volume)
+            .sum()
+    }
+
     pub fn removed_volume(&self) -> f64 {
         self.blocks.iter().map(|b| b.volume).sum()
     }

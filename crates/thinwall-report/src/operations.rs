@@ -22,7 +22,37 @@ pub struct OperationsReport {
     pub frame: [[f64; 3]; 4],
     pub tools: ToolLibrary,
     pub setup: SetupOperations,
+    /// The set-up from the opposite side, after this one (`--both-sides`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub second: Option<SecondSide>,
     pub not_yet: Vec<String>,
+}
+
+/// The set-up from the side opposite the first, after it: up reversed,
+/// what the first took through the part gone.
+#[derive(Clone, Debug, Serialize)]
+pub struct SecondSide {
+    pub up: [f64; 3],
+    /// Its removal frame: origin, x, y, z (= its up), mm.
+    pub frame: [[f64; 3]; 4],
+    pub setup: SetupOperations,
+}
+
+impl SecondSide {
+    pub fn new(up: [f64; 3], frame: &thinwall_geom::Frame, setup: SetupOperations) -> Self {
+        Self {
+            up,
+            frame: frame_rows(frame),
+            setup,
+        }
+    }
+}
+
+/// A frame as rows: origin, x, y, z.
+fn frame_rows(frame: &thinwall_geom::Frame) -> [[f64; 3]; 4] {
+    let v = |p: thinwall_geom::Vector3| [p.x, p.y, p.z];
+    let o = frame.origin;
+    [[o.x, o.y, o.z], v(frame.x), v(frame.y), v(frame.z)]
 }
 
 impl OperationsReport {
@@ -34,19 +64,19 @@ impl OperationsReport {
         tools: ToolLibrary,
         setup: SetupOperations,
     ) -> Self {
-        let v = |p: thinwall_geom::Vector3| [p.x, p.y, p.z];
-        let o = frame.origin;
         Self {
             schema: OPERATIONS_SCHEMA.to_string(),
             thinwall_version: env!("CARGO_PKG_VERSION").to_string(),
             part: part.to_string(),
             up,
-            frame: [[o.x, o.y, o.z], v(frame.x), v(frame.y), v(frame.z)],
+            frame: frame_rows(frame),
             tools,
             setup,
+            second: None,
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
+                "the second side (--both-sides) is in the text and JSON sheets, not in the HTML page or the C ABI, and its layers do not yet size the web's support".into(),
             ],
         }
     }
@@ -56,9 +86,24 @@ impl OperationsReport {
             + "\n"
     }
 
-    /// A readable operation sheet.
+    /// A readable operation sheet (and the second side's after it).
     pub fn to_text(&self) -> String {
-        let r = &self.setup;
+        let mut s = self.sheet_text(&self.setup);
+        if let Some(second) = &self.second {
+            let u = second.up;
+            let _ = writeln!(
+                s,
+                "\nthen from the other side, up ({:.3}, {:.3}, {:.3}), after the first: the {:.1} mm³ it reached are gone",
+                u[0], u[1], u[2], second.setup.cleared_before_mm3
+            );
+            s.push_str(&self.sheet_text(&second.setup));
+        }
+        let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
+        s
+    }
+
+    /// One set-up's sheet.
+    fn sheet_text(&self, r: &SetupOperations) -> String {
         let mut s = String::new();
         let _ = writeln!(
             s,
@@ -150,7 +195,6 @@ impl OperationsReport {
                 r.other_setup.join(" ")
             );
         }
-        let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
         s
     }
 }

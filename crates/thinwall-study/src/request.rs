@@ -99,6 +99,10 @@ pub struct OperationsRequest {
     /// Follow the plan (each machining feature on its own) instead of
     /// layering the whole removal at once.
     pub by_feature: bool,
+    /// Then the set-up from the opposite side (up reversed), after this
+    /// one: what it could not reach under the part (a web pocketed from
+    /// both sides). Whole-removal sheets only.
+    pub both_sides: bool,
 }
 
 /// Most roughing layers an axial depth may cut a part into (the work grows
@@ -128,6 +132,7 @@ impl OperationsRequest {
             tools: ToolLibrary::default_tools(),
             axial_depth: None,
             by_feature: false,
+            both_sides: false,
         }
     }
 
@@ -140,6 +145,12 @@ impl OperationsRequest {
                     format!("must be a positive length, got {d}"),
                 ));
             }
+        }
+        if self.both_sides && self.by_feature {
+            return Err(StudyError::invalid(
+                "both_sides",
+                "the second side is planned on the whole removal, not along the plan (by_feature) yet",
+            ));
         }
         if self.tools.end_mills().next().is_none() {
             return Err(thinwall_ops::OpsError::NoEndMill {

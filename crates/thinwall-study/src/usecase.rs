@@ -11,10 +11,11 @@ use std::path::Path;
 use std::sync::Arc;
 use thinwall_access::reach::{self, ReachOptions};
 use thinwall_analysis::Setup;
+use thinwall_ops::Turn;
 use thinwall_pipeline::{MachiningRequest, Outcome, PipelineError};
 use thinwall_plan::{Plan, RuleSet};
 use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
-use thinwall_report::operations::OperationsReport;
+use thinwall_report::operations::{OperationsReport, SecondSide};
 use thinwall_report::{ClassificationReport, InspectReport, RecognitionReport};
 
 /// `inspect`: the part's bodies, faces, edges and convexity.
@@ -182,16 +183,7 @@ pub fn operations<'p>(
         let a = &at.analysis;
         req.check_for_part(a.bounding_box().diagonal())?;
         // The holes are the machining features found in this set-up.
-        let in_setup = RecognizeRequest {
-            setup: req.setup.clone(),
-            allow_open: true,
-            machining: MachiningRequest {
-                in_setup: true,
-                ..Default::default()
-            },
-            ..Default::default()
-        };
-        let holes = at.outcome(&in_setup).map_err(|e| recognition(study, e))?;
+        let holes = found_in_setup(study, &at, &req.setup)?;
         let (frame, ops) = if req.by_feature {
             let recognize = RecognizeRequest {
                 setup: req.setup.clone(),
@@ -206,12 +198,60 @@ pub fn operations<'p>(
                 req.axial_depth,
             )?
         } else {
-            thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
+            thinwall_ops::plan_setup(
+                a,
+                &holes.machining,
+                &req.tools,
+                req.axial_depth,
+                Turn::First,
+            )?
         };
-        let report =
+        let mut report =
             OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
+        if req.both_sides {
+            report.second = Some(opposite_side(study, req)?);
+        }
         Ok(Operated { at, report })
     })
+}
+
+/// The recognition with the machining features found in `setup` (its up
+/// the tool axis): the holes operations drill.
+fn found_in_setup(
+    study: &Study<'_>,
+    at: &AtSetup<'_>,
+    setup: &Setup,
+) -> Result<Arc<Outcome>, StudyError> {
+    let in_setup = RecognizeRequest {
+        setup: setup.clone(),
+        allow_open: true,
+        machining: MachiningRequest {
+            in_setup: true,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    at.outcome(&in_setup).map_err(|e| recognition(study, e))
+}
+
+/// The set-up from the side opposite `req`'s, after it: up reversed, the
+/// through columns gone, its own holes drilled.
+fn opposite_side(study: &Study<'_>, req: &OperationsRequest) -> Result<SecondSide, StudyError> {
+    let setup = Setup {
+        // 0 − c: no negative zeros in the report.
+        up: req.setup.up.map(|c| 0.0 - c),
+        ..req.setup.clone()
+    };
+    let at = study.at(&setup)?;
+    let holes = found_in_setup(study, &at, &setup)?;
+    let (frame, ops) = thinwall_ops::plan_setup(
+        &at.analysis,
+        &holes.machining,
+        &req.tools,
+        req.axial_depth,
+        Turn::AfterOpposite,
+    )?;
+    Ok(SecondSide::new(setup.up, &frame, ops))
 }
 
 pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classified<'p>, StudyError> {
