@@ -344,6 +344,32 @@ enum tw_status tw_operations(const struct tw_part *part,
                              double axial_depth,
                              struct tw_operations_result **out);
 
+// As `tw_operations`, then the set-up from the opposite side (up
+// reversed) after it, as `thinwall operations --both-sides`: it cuts what
+// the first left under the part (the far side of a web pocketed from both
+// sides), what the first reached gone. `*out` reads the first set-up (its
+// JSON has both, the second under `second`); `tw_operations_second` gives
+// the second. Free with `tw_operations_free`.
+enum tw_status tw_operations_both_sides(const struct tw_part *part,
+                                        const struct tw_options *opt,
+                                        const char *tools_toml,
+                                        double axial_depth,
+                                        struct tw_operations_result **out);
+
+// The second side of a result from `tw_operations_both_sides`, as a
+// result of its own: its up reversed, its operations, its JSON the second
+// set-up's report alone. `TW_ERR_NOT_APPLICABLE` for a result of one
+// set-up. Free with `tw_operations_free`.
+enum tw_status tw_operations_second(const struct tw_operations_result *result,
+                                    struct tw_operations_result **out);
+
+// The set-up's volumes, mm³: what it leaves to another set-up (material
+// under the part its up does not reach) and what a set-up before it took
+// (0 for a first set-up). Either pointer may be NULL.
+enum tw_status tw_operations_volumes(const struct tw_operations_result *result,
+                                     double *out_of_reach_mm3,
+                                     double *cleared_before_mm3);
+
 // Free an operations result. NULL is allowed.
 void tw_operations_free(struct tw_operations_result *result);
 

@@ -74,24 +74,111 @@ pub unsafe extern "C" fn tw_operations(
     out: *mut *mut tw_operations_result,
 ) -> tw_status {
     construct("tw_operations", out, || {
-        let p = part_ref(part)?;
-        let o = options_or_default(opt);
-        let mut request = OperationsRequest::new(o.request.setup.clone());
-        request.tools = library(tools_toml)?;
-        // 0 asks for the largest end mill's depth.
-        request.axial_depth = (axial_depth != 0.0).then_some(axial_depth);
-        let report = p
-            .with_study(o.request.parallel, |study| {
-                thinwall_study::operations(study, &request).map(|r| r.report)
-            })
-            .map_err(study_failure)?;
-        let tools = report
-            .setup
-            .operations
-            .iter()
-            .map(|o| cstring(&o.tool))
-            .collect();
-        Ok(tw_operations_result { report, tools })
+        run(part, opt, tools_toml, axial_depth, false)
+    })
+}
+
+/// As `tw_operations`, then the set-up from the opposite side (up
+/// reversed) after it, as `thinwall operations --both-sides`: it cuts what
+/// the first left under the part (the far side of a web pocketed from both
+/// sides), what the first reached gone. `*out` reads the first set-up (its
+/// JSON has both, the second under `second`); `tw_operations_second` gives
+/// the second. Free with `tw_operations_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_both_sides(
+    part: *const tw_part,
+    opt: *const tw_options,
+    tools_toml: *const c_char,
+    axial_depth: f64,
+    out: *mut *mut tw_operations_result,
+) -> tw_status {
+    construct("tw_operations_both_sides", out, || {
+        run(part, opt, tools_toml, axial_depth, true)
+    })
+}
+
+/// The operations of `part`, one set-up or both sides.
+unsafe fn run(
+    part: *const tw_part,
+    opt: *const tw_options,
+    tools_toml: *const c_char,
+    axial_depth: f64,
+    both_sides: bool,
+) -> Result<tw_operations_result, crate::error::Failure> {
+    let p = part_ref(part)?;
+    let o = options_or_default(opt);
+    let mut request = OperationsRequest::new(o.request.setup.clone());
+    request.tools = library(tools_toml)?;
+    // 0 asks for the largest end mill's depth.
+    request.axial_depth = (axial_depth != 0.0).then_some(axial_depth);
+    request.both_sides = both_sides;
+    let report = p
+        .with_study(o.request.parallel, |study| {
+            thinwall_study::operations(study, &request).map(|r| r.report)
+        })
+        .map_err(study_failure)?;
+    Ok(result_of(report))
+}
+
+/// A result over `report`'s first set-up.
+fn result_of(report: OperationsReport) -> tw_operations_result {
+    let tools = report
+        .setup
+        .operations
+        .iter()
+        .map(|o| cstring(&o.tool))
+        .collect();
+    tw_operations_result { report, tools }
+}
+
+/// The second side of a result from `tw_operations_both_sides`, as a
+/// result of its own: its up reversed, its operations, its JSON the second
+/// set-up's report alone. `TW_ERR_NOT_APPLICABLE` for a result of one
+/// set-up. Free with `tw_operations_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_second(
+    result: *const tw_operations_result,
+    out: *mut *mut tw_operations_result,
+) -> tw_status {
+    construct("tw_operations_second", out, || {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let first = &(*result).report;
+        let second = first.second.as_ref().ok_or((
+            tw_status::TW_ERR_NOT_APPLICABLE,
+            "this result has one set-up: make it with tw_operations_both_sides".to_string(),
+        ))?;
+        let mut report = first.clone();
+        report.up = second.up;
+        report.frame = second.frame;
+        report.setup = second.setup.clone();
+        report.second = None;
+        Ok(result_of(report))
+    })
+}
+
+/// The set-up's volumes, mm³: what it leaves to another set-up (material
+/// under the part its up does not reach) and what a set-up before it took
+/// (0 for a first set-up). Either pointer may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_volumes(
+    result: *const tw_operations_result,
+    out_of_reach_mm3: *mut f64,
+    cleared_before_mm3: *mut f64,
+) -> tw_status {
+    guard("tw_operations_volumes", || {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        let s = &(*result).report.setup;
+        if !out_of_reach_mm3.is_null() {
+            *out_of_reach_mm3 = s.out_of_reach_mm3;
+        }
+        if !cleared_before_mm3.is_null() {
+            *cleared_before_mm3 = s.cleared_before_mm3;
+        }
+        Ok(())
     })
 }
 

@@ -1,7 +1,9 @@
-//! `tw_result_feature_other_side`: a wall through its base (a generated
-//! panel pocketed from both sides of its web) gives its height on the
-//! web's other side, as the JSON's `other_side` has it; a web, a hole and
-//! a wall on one side of its base are `TW_ERR_NOT_APPLICABLE`.
+//! Double-sided panels through the C ABI. `tw_result_feature_other_side`:
+//! a wall through its base (a generated panel pocketed from both sides of
+//! its web) gives its height on the web's other side, as the JSON's
+//! `other_side` has it; a web, a hole and a wall on one side of its base
+//! are `TW_ERR_NOT_APPLICABLE`. `tw_operations_both_sides` and
+//! `tw_operations_second` plan and read both set-ups.
 
 use std::ffi::CStr;
 use std::ptr::null_mut;
@@ -59,6 +61,70 @@ fn other_side_of_walls_through_a_web() {
         );
         tw_result_free(res);
         tw_options_free(opt);
+        tw_part_free(part);
+    }
+}
+
+/// `tw_operations_both_sides` on the same panel: the first set-up leaves
+/// material under the web (`tw_operations_volumes`), the second, read
+/// with `tw_operations_second`, takes nothing before it was cleared and
+/// has operations of its own; its JSON is its own report (up reversed).
+/// A one-set-up result has no second side.
+#[test]
+fn both_sides_of_a_double_sided_panel() {
+    let path = std::ffi::CString::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../fixtures/pockets/pockets_6.step"
+    ))
+    .unwrap();
+    unsafe {
+        let mut part = null_mut();
+        assert_eq!(
+            tw_part_load_file(path.as_ptr(), &mut part),
+            tw_status::TW_OK
+        );
+        let mut first = null_mut();
+        assert_eq!(
+            tw_operations_both_sides(part, std::ptr::null(), std::ptr::null(), 0.0, &mut first),
+            tw_status::TW_OK
+        );
+        let (mut left, mut cleared) = (f64::NAN, f64::NAN);
+        assert_eq!(
+            tw_operations_volumes(first, &mut left, &mut cleared),
+            tw_status::TW_OK
+        );
+        assert!(left > 0.0 && cleared == 0.0, "{left} {cleared}");
+        let mut second = null_mut();
+        assert_eq!(tw_operations_second(first, &mut second), tw_status::TW_OK);
+        let (mut left2, mut cleared2) = (f64::NAN, f64::NAN);
+        assert_eq!(
+            tw_operations_volumes(second, &mut left2, &mut cleared2),
+            tw_status::TW_OK
+        );
+        assert!(left2 == 0.0 && cleared2 > 0.0, "{left2} {cleared2}");
+        assert!(tw_operations_count(second) > 0);
+        let mut json = null_mut();
+        assert_eq!(tw_operations_to_json(second, &mut json), tw_status::TW_OK);
+        let report: serde_json::Value =
+            serde_json::from_str(CStr::from_ptr(json).to_str().unwrap()).unwrap();
+        tw_string_free(json);
+        assert_eq!(report["up"][2], -1.0);
+        assert!(report.get("second").is_none());
+        // One set-up: no second side.
+        let mut one = null_mut();
+        assert_eq!(
+            tw_operations(part, std::ptr::null(), std::ptr::null(), 0.0, &mut one),
+            tw_status::TW_OK
+        );
+        let mut none = null_mut();
+        assert_eq!(
+            tw_operations_second(one, &mut none),
+            tw_status::TW_ERR_NOT_APPLICABLE
+        );
+        assert!(none.is_null());
+        for r in [first, second, one] {
+            tw_operations_free(r);
+        }
         tw_part_free(part);
     }
 }
