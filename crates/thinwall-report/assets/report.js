@@ -727,10 +727,12 @@
   }
 
   // ------------------------------------------------- operations
-  function operationsTab() {
+  // One set-up's sheet (`side`: the report's first set-up, or its
+  // `second`, the opposite side after the first), under the tab `name`.
+  function operationsTab(name, side) {
     const rep = D.operations;
-    const ops = rep.setup.operations;
-    const [o3, fx, fy, fz] = rep.frame;
+    const ops = side.setup.operations;
+    const [o3, fx, fy, fz] = side.frame;
     // A point of the removal frame (x, y at height z) in the part's space.
     const world = (p, z) => [0, 1, 2].map((j) => o3[j] + p[0] * fx[j] + p[1] * fy[j] + z * fz[j]);
     const tint = (o) => P['ops.' + o.stage];
@@ -740,7 +742,7 @@
       marks.clear();
       if (!o) return;
       for (const p of o.passes) {
-        const layer = rep.setup.layers[p.layer];
+        const layer = side.setup.layers[p.layer];
         for (const j of p.fields) {
           const f = layer.fields[j];
           // Each contour at the pass's bottom and top, joined by a few
@@ -755,21 +757,21 @@
           }
         }
       }
-      for (const h of rep.setup.holes.filter((h) => (o.holes || []).includes(h.id))) {
+      for (const h of side.setup.holes.filter((h) => (o.holes || []).includes(h.id))) {
         marks.add(line([world(h.centre, h.z_top_mm), world(h.centre, h.z_bottom_mm)], new T.Color(tint(o)).getHex()));
       }
       viewer.render();
     }
     const what = (o) => o.stage.replace('_', '-') + ' · ' + o.tool + (o.feature ? ' · ' + o.feature : '') + ((o.finishes || []).length ? ' · ' + o.finishes.join(' ') + (o.corners ? ' (corners)' : '') : '') + ' · ' + fmt(o.z_top_mm, 1) + '..' + fmt(o.z_bottom_mm, 1) + ' · ' + fmt(o.time_min) + ' min';
     return {
-      name: 'Operations',
+      name,
       enter() {
         part.group.visible = true;
         part.opacity(0.28);
         part.paint(() => colour('other'));
         legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (walls)', P['ops.finish_walls']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']], ['finish by radii', P['ops.finish_radii']]]);
         this.list();
-        if (!selected) details('Operations', [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['tool changes', rep.setup.tool_changes + ' (' + rep.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(rep.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(rep.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (rep.setup.other_setup || []).join(' ')], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
+        if (!selected) details(name, [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['up', vec(side.up)], ['tool changes', side.setup.tool_changes + ' (' + side.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(side.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(side.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (side.setup.other_setup || []).join(' ')], ['left to another set-up', side.setup.out_of_reach_mm3 ? fmt(side.setup.out_of_reach_mm3, 1) + ' mm³ under the part' : null], ['taken by the set-up before', side.setup.cleared_before_mm3 ? fmt(side.setup.cleared_before_mm3, 1) + ' mm³' : null], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
         viewer.render();
       },
       leave() { marks.clear(); part.opacity(state.xray ? 0.28 : 1); },
@@ -802,7 +804,10 @@
   }
   if (D.view === 'classification') tabs.push(classificationTab());
   if (D.view === 'access') tabs.push(reachTab(), accessTab());
-  if (D.view === 'operations') tabs.push(operationsTab());
+  if (D.view === 'operations') {
+    tabs.push(operationsTab('Operations', D.operations));
+    if (D.operations.second) tabs.push(operationsTab('Second side', D.operations.second));
+  }
 
   function show(tab) {
     if (mode && mode.leave) mode.leave();

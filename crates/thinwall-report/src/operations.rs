@@ -76,7 +76,7 @@ impl OperationsReport {
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
-                "the second side (--both-sides) is in the text and JSON sheets and the C ABI, not in the HTML page, and its layers do not yet size the web's support".into(),
+                "the second side (--both-sides) is planned on the whole removal only, and its layers do not yet size the web's support".into(),
             ],
         }
     }
