@@ -624,3 +624,47 @@ fn the_opposite_side_cuts_what_the_first_left_in_any_pose() {
     );
     assert!(sides > 0);
 }
+
+/// Choosing the set-up (issue 37) on the generated panels, as built and
+/// turned: the chosen up is the one a planner would take first — the side
+/// the pockets open to on a one-sided panel, on a two-sided one the side
+/// (of the two the web faces) from which more is reachable — and a turned
+/// copy chooses the same up turned with it.
+#[test]
+fn the_chosen_up_is_the_pockets_side_in_any_pose() {
+    let parts = common::generated_parts("THINWALL_POCKETS_DIR", "pockets");
+    for (k, path) in parts.iter().enumerate() {
+        let truth: PanelTruth = serde_json::from_str(
+            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
+        )
+        .unwrap();
+        let mut chosen = Vec::new();
+        for seed in [None, Some(4300 + k as u64)] {
+            let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
+            let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "panel.step").unwrap();
+            let a = PartAnalysis::new(&part, Setup::default());
+            let c = thinwall_ops::choice::up_candidates(&a);
+            let rot = seed.map_or(nalgebra::Rotation3::identity(), |s| {
+                common::rigid_motion(s).0
+            });
+            let back = rot.inverse() * Vector3::from(c[0].up);
+            let name = format!("{} {seed:?}", path.display());
+            assert!(back.z.abs() > 1.0 - 1e-9, "{name}: chose {:?}", c[0].up);
+            if !truth.both_sides {
+                assert!(back.z > 0.0, "{name}: chose the flat underside");
+            }
+            // The chosen up reaches at least as much as any other tried.
+            let best = c[0].reachable_mm3.unwrap();
+            assert!(c
+                .iter()
+                .all(|x| x.reachable_mm3.unwrap_or(0.0) <= best + 1e-6 * best));
+            chosen.push(back.z.signum());
+        }
+        assert_eq!(
+            chosen[0],
+            chosen[1],
+            "{}: the turned copy chose another side",
+            path.display()
+        );
+    }
+}

@@ -254,6 +254,11 @@ pub struct OperationsArgs {
     /// already gone. Not with --by-feature.
     #[arg(long)]
     pub both_sides: bool,
+    /// Choose the set-up: of the directions the part's planar faces face
+    /// (the largest by area), the up from which the most material is
+    /// reachable; the ups tried are listed. Not with --up.
+    #[arg(long, conflicts_with = "up")]
+    pub choose_up: bool,
     /// Output format.
     #[arg(long, value_parser = formats(&["text", "json", "html"]), default_value = "text")]
     pub format: Format,

@@ -114,6 +114,7 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     request.axial_depth = a.axial_depth;
     request.by_feature = a.by_feature;
     request.both_sides = a.both_sides;
+    request.choose_up = a.choose_up;
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
     let operated = study::operations(&limits::study(&loaded), &request)?;

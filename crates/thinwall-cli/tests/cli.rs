@@ -470,10 +470,18 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     // Both sides of a web pocketed from both sides: the second set-up cuts
     // what the first left under the web.
     let both = of(
-        &["operations", "--both-sides", "--format", "json"],
+        &[
+            "operations",
+            "--both-sides",
+            "--choose-up",
+            "--format",
+            "json",
+        ],
         "pockets/pockets_4.step",
     );
     assert!(both["setup"]["out_of_reach_mm3"].as_f64().unwrap() > 0.0);
+    // The chosen up leads the ups tried, and is the sheet's.
+    assert_eq!(both["setup_choice"][0]["up"], both["up"]);
     assert!(both["second"]["setup"]["operations"]
         .as_array()
         .is_some_and(|o| !o.is_empty()));

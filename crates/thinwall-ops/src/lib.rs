@@ -7,6 +7,7 @@
 //! ([`finishing`]), holes' spots, countersinks and chamfers
 //! ([`hole_stages`]), and the whole run for a set-up ([`setup`]).
 
+pub mod choice;
 pub mod drilling;
 pub mod finishing;
 pub mod hole_stages;

@@ -25,6 +25,9 @@ pub struct OperationsReport {
     /// The set-up from the opposite side, after this one (`--both-sides`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub second: Option<SecondSide>,
+    /// With `--choose-up`: the ups tried, the chosen one (`up`) first.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub setup_choice: Vec<thinwall_ops::choice::UpCandidate>,
     pub not_yet: Vec<String>,
 }
 
@@ -73,6 +76,7 @@ impl OperationsReport {
             tools,
             setup,
             second: None,
+            setup_choice: Vec::new(),
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
@@ -88,7 +92,9 @@ impl OperationsReport {
 
     /// A readable operation sheet (and the second side's after it).
     pub fn to_text(&self) -> String {
-        let mut s = self.sheet_text(&self.setup);
+        let mut s = String::new();
+        choice_text(&mut s, &self.setup_choice);
+        s.push_str(&self.sheet_text(&self.setup));
         if let Some(second) = &self.second {
             let u = second.up;
             let _ = writeln!(
@@ -312,4 +318,35 @@ fn hole_stage_line(s: &mut String, h: &thinwall_ops::hole_stages::HoleStage) {
         "hole {}: {what}{angle} Ø{:.2}{end}, {:.2} deep: {by}",
         h.hole, h.diameter_mm, h.depth_mm
     );
+}
+
+/// The ups tried for the set-up, the chosen one first.
+fn choice_text(s: &mut String, candidates: &[thinwall_ops::choice::UpCandidate]) {
+    if candidates.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "set-up chosen among {} ups the part's faces face (the most material reachable first):",
+        candidates.len()
+    );
+    for (k, c) in candidates.iter().enumerate() {
+        let u = c.up;
+        let what = match (c.reachable_mm3, c.out_of_reach_mm3, &c.refused) {
+            (Some(r), Some(l), _) => {
+                format!("reaches {r:.1} mm³, leaves {l:.1} mm³ under the part")
+            }
+            (_, _, Some(why)) => format!("refused: {why}"),
+            _ => String::new(),
+        };
+        let _ = writeln!(
+            s,
+            "  {} up ({:.3}, {:.3}, {:.3}), {:.0} mm² facing it: {what}",
+            if k == 0 { "*" } else { " " },
+            u[0],
+            u[1],
+            u[2],
+            c.facing_area_mm2
+        );
+    }
 }

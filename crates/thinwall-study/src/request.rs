@@ -103,6 +103,10 @@ pub struct OperationsRequest {
     /// one: what it could not reach under the part (a web pocketed from
     /// both sides). Whole-removal sheets only.
     pub both_sides: bool,
+    /// Choose the set-up's up instead of taking `setup.up`: of the
+    /// directions the part's planar faces face, the one from which the
+    /// most material is reachable (`thinwall_ops::choice`).
+    pub choose_up: bool,
 }
 
 /// Most roughing layers an axial depth may cut a part into (the work grows
@@ -133,6 +137,7 @@ impl OperationsRequest {
             axial_depth: None,
             by_feature: false,
             both_sides: false,
+            choose_up: false,
         }
     }
 
@@ -145,6 +150,12 @@ impl OperationsRequest {
                     format!("must be a positive length, got {d}"),
                 ));
             }
+        }
+        if self.choose_up && self.setup.placement.is_some() {
+            return Err(StudyError::invalid(
+                "choose_up",
+                "the up is chosen in the part's own coordinates: not with a placement",
+            ));
         }
         if self.both_sides && self.by_feature {
             return Err(StudyError::invalid(

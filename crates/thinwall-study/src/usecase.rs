@@ -11,6 +11,7 @@ use std::path::Path;
 use std::sync::Arc;
 use thinwall_access::reach::{self, ReachOptions};
 use thinwall_analysis::Setup;
+use thinwall_ops::choice::UpCandidate;
 use thinwall_ops::Turn;
 use thinwall_pipeline::{MachiningRequest, Outcome, PipelineError};
 use thinwall_plan::{Plan, RuleSet};
@@ -179,6 +180,7 @@ pub fn operations<'p>(
 ) -> Result<Operated<'p>, StudyError> {
     contained("operations", study.name(), || {
         req.check()?;
+        let (req, choice) = &chosen(study, req)?;
         let at = study.at(&req.setup)?;
         let a = &at.analysis;
         req.check_for_part(a.bounding_box().diagonal())?;
@@ -211,8 +213,27 @@ pub fn operations<'p>(
         if req.both_sides {
             report.second = Some(opposite_side(study, req)?);
         }
+        report.setup_choice = choice.clone();
         Ok(Operated { at, report })
     })
+}
+
+/// The request with its up chosen when it asks for that (the first
+/// candidate the removal takes), and the candidates tried.
+fn chosen(
+    study: &Study<'_>,
+    req: &OperationsRequest,
+) -> Result<(OperationsRequest, Vec<UpCandidate>), StudyError> {
+    let mut req = req.clone();
+    if !req.choose_up {
+        return Ok((req, Vec::new()));
+    }
+    let at = study.at(&req.setup)?;
+    let candidates = thinwall_ops::choice::up_candidates(&at.analysis);
+    if let Some(best) = candidates.iter().find(|c| c.reachable_mm3.is_some()) {
+        req.setup.up = best.up;
+    }
+    Ok((req, candidates))
 }
 
 /// The recognition with the machining features found in `setup` (its up

@@ -1,0 +1,102 @@
+//! Choosing the set-up (issue 37): among the directions the part's planar
+//! faces face (their outward normals, the largest by area), the up from
+//! which a tool reaches the most of stock − part. A pocketed plate is
+//! machined from the side its pockets open to; a frame pocketed from both
+//! sides from the side with more to take, the other after it
+//! (`--both-sides`). The directions come from the part's own faces, so
+//! turning the part turns the choice with it.
+
+use serde::Serialize;
+use thinwall_analysis::PartAnalysis;
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
+use thinwall_geom::Vector3;
+use thinwall_removal::{frame_of, Removal, StockShape};
+
+/// Candidate ups tried, at most (the directions of the most face area).
+pub const MOST_CANDIDATES: usize = 6;
+
+/// One up tried.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct UpCandidate {
+    /// Unit, in the part's coordinates.
+    pub up: [f64; 3],
+    /// Area of the planar faces facing it, mm².
+    pub facing_area_mm2: f64,
+    /// What a tool along it reaches of stock − part, mm³ (none where the
+    /// removal refused the part in this set-up).
+    pub reachable_mm3: Option<f64>,
+    /// What it leaves under the part, mm³.
+    pub out_of_reach_mm3: Option<f64>,
+    /// Why the removal refused the part along it (`removal.<code>`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refused: Option<String>,
+}
+
+/// The directions the planar faces face, with their area, most area
+/// first (directions within `NEAR_PARALLEL_EPS` are one).
+fn directions(a: &PartAnalysis) -> Vec<(Vector3, f64)> {
+    let mut dirs: Vec<(Vector3, f64)> = Vec::new();
+    for f in a.part().face_ids() {
+        let p = a.props(f);
+        let Some(n) = p.normal else { continue };
+        match dirs
+            .iter_mut()
+            .find(|(d, _)| d.dot(&n) > 1.0 - NEAR_PARALLEL_EPS)
+        {
+            Some(d) => d.1 += p.area,
+            None => dirs.push((n, p.area)),
+        }
+    }
+    dirs.sort_by(|x, y| y.1.total_cmp(&x.1));
+    dirs
+}
+
+/// The candidate ups, best first: the most reachable material, then the
+/// most face area facing it; refused ones last.
+pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
+    let size = a.bounding_box().diagonal();
+    let mut out: Vec<UpCandidate> = directions(a)
+        .into_iter()
+        .take(MOST_CANDIDATES)
+        .map(|(up, area)| {
+            let (frame, lo, hi) = frame_of(a, up);
+            let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
+                .and_then(Removal::checked);
+            let (reachable, left, refused) = match removal {
+                Ok(r) => (
+                    Some(
+                        crate::layers::reachable(&r)
+                            .map(|b| b.volume)
+                            .sum::<f64>()
+                            .max(0.0),
+                    ),
+                    Some(crate::layers::out_of_reach_mm3(&r)),
+                    None,
+                ),
+                Err(e) => (None, None, Some(format!("removal.{}: {e}", e.code()))),
+            };
+            // + 0.0: no negative zeros in the report.
+            UpCandidate {
+                up: [up.x + 0.0, up.y + 0.0, up.z + 0.0],
+                facing_area_mm2: area,
+                reachable_mm3: reachable,
+                out_of_reach_mm3: left,
+                refused,
+            }
+        })
+        .collect();
+    // Equal within the removal's precision (1e-6 of the part's box).
+    let tol = 1e-6 * size.powi(3);
+    out.sort_by(|x, y| {
+        let (rx, ry) = (
+            x.reachable_mm3.unwrap_or(-1.0),
+            y.reachable_mm3.unwrap_or(-1.0),
+        );
+        if (rx - ry).abs() > tol {
+            ry.total_cmp(&rx)
+        } else {
+            y.facing_area_mm2.total_cmp(&x.facing_area_mm2)
+        }
+    });
+    out
+}
