@@ -432,24 +432,13 @@ fn panel_layers(path: &std::path::Path, seed: Option<u64>) -> (f64, f64, Vec<f64
     let truth: PanelTruth =
         serde_json::from_str(&std::fs::read_to_string(path.with_extension("truth.json")).unwrap())
             .unwrap();
-    let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
-    let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "panel.step").unwrap();
     let (rot, t) = seed.map_or(
         (nalgebra::Rotation3::identity(), nalgebra::Vector3::zeros()),
         common::rigid_motion,
     );
-    let up = rot * Vector3::z();
-    let a = PartAnalysis::new(
-        &part,
-        Setup::new([up.x, up.y, up.z], Machine::ThreeAxis).unwrap(),
-    );
-    let (frame, lo, hi) = frame_of(&a, up);
-    let size = a.bounding_box().diagonal();
     // Turned or not, the removal adds up (its arcs are cut alike in any
-    // pose: `sample::arc_points`).
-    let r = Removal::new(&part, frame, &StockShape::Block { lo, hi }, &[], size)
-        .and_then(Removal::checked)
-        .unwrap_or_else(|e| panic!("{} {seed:?}: {e}", path.display()));
+    // pose: `sample::turn_points`).
+    let (r, frame, size) = posed_removal(path, seed, 1.0);
     let underside = rot * nalgebra::Point3::new(0.0, 0.0, truth.web_z[0]) + t;
     let z_under = frame.to_local(&underside).z;
     let tol = 1e-6 * size;

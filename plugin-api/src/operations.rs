@@ -167,16 +167,32 @@ pub unsafe extern "C" fn tw_operations_volumes(
     out_of_reach_mm3: *mut f64,
     cleared_before_mm3: *mut f64,
 ) -> tw_status {
-    guard("tw_operations_volumes", || {
+    two_figures(
+        "tw_operations_volumes",
+        result,
+        (out_of_reach_mm3, cleared_before_mm3),
+        |s| (s.out_of_reach_mm3, s.cleared_before_mm3),
+    )
+}
+
+/// Two figures of the result's set-up into the out-pointers that are not
+/// NULL.
+unsafe fn two_figures<T>(
+    stage: &'static str,
+    result: *const tw_operations_result,
+    (a, b): (*mut T, *mut T),
+    pick: impl FnOnce(&thinwall_ops::operations::SetupOperations) -> (T, T),
+) -> tw_status {
+    guard(stage, || {
         if result.is_null() {
             return Err(null("result"));
         }
-        let s = &(*result).report.setup;
-        if !out_of_reach_mm3.is_null() {
-            *out_of_reach_mm3 = s.out_of_reach_mm3;
+        let (x, y) = pick(&(*result).report.setup);
+        if !a.is_null() {
+            *a = x;
         }
-        if !cleared_before_mm3.is_null() {
-            *cleared_before_mm3 = s.cleared_before_mm3;
+        if !b.is_null() {
+            *b = y;
         }
         Ok(())
     })
@@ -214,19 +230,12 @@ pub unsafe extern "C" fn tw_operations_tool_changes(
     changes: *mut usize,
     plain: *mut usize,
 ) -> tw_status {
-    guard("tw_operations_tool_changes", || {
-        if result.is_null() {
-            return Err(null("result"));
-        }
-        let s = &(*result).report.setup;
-        if !changes.is_null() {
-            *changes = s.tool_changes;
-        }
-        if !plain.is_null() {
-            *plain = s.plain_tool_changes;
-        }
-        Ok(())
-    })
+    two_figures(
+        "tw_operations_tool_changes",
+        result,
+        (changes, plain),
+        |s| (s.tool_changes, s.plain_tool_changes),
+    )
 }
 
 /// Operation `i` (in order): its stage, tool diameter (mm), z range along

@@ -157,18 +157,7 @@ pub unsafe extern "C" fn tw_result_feature_wall(
     thin: *mut bool,
 ) -> tw_status {
     guard("tw_result_feature_wall", || {
-        if res.is_null() {
-            return Err(null("res"));
-        }
-        let f = &(&*res)
-            .report
-            .stiffness_features
-            .get(i)
-            .ok_or((
-                tw_status::TW_ERR_OUT_OF_RANGE,
-                format!("feature {i} out of range"),
-            ))?
-            .feature;
+        let f = &stiffness_feature(res, i)?.feature;
         if !f.kind.is_wall() {
             return Err((
                 tw_status::TW_ERR_NOT_APPLICABLE,
@@ -205,18 +194,7 @@ pub unsafe extern "C" fn tw_result_feature_other_side(
     thin: *mut bool,
 ) -> tw_status {
     guard("tw_result_feature_other_side", || {
-        if res.is_null() {
-            return Err(null("res"));
-        }
-        let f = &(&*res)
-            .report
-            .stiffness_features
-            .get(i)
-            .ok_or((
-                tw_status::TW_ERR_OUT_OF_RANGE,
-                format!("feature {i} out of range"),
-            ))?
-            .feature;
+        let f = &stiffness_feature(res, i)?.feature;
         let o = f.other_side.as_ref().ok_or_else(|| {
             (
                 tw_status::TW_ERR_NOT_APPLICABLE,
@@ -311,4 +289,19 @@ pub unsafe extern "C" fn tw_result_connection(
         }
         Ok(())
     })
+}
+
+/// Stiffness feature `i` of `res`: a NULL result or an index out of range
+/// is the error to return.
+unsafe fn stiffness_feature<'a>(
+    res: *const tw_result,
+    i: usize,
+) -> Result<&'a thinwall_report::recognize::FeatureEntry, crate::error::Failure> {
+    if res.is_null() {
+        return Err(null("res"));
+    }
+    (&*res).report.stiffness_features.get(i).ok_or((
+        tw_status::TW_ERR_OUT_OF_RANGE,
+        format!("feature {i} out of range"),
+    ))
 }

@@ -9,19 +9,25 @@ use std::ffi::CStr;
 use std::ptr::null_mut;
 use thinwall::*;
 
-#[test]
-fn other_side_of_walls_through_a_web() {
+/// The generated panel pocketed from both sides of its web, read.
+unsafe fn panel() -> *mut tw_part {
     let path = std::ffi::CString::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../fixtures/pockets/pockets_6.step"
     ))
     .unwrap();
+    let mut part = null_mut();
+    assert_eq!(
+        tw_part_load_file(path.as_ptr(), &mut part),
+        tw_status::TW_OK
+    );
+    part
+}
+
+#[test]
+fn other_side_of_walls_through_a_web() {
     unsafe {
-        let mut part = null_mut();
-        assert_eq!(
-            tw_part_load_file(path.as_ptr(), &mut part),
-            tw_status::TW_OK
-        );
+        let part = panel();
         let mut opt = null_mut();
         assert_eq!(tw_options_new(&mut opt), tw_status::TW_OK);
         let mut res = null_mut();
@@ -72,17 +78,8 @@ fn other_side_of_walls_through_a_web() {
 /// A one-set-up result has no second side.
 #[test]
 fn both_sides_of_a_double_sided_panel() {
-    let path = std::ffi::CString::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../fixtures/pockets/pockets_6.step"
-    ))
-    .unwrap();
     unsafe {
-        let mut part = null_mut();
-        assert_eq!(
-            tw_part_load_file(path.as_ptr(), &mut part),
-            tw_status::TW_OK
-        );
+        let part = panel();
         let mut first = null_mut();
         assert_eq!(
             tw_operations_both_sides(part, std::ptr::null(), std::ptr::null(), 0.0, &mut first),
