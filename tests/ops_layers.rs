@@ -657,3 +657,23 @@ fn the_chosen_up_is_the_pockets_side_in_any_pose() {
         );
     }
 }
+
+/// NIST FTC 07 (milled from its side): of the six ups its faces face, the
+/// chosen one reaches most of stock − part (the default +Z leaves most of
+/// it under the part), and a direction the boolean library fails in is a
+/// refused candidate, not the end of the choice.
+#[test]
+fn a_real_part_gets_the_up_that_reaches_most() {
+    let path = common::shared_data().join("nist/nist_ftc_07_asme1_ap242-e2.stp");
+    let part = thinwall_step::read_file(&path).unwrap().0;
+    let a = PartAnalysis::new(&part, Setup::default());
+    let c = thinwall_ops::choice::up_candidates(&a);
+    assert_eq!(c.len(), thinwall_ops::choice::MOST_CANDIDATES);
+    let best = &c[0];
+    let (reached, left) = (best.reachable_mm3.unwrap(), best.out_of_reach_mm3.unwrap());
+    assert!(reached > 0.8 * (reached + left), "{best:?}");
+    for x in &c[1..] {
+        assert!(x.reachable_mm3.unwrap_or(0.0) <= reached, "{x:?}");
+        assert!(x.reachable_mm3.is_some() != x.refused.is_some(), "{x:?}");
+    }
+}

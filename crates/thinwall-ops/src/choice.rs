@@ -60,10 +60,21 @@ pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
         .take(MOST_CANDIDATES)
         .map(|(up, area)| {
             let (frame, lo, hi) = frame_of(a, up);
-            let removal = Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
-                .and_then(Removal::checked);
+            // A direction the boolean library fails in (geo's i_overlay 4.5
+            // panics on some inputs: the ledger) is refused, not the end of
+            // the choice.
+            let removal = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
+                    .and_then(Removal::checked)
+            }));
             let (reachable, left, refused) = match removal {
-                Ok(r) => (
+                Err(panic) => (
+                    None,
+                    None,
+                    Some(format!("internal: {}", panic_text(&panic))),
+                ),
+                Ok(Err(e)) => (None, None, Some(format!("removal.{}: {e}", e.code()))),
+                Ok(Ok(r)) => (
                     Some(
                         crate::layers::reachable(&r)
                             .map(|b| b.volume)
@@ -73,7 +84,6 @@ pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
                     Some(crate::layers::out_of_reach_mm3(&r)),
                     None,
                 ),
-                Err(e) => (None, None, Some(format!("removal.{}: {e}", e.code()))),
             };
             // + 0.0: no negative zeros in the report.
             UpCandidate {
@@ -99,4 +109,13 @@ pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
         }
     });
     out
+}
+
+/// A panic's message.
+fn panic_text(panic: &Box<dyn std::any::Any + Send>) -> String {
+    panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic".to_string())
 }
