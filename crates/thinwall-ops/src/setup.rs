@@ -80,17 +80,20 @@ pub fn plan_setup(
     }
     // Through holes were drilled from the first side; blind ones entered
     // from this side are this set-up's.
-    let drilled_here: Vec<MachiningFeature> = features
-        .iter()
-        .filter(|m| turn == Turn::First || !m.through)
-        .cloned()
-        .collect();
-    let holes = hole_sites(&drilled_here, &frame, lib);
+    let blind: Vec<MachiningFeature>;
+    let drilled_here = match turn {
+        Turn::First => features,
+        Turn::AfterOpposite => {
+            blind = features.iter().filter(|m| !m.through).cloned().collect();
+            &blind[..]
+        }
+    };
+    let holes = hole_sites(drilled_here, &frame, lib);
     let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
     ops.meshed = removal.meshed.clone();
     ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(&removal);
     ops.cleared_before_mm3 = removal.cleared_volume();
-    finish_by_radii(&mut ops, a, &drilled_here, &frame, lib);
+    finish_by_radii(&mut ops, a, drilled_here, &frame, lib);
     Ok((frame, ops))
 }
 

@@ -5,7 +5,7 @@
 use crate::claims::Claims;
 use crate::config::Config;
 use crate::depressions::{Depression, DepressionKind};
-use crate::feature::{OtherSide, Plane, StiffnessFeature, WallGeometry};
+use crate::feature::{Plane, StiffnessFeature, WallGeometry};
 use crate::sizing::WallSize;
 use crate::walls::Wall;
 use std::collections::BTreeMap;
@@ -45,14 +45,8 @@ pub fn walls(
             continue;
         }
         d.wall_feature[w] = Some(d.features.len());
-        let base = sizes[w].base.map(|b| &walls[b]);
-        d.features.push(wall_feature(
-            a,
-            (wall, base),
-            &sizes[w],
-            kinds[w],
-            &claims.rims[w],
-        ));
+        d.features
+            .push(wall_feature(a, wall, &sizes[w], kinds[w], &claims.rims[w]));
     }
     for (w, &fi) in d.wall_feature.clone().iter().enumerate() {
         if fi.is_some() {
@@ -66,10 +60,9 @@ fn xyz(v: &Vector3) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-/// A wall's feature; `base` is the wall it stands on.
 fn wall_feature(
     a: &PartAnalysis,
-    (wall, base): (&Wall, Option<&Wall>),
+    wall: &Wall,
     s: &WallSize,
     kind: StiffnessKind,
     rim: &[FaceId],
@@ -99,17 +92,8 @@ fn wall_feature(
     f.deflection = Some(s.deflection);
     let t = wall.thickness_range.0;
     f.model_note = crate::deflection::validity_note(t, s.height, s.deflection);
-    let slenderness = |h: f64| if t > 0.0 { h / t } else { 0.0 };
-    f.slenderness = Some(slenderness(s.height));
-    f.other_side = s.other_side.as_ref().map(|o| OtherSide {
-        base_faces: base
-            .map(|b| a.step_ids(&b.sides[o.base_side]))
-            .unwrap_or_default(),
-        height: o.height,
-        deflection: o.deflection,
-        slenderness: slenderness(o.height),
-        thin: o.thin,
-    });
+    f.slenderness = Some(if t > 0.0 { s.height / t } else { 0.0 });
+    f.other_side = s.other_side.clone();
     f.access_directions = Some([xyz(&wall.normals[0]), xyz(&wall.normals[1])]);
     f.top_end_faces = Some(top);
     match &wall.curved {

@@ -18,8 +18,8 @@ pub struct Junction {
     pub base: usize,
     /// T: the leaf's both sides meet the same side of the base.
     pub tee: bool,
-    /// The base's side (0/1) the leaf's foot lies on; for a wall through
-    /// its base, the side this set-up machines (the one facing up most).
+    /// The base's side (0/1) the leaf's foot lies on; 0 for a wall through
+    /// its base (sizing picks the side this set-up machines).
     pub base_side: usize,
     /// The leaf runs through the base and stands on both of its sides
     /// (on `1 - base_side` too): a rib through a double-sided web (`tee`),
@@ -101,13 +101,11 @@ pub fn find_junctions(a: &PartAnalysis, walls: &[Wall]) -> Vec<Junction> {
     }
     let mut keys: Vec<_> = links.keys().copied().collect();
     keys.sort();
-    let up = a.up();
-    let upper = |b: usize| usize::from(walls[b].normals[1].dot(&up) > walls[b].normals[0].dot(&up));
     let mut out = Vec::new();
     for (a, b) in keys {
         let m = links[&(a, b)];
         let reverse = links.get(&(b, a)).copied().unwrap_or([[0.0; 2]; 2]);
-        out.extend(junctions_of_pair(a, b, &m, &reverse, upper(b)));
+        out.extend(junctions_of_pair(a, b, &m, &reverse));
     }
     out
 }
@@ -116,14 +114,12 @@ pub fn find_junctions(a: &PartAnalysis, walls: &[Wall]) -> Vec<Junction> {
 /// which side `s` of `a` meets side `t` of `b` (and `reverse`, `b`'s on
 /// `a`): a T on one side of `b` or through it (a T on both), a flange
 /// through `b` (one side of `a` meets both of `b`'s), or an L (both
-/// directions, for [`resolve_l_junctions`]). `upper` is `b`'s side facing
-/// up most.
+/// directions, for [`resolve_l_junctions`]).
 fn junctions_of_pair(
     a: usize,
     b: usize,
     m: &[[f64; 2]; 2],
     reverse: &[[f64; 2]; 2],
-    upper: usize,
 ) -> Vec<Junction> {
     let junction = |leaf, base, tee, base_side, through, length| Junction {
         leaf,
@@ -139,7 +135,7 @@ fn junctions_of_pair(
     match tees.len() {
         2 => {
             let length = tee_length(0).max(tee_length(1));
-            return vec![junction(a, b, true, upper, true, length)];
+            return vec![junction(a, b, true, 0, true, length)];
         }
         1 => return vec![junction(a, b, true, tees[0], false, tee_length(tees[0]))],
         _ => {}
@@ -148,7 +144,7 @@ fn junctions_of_pair(
     // other side none (kept only where `b` is a floor: `prefer_floors`).
     for (s, row) in m.iter().enumerate() {
         if meets(s, 0) && meets(s, 1) && !meets(1 - s, 0) && !meets(1 - s, 1) {
-            return vec![junction(a, b, false, upper, true, row[0].max(row[1]))];
+            return vec![junction(a, b, false, 0, true, row[0].max(row[1]))];
         }
     }
     // L: exactly one side of a meets exactly one side of b, and neither is

@@ -4,6 +4,7 @@
 
 use crate::config::Config;
 use crate::deflection::deflection_mm;
+use crate::feature::OtherSide;
 use crate::junctions::Junction;
 use crate::walls::Wall;
 use thinwall_analysis::polygon::{inscribed_radius, long_side};
@@ -33,17 +34,6 @@ pub struct WallSize {
     /// A wall through its base: its figures on the base's other side
     /// (`height` and the rest are on the side this set-up machines).
     pub other_side: Option<OtherSide>,
-}
-
-/// A wall's figures on the far side of the base it runs through.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OtherSide {
-    /// The base's side it stands on there (0/1).
-    pub base_side: usize,
-    /// mm, from that side of the base to the wall's end.
-    pub height: f64,
-    pub deflection: f64,
-    pub thin: bool,
 }
 
 /// Size every wall: walls on a base from the base, walls without one (webs)
@@ -76,6 +66,7 @@ pub fn size_walls(
         if let Some(o) = &mut s.other_side {
             o.deflection = deflection(o.height);
             o.thin = o.deflection > allowed;
+            o.slenderness = if t > 0.0 { o.height / t } else { 0.0 };
         }
         // Thin where it needs support on either side of its base.
         s.thin = s.deflection > allowed || s.other_side.as_ref().is_some_and(|o| o.thin);
@@ -131,7 +122,8 @@ fn on_base(
     if let Some(j) = best {
         let pts = wall.outline();
         let (side, other) = if j.through {
-            through_sides(&walls[j.base], j.base_side, wall, &up)
+            let (side, other) = through_sides(&walls[j.base], wall, &up);
+            (side, Some(other))
         } else {
             (j.base_side, None)
         };
@@ -146,7 +138,13 @@ fn on_base(
                     .fold(0.0, f64::max)
             }),
         };
-        size.other_side = other;
+        size.other_side = other.map(|(other_side, height)| OtherSide {
+            base_faces: a.step_ids(&walls[j.base].sides[other_side]),
+            height,
+            deflection: 0.0,
+            slenderness: 0.0,
+            thin: false,
+        });
         let along = wall.frame.z.cross(&n);
         size.length = match (
             wall.developed_span(&n),
@@ -169,33 +167,20 @@ fn rise_above((origin, n): (Point3, Vector3), pts: &[Point3]) -> f64 {
 }
 
 /// A wall through `base`: the base's side this set-up machines — the one
-/// facing up most (`upper`), or where both face alike (a vertical base),
-/// the one the wall rises higher above — and the wall's figures on the
-/// other side (deflection and thinness filled in by `size_walls`).
-fn through_sides(
-    base: &Wall,
-    upper: usize,
-    wall: &Wall,
-    up: &Vector3,
-) -> (usize, Option<OtherSide>) {
+/// facing up most, or where both face alike (a vertical base) the one the
+/// wall rises higher above (side 0 at a tie) — and the other side with the
+/// wall's height above it, mm.
+fn through_sides(base: &Wall, wall: &Wall, up: &Vector3) -> (usize, (usize, f64)) {
     let pts = wall.outline();
     let mid = wall.mid_plane().0;
     let rise = |t: usize| rise_above(base.side_plane_near(t, &mid), &pts);
     let facing = |t: usize| base.side_plane_near(t, &mid).1.dot(up);
     let side = if (facing(0) - facing(1)).abs() > thinwall_geom::tolerance::NEAR_PARALLEL_EPS {
-        upper
-    } else if (rise(0) - rise(1)).abs() > thinwall_geom::tolerance::SAME_LENGTH_MM {
-        usize::from(rise(1) > rise(0))
+        usize::from(facing(1) > facing(0))
     } else {
-        upper
+        usize::from(rise(1) > rise(0) + thinwall_geom::tolerance::SAME_LENGTH_MM)
     };
-    let other = OtherSide {
-        base_side: 1 - side,
-        height: rise(1 - side),
-        deflection: 0.0,
-        thin: false,
-    };
-    (side, Some(other))
+    (side, (1 - side, rise(1 - side)))
 }
 
 /// A wall without a base (a web) is measured by its widest cell: the side
@@ -211,10 +196,7 @@ fn without_base(
     let leaf_sides: Vec<usize> = junctions
         .iter()
         .filter(|j| j.base == w)
-        .flat_map(|j| {
-            let other = j.through.then_some(1 - j.base_side);
-            std::iter::once(j.base_side).chain(other)
-        })
+        .map(|j| j.base_side)
         .collect();
     let majority =
         usize::from(leaf_sides.iter().filter(|&&s| s == 1).count() > leaf_sides.len() / 2);
@@ -253,8 +235,9 @@ fn without_base(
         .unwrap_or(wall.frame.x);
 }
 
-/// Kinds: a wall carrying thin leaves, or one that walls run through (an
-/// I-section's web, squat outer walls or not), is a web; a wall on a base
+/// Kinds: a wall carrying thin leaves, one that walls run through (an
+/// I-section's web) or one squat walls stand on (a pocket's floor inside
+/// a squat rim) is a web; a wall on a base
 /// is a rib (T-foot) or a flange (L-foot); else a wall.
 pub fn kinds(sizes: &[WallSize]) -> Vec<StiffnessKind> {
     (0..sizes.len())

@@ -223,7 +223,7 @@ fn param_at(
             x
         }
     };
-    let want = (theta - a0) / sweep * sweep.abs();
+    let want = (theta - a0) * sweep.signum();
     let (mut lo, mut hi) = (t0, t1);
     for _ in 0..PARAM_BISECTIONS {
         let mid = 0.5 * (lo + hi);
