@@ -20,6 +20,7 @@
 
 pub mod boolean;
 pub mod components;
+mod extreme;
 pub mod measure;
 pub mod min_rect;
 pub mod parallel;

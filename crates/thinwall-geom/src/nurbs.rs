@@ -504,6 +504,15 @@ impl NurbsSurface {
     }
 
     /// Move every control point.
+    /// The control points (Cartesian): with positive weights the surface
+    /// lies in their convex hull.
+    pub fn control_points(&self) -> impl Iterator<Item = Point3> + '_ {
+        self.control
+            .iter()
+            .flatten()
+            .map(|c| Point3::new(c[0] / c[3], c[1] / c[3], c[2] / c[3]))
+    }
+
     pub fn map_points(&mut self, f: impl Fn(Point3) -> Point3) {
         for row in &mut self.control {
             for c in row {

@@ -47,11 +47,14 @@ impl Stock {
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         let all: Vec<FaceId> = a.part().face_ids().collect();
         for k in 0..3 {
-            (lo[k], hi[k]) = if world {
-                (a.bounding_box().min[k], a.bounding_box().max[k])
-            } else {
-                a.extent(&all, &axes[k])
-            };
+            (lo[k], hi[k]) = a.with_bulges(
+                &axes[k],
+                if world {
+                    (a.bounding_box().min[k], a.bounding_box().max[k])
+                } else {
+                    a.extent(&all, &axes[k])
+                },
+            );
         }
         Self {
             axes,

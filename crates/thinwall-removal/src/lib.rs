@@ -137,8 +137,14 @@ pub struct Removal {
     /// The block stock's bottom (none for a given solid), mm.
     bottom: Option<f64>,
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
-    /// booleans where edges coincide up to rounding), left out, mm³.
+    /// booleans where edges coincide up to rounding) and over cells between
+    /// a vertical face's edges that the file puts apart (narrower than
+    /// twice [`Removal::edge_gap`], where the part's crossings do not
+    /// alternate), left out, mm³.
     pub sliver_volume: f64,
+    /// How far the edges of the part's vertical faces lie off their
+    /// surfaces, at most ([`pieces::vertical_gap`]), mm.
+    pub edge_gap: f64,
     /// The part's size (its bounding diagonal), mm: tolerances scale with it.
     pub size: f64,
     /// The faces taken as triangles (not graphs of a kind the removal
@@ -150,6 +156,10 @@ pub struct Removal {
 }
 
 pub use thinwall_geom::tolerance::SLIVER_WIDTH;
+
+/// Corners of a cell toward which another point to read its column is
+/// tried, at most (twice: half-way and nine tenths of the way).
+const COLUMN_POINT_TRIES: usize = 16;
 
 fn mean_width(p: &geo::Polygon<f64>) -> f64 {
     use geo::{Euclidean, Length};
@@ -287,6 +297,9 @@ struct Columns<'a> {
     stock_pieces: &'a [Piece],
     stock: &'a StockShape<'a>,
     size: f64,
+    /// The vertical faces whose edges lie off their surfaces by more than a
+    /// sliver's width.
+    gapped: Vec<&'a pieces::Vertical>,
 }
 
 /// What the columns hold, added up column by column.
@@ -309,10 +322,121 @@ impl Columns<'_> {
             .collect()
     }
 
-    /// The intervals of part material and of stock along the column.
-    fn intervals(&self, c: &cells::Cell) -> (Vec<Interval>, Vec<Interval>) {
+    /// Whether cell `c`, `width` wide on average, lies between the two
+    /// outlines of a vertical face whose edges the file puts off its
+    /// surface: no wider than twice the face's gap, and that near its edges.
+    fn between_edges(&self, c: &cells::Cell, width: f64) -> bool {
+        use geo::{Distance, Euclidean, Line};
+        let Some(pt) = geo::InteriorPoint::interior_point(&c.poly) else {
+            return false;
+        };
+        self.gapped.iter().any(|v| {
+            let reach = 2.0 * v.gap + SLIVER_WIDTH * self.size;
+            width <= reach
+                && pt.x() >= v.bbox.min().x - reach
+                && pt.x() <= v.bbox.max().x + reach
+                && pt.y() >= v.bbox.min().y - reach
+                && pt.y() <= v.bbox.max().y + reach
+                && v.segments
+                    .iter()
+                    .any(|&[a, b]| Euclidean.distance(&Line::new(a, b), &pt) <= reach)
+        })
+    }
+
+    /// The column's volume of stock − part by its faces' fluxes (up-facing
+    /// faces add, down-facing ones take away), mm³.
+    fn flux_volume(&self, c: &cells::Cell) -> f64 {
+        let np = self.part.len();
+        let signed = |b: Bound, facing: Facing| {
+            let f = flux::flux(&b.height(self.part, self.stock_pieces), &c.poly);
+            if facing == Facing::Up {
+                f
+            } else {
+                -f
+            }
+        };
+        let stock: f64 = match self.stock {
+            StockShape::Block { lo, hi } => {
+                signed(Bound::Flat(hi[2]), Facing::Up) + signed(Bound::Flat(lo[2]), Facing::Down)
+            }
+            StockShape::Solid(_) => c
+                .covers
+                .iter()
+                .filter(|&&k| k >= np && k < np + self.stock_pieces.len())
+                .map(|&k| signed(Bound::Stock(k - np), self.stock_pieces[k - np].facing))
+                .sum(),
+        };
+        let part: f64 = c
+            .covers
+            .iter()
+            .filter(|&&k| k < np)
+            .map(|&k| signed(Bound::Part(k), self.part[k].facing))
+            .sum();
+        stock - part
+    }
+
+    /// Where cell `c`'s column is read: its interior point, unless two of
+    /// its bounds meet there (a dome's pole on the stock's top, a tube's
+    /// crest), where the block between them would read as empty; then the
+    /// point, among some between it and the cell's corners, where the
+    /// bounds stand furthest apart.
+    fn column_point(&self, c: &cells::Cell) -> geo::Point<f64> {
+        use geo::Contains;
+        let first = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
+        let tol = 1e-6 * self.size;
+        let spread0 = self.spread(c, &first);
+        if spread0 > tol {
+            return first;
+        }
+        let corners = &c.poly.exterior().0;
+        let every = (corners.len() / COLUMN_POINT_TRIES).max(1);
+        let mut best = (spread0, first);
+        for v in corners.iter().step_by(every) {
+            for share in [0.5, 0.9] {
+                let p = geo::Point::new(
+                    first.x() + (v.x - first.x()) * share,
+                    first.y() + (v.y - first.y()) * share,
+                );
+                if !c.poly.contains(&p) {
+                    continue;
+                }
+                let spread = self.spread(c, &p);
+                if spread > best.0 + tol {
+                    best = (spread, p);
+                }
+            }
+        }
+        best.1
+    }
+
+    /// The least height between two of cell `c`'s bounds at `p`, mm.
+    fn spread(&self, c: &cells::Cell, p: &geo::Point<f64>) -> f64 {
+        let np = self.part.len();
+        let mut h: Vec<f64> = c
+            .covers
+            .iter()
+            .filter_map(|&k| match k {
+                k if k < np => Some(self.part[k].height.at(p.x(), p.y())),
+                k if k < np + self.stock_pieces.len() => {
+                    Some(self.stock_pieces[k - np].height.at(p.x(), p.y()))
+                }
+                _ => None,
+            })
+            .collect();
+        if let StockShape::Block { lo, hi } = self.stock {
+            h.extend([lo[2], hi[2]]);
+        }
+        h.sort_by(f64::total_cmp);
+        h.windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The intervals of part material and of stock along the column, and
+    /// whether the part's crossings alternate (down, up, down, …).
+    fn intervals(&self, c: &cells::Cell) -> (Vec<Interval>, Vec<Interval>, bool) {
         let (np, ns) = (self.part.len(), self.stock_pieces.len());
-        let pt = geo::InteriorPoint::interior_point(&c.poly).expect("a cell has an inside");
+        let pt = self.column_point(c);
         let at = |pc: &Piece| pc.height.at(pt.x(), pt.y());
         let part_cross: Vec<(f64, Facing, Bound)> = c
             .covers
@@ -335,13 +459,21 @@ impl Columns<'_> {
                 })
                 .collect(),
         };
-        (intervals(part_cross), intervals(stock_cross))
+        let alternate = alternates(&part_cross);
+        (intervals(part_cross), intervals(stock_cross), alternate)
     }
 
     /// The blocks over cell `ci` (stock intervals minus part intervals),
     /// added to `column`.
     fn blocks_over(&self, ci: usize, c: &cells::Cell, column: &mut Column) {
-        let (solid, stock_iv) = self.intervals(c);
+        let (solid, stock_iv, alternate) = self.intervals(c);
+        let width = mean_width(&c.poly);
+        if !alternate && self.between_edges(c, width) {
+            // Between a vertical face's edges that the file puts apart: the
+            // column's volume by its faces' fluxes, in no block.
+            column.sliver_volume += self.flux_volume(c);
+            return;
+        }
         // Part material outside the stock: the stock is too small.
         for (lo, hi) in &solid {
             let inside: f64 = stock_iv
@@ -354,7 +486,7 @@ impl Columns<'_> {
         }
         let top = stock_iv.last().map(|iv| iv.1 .0);
         let bottom = stock_iv.first().map(|iv| iv.0 .0);
-        let sliver = mean_width(&c.poly) < SLIVER_WIDTH * self.size;
+        let sliver = width < SLIVER_WIDTH * self.size;
         for (lo, hi) in subtract(&stock_iv, &solid) {
             let vol = |b: &Bound| flux::flux(&b.height(self.part, self.stock_pieces), &c.poly);
             let volume = vol(&hi.1) - vol(&lo.1);
@@ -425,12 +557,18 @@ impl Removal {
         let covers = covers(part_pieces.iter().chain(&stock_pieces), bands);
         let min_area = (1e-7 * size).powi(2);
         let cells = arrange(start.to_polygon(), &covers, min_area);
+        let vertical = pieces::vertical_faces(part, &frame);
         let columns = Columns {
             part: &part_pieces,
             stock_pieces: &stock_pieces,
             stock,
             size,
+            gapped: vertical
+                .iter()
+                .filter(|v| v.gap > SLIVER_WIDTH * size)
+                .collect(),
         };
+        let edge_gap = vertical.iter().map(|v| v.gap).fold(0.0, f64::max);
         let cell_bands = cells.iter().map(|c| columns.bands_of(c)).collect();
         let mut column = Column {
             blocks: Vec::new(),
@@ -466,7 +604,6 @@ impl Removal {
                 stock,
             )
         });
-        let vertical = pieces::vertical_faces(part, &frame);
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
         let bottom = match stock {
             StockShape::Block { lo, .. } => Some(lo[2]),
@@ -477,6 +614,7 @@ impl Removal {
             meshed,
             vertical_grid,
             sliver_volume,
+            edge_gap,
             vertical,
             bottom,
             frame,
@@ -693,6 +831,20 @@ fn intervals(mut cross: Vec<(f64, Facing, Bound)>) -> Vec<(End, End)> {
         }
     }
     out
+}
+
+/// Whether crossings sorted by height alternate down, up, down, … (a
+/// column through an exact solid; a file's gaps can break it).
+fn alternates(cross: &[(f64, Facing, Bound)]) -> bool {
+    let mut sorted: Vec<(f64, Facing)> = cross.iter().map(|c| (c.0, c.1)).collect();
+    sorted.sort_by(|a, b| {
+        a.0.total_cmp(&b.0)
+            .then_with(|| (a.1 == Facing::Down).cmp(&(b.1 == Facing::Down)))
+    });
+    sorted.len().is_multiple_of(2)
+        && sorted
+            .chunks(2)
+            .all(|p| p[0].1 == Facing::Down && p[1].1 == Facing::Up)
 }
 
 /// `a − b` for sorted, disjoint interval lists.

@@ -711,39 +711,62 @@ fn open_region(open: &[Vec<(f64, f64)>]) -> MultiPolygon<f64> {
 }
 
 /// A tube: the strip between the two wrapping loops over one turn, less
-/// the loops that do not wind around (holes in it).
+/// the loops that do not wind around (holes in it). Each wrapping loop is
+/// followed in its own order (it need not be a graph over θ: a loop may
+/// run along the axis, as where a cut-out bites into the tube's end) and
+/// repeated over neighbouring turns; the band between the two repeated
+/// paths is clipped to θ ∈ [0, 2π].
 fn tube_region(wrapped: &[Vec<(f64, f64)>], open: &[Vec<(f64, f64)>]) -> MultiPolygon<f64> {
-    use std::f64::consts::{PI, TAU};
-    let band = |p: &Vec<(f64, f64)>| {
-        let mut q: Vec<(f64, f64)> = p.iter().map(|&(t, s)| (t.rem_euclid(TAU), s)).collect();
-        q.sort_by(|x, y| x.0.total_cmp(&y.0));
-        q
-    };
-    let (l0, l1) = (band(&wrapped[0]), band(&wrapped[1]));
-    let edge = |q: &Vec<(f64, f64)>, t: f64| {
-        // s at the seam by the nearest samples on either side.
-        let (first, last) = (q[0], q[q.len() - 1]);
-        let span = first.0 + TAU - last.0;
-        let w = if span > 0.0 { (t - last.0) / span } else { 0.5 };
-        last.1 + (first.1 - last.1) * w
-    };
-    let mut pts = vec![(0.0, edge(&l0, TAU))];
-    pts.extend(l0.iter().copied());
-    pts.push((TAU, edge(&l0, TAU)));
-    pts.push((TAU, edge(&l1, TAU)));
-    pts.extend(l1.iter().rev().copied());
-    pts.push((0.0, edge(&l1, TAU)));
-    let mut region = polygon_of_rings(vec![ring(pts.into_iter())]);
+    use std::f64::consts::TAU;
+    let (p0, p1) = (turns_path(&wrapped[0]), turns_path(&wrapped[1]));
+    let (slo, shi) = wrapped
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |m, q| {
+            (m.0.min(q.1), m.1.max(q.1))
+        });
+    let band = polygon_of_rings(vec![ring(p0.into_iter().chain(p1.into_iter().rev()))]);
+    let window = Rect::new(
+        Coord {
+            x: 0.0,
+            y: slo - 1.0,
+        },
+        Coord {
+            x: TAU,
+            y: shi + 1.0,
+        },
+    );
+    let mut region = band.intersection(&MultiPolygon::new(vec![window.to_polygon()]));
     for p in open {
         let mean = p.iter().map(|q| q.0).sum::<f64>() / p.len() as f64;
-        let k = ((PI - mean) / TAU).round() * TAU;
-        let hole = MultiPolygon::new(vec![Polygon::new(
-            ring(p.iter().map(|q| (q.0 + k, q.1))),
-            vec![],
-        )]);
-        region = region.difference(&hole);
+        let k = (-mean / TAU).floor();
+        for shift in [k - 1.0, k, k + 1.0] {
+            let hole = MultiPolygon::new(vec![Polygon::new(
+                ring(p.iter().map(|q| (q.0 + shift * TAU, q.1))),
+                vec![],
+            )]);
+            region = region.difference(&hole);
+        }
     }
     region
+}
+
+/// A loop that winds once around, unrolled, as a path of increasing turn
+/// over five turns (two before its own, two after): wide enough to cover
+/// θ ∈ [0, 2π] from wherever it starts.
+fn turns_path(loop_: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    use std::f64::consts::TAU;
+    let mut pts = loop_.to_vec();
+    let turn = pts[pts.len() - 1].0 - pts[0].0 + wrap_step(pts[0].0 - pts[pts.len() - 1].0);
+    if turn < 0.0 {
+        pts.reverse();
+    }
+    let mut path = Vec::with_capacity(5 * pts.len() + 1);
+    for k in -2..=2 {
+        path.extend(pts.iter().map(|q| (q.0 + TAU * k as f64, q.1)));
+    }
+    path.push((pts[0].0 + 3.0 * TAU, pts[0].1));
+    path
 }
 
 /// The half turns θ ∈ [half + 2πk, half + 2πk + π] for k in −2..=2, over
@@ -1152,6 +1175,8 @@ fn cone_piece(
 #[derive(Clone, Debug)]
 pub struct Vertical {
     pub step_id: u64,
+    /// How far its edges lie off its surface, at most, mm.
+    pub gap: f64,
     pub segments: Vec<[(f64, f64); 2]>,
     pub bbox: Rect<f64>,
     pub z: [f64; 2],
@@ -1163,14 +1188,7 @@ pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
     let mut out = Vec::new();
     for f in part.face_ids() {
         let face = part.face(f);
-        let vertical = match &face.surface {
-            Surface::Plane { frame: pf } => frame.vector_to_local(&pf.z).z.abs() < VERTICAL_EPS,
-            Surface::Cylinder { frame: cf, .. } => {
-                frame.vector_to_local(&cf.z).z.abs() > 1.0 - VERTICAL_EPS
-            }
-            _ => false,
-        };
-        if !vertical {
+        if !is_vertical(&face.surface, frame) {
             continue;
         }
         let mut segments = Vec::new();
@@ -1191,6 +1209,7 @@ pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
         }
         out.push(Vertical {
             step_id: face.step_id,
+            gap: edge_gap(part, f),
             segments,
             bbox: Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] }),
             z: [lo[2], hi[2]],
@@ -1198,3 +1217,50 @@ pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
     }
     out
 }
+
+/// Whether a surface projects to a curve along `frame.z` (a plane along
+/// up, a cylinder about an axis along up).
+fn is_vertical(s: &Surface, frame: &Frame) -> bool {
+    match s {
+        Surface::Plane { frame: pf } => frame.vector_to_local(&pf.z).z.abs() < VERTICAL_EPS,
+        Surface::Cylinder { frame: cf, .. } => {
+            frame.vector_to_local(&cf.z).z.abs() > 1.0 - VERTICAL_EPS
+        }
+        _ => false,
+    }
+}
+
+/// How far a vertical face's edges lie off its surface, at most, mm: the
+/// file's own gaps (an edge approximated by a B-spline, a vertex off its
+/// line), taken on the edges' curves. The wall's top and bottom outlines
+/// then part by up to twice this, and a column between them crosses the
+/// part's faces out of turn.
+fn edge_gap(part: &Part, f: FaceId) -> f64 {
+    let surface = &part.face(f).surface;
+    let off = |p: &Point3| match surface {
+        Surface::Plane { frame: pf } => (p - pf.origin).dot(&pf.z).abs(),
+        Surface::Cylinder { frame: cf, radius } => {
+            let l = p - cf.origin;
+            ((l - cf.z * l.dot(&cf.z)).norm() - radius).abs()
+        }
+        _ => 0.0,
+    };
+    let mut gap: f64 = 0.0;
+    for &l in &part.face(f).loops {
+        for ce in &part.loop_(l).coedges {
+            let Some(c) = &part.edge(ce.edge).nurbs else {
+                continue;
+            };
+            for (a, b) in c.spans() {
+                for k in 0..=GAP_SAMPLES_PER_SPAN {
+                    let t = a + (b - a) * k as f64 / GAP_SAMPLES_PER_SPAN as f64;
+                    gap = gap.max(off(&c.point(t)));
+                }
+            }
+        }
+    }
+    gap
+}
+
+/// Points per knot span at which an edge's distance off its face is taken.
+const GAP_SAMPLES_PER_SPAN: usize = 8;

@@ -90,15 +90,15 @@ fn edge_points(
             _ => None,
         })
         .max_by(|a, b| a.1.total_cmp(&b.1));
-    let axis = cylinder.or(circle).map(|(f, _)| *f);
-    let done = axis.is_some_and(|axis| {
+    let axis = cylinder.or(circle).map(|(f, r)| (*f, r));
+    let done = axis.is_some_and(|(axis, radius)| {
         // A circle coaxial with the axis is evaluated in closed form.
         let coaxial = circle.filter(|(cf, _)| {
             cf.z.dot(&axis.z).abs() > 1.0 - NEAR_PARALLEL_EPS
                 && (cf.origin - axis.origin).cross(&axis.z).norm() <= SAME_LENGTH_MM
         });
         turn_points(
-            &axis,
+            (&axis, radius),
             coaxial.map(|(cf, r)| (cf.origin, r)),
             c,
             forward,
@@ -119,13 +119,13 @@ fn edge_points(
 /// parameter where it reaches each angle. False, nothing pushed, for a
 /// curve that does not turn about the axis (a generator).
 fn turn_points(
-    axis: &Frame,
+    (axis, radius): (&Frame, f64),
     circle: Option<(Point3, f64)>,
     c: &thinwall_geom::NurbsCurve,
     forward: bool,
     pts: &mut Vec<Point3>,
 ) -> bool {
-    use std::f64::consts::{FRAC_PI_2, TAU};
+    use std::f64::consts::TAU;
     let (t0, t1) = c.domain();
     let angle = |p: &Point3| {
         let d = p - axis.origin;
@@ -160,20 +160,20 @@ fn turn_points(
             turn - TAU
         }
     };
-    // Arcs of equal turn get equal counts: a quarter is 16 chords even a
-    // rounding over it.
-    let n = ((CHORDS_PER_SPAN as f64 * sweep.abs() / FRAC_PI_2) - 1e-6)
-        .ceil()
-        .max(1.0) as usize;
     let at = |theta: f64| -> Point3 {
         match circle {
             Some((o, r)) => o + (axis.x * theta.cos() + axis.y * theta.sin()) * r,
             None => c.point(param_at(c, &angle, (a0, sweep, closed), theta)),
         }
     };
-    let mut thetas: Vec<f64> = (0..=2 * n)
-        .map(|k| a0 + sweep * k as f64 / (2 * n) as f64)
-        .collect();
+    let ends = turn_angles(a0, sweep, chords_per_quarter(radius));
+    let mut thetas: Vec<f64> = Vec::with_capacity(2 * ends.len());
+    for w in ends.windows(2) {
+        thetas.push(w[0]);
+        thetas.push(0.5 * (w[0] + w[1]));
+    }
+    thetas.push(a0 + sweep);
+    let n = ends.len() - 1;
     if !forward {
         thetas.reverse();
     }
@@ -189,6 +189,54 @@ fn turn_points(
     }
     true
 }
+
+/// The chord ends of an arc from angle `a0` turning by `sweep`: its two
+/// ends and, between them, the angles of a grid fixed on the axis (every
+/// `1/per_quarter` of a quarter turn from the axis's x). Arcs of one
+/// circle then share their chords wherever they overlap, whatever their
+/// ends: a wall's top and bottom edges, split at different points, project
+/// onto one polygon but near their ends.
+fn turn_angles(a0: f64, sweep: f64, per_quarter: usize) -> Vec<f64> {
+    use std::f64::consts::FRAC_PI_2;
+    let step = FRAC_PI_2 / per_quarter as f64;
+    let (from, to) = (a0 / step, (a0 + sweep) / step);
+    let near = GRID_END_SHARE;
+    let mut out = vec![a0];
+    if sweep > 0.0 {
+        let mut k = (from + near).ceil();
+        while k < to - near {
+            out.push(k * step);
+            k += 1.0;
+        }
+    } else {
+        let mut k = (from - near).floor();
+        while k > to + near {
+            out.push(k * step);
+            k -= 1.0;
+        }
+    }
+    out.push(a0 + sweep);
+    out
+}
+
+/// Chords a quarter turn on a circle of radius `r` (mm): `CHORDS_PER_SPAN`,
+/// more on a large circle, so that the outline keeping its area stays
+/// within [`OUTLINE_DEVIATION_MM`] of it (a pushed midpoint stands a third
+/// of the sagitta `r·θ²/8` outside the circle: θ ≤ √(24·d/r)).
+fn chords_per_quarter(r: f64) -> usize {
+    let theta = (24.0 * OUTLINE_DEVIATION_MM / r.max(1e-9)).sqrt();
+    let need = (std::f64::consts::FRAC_PI_2 / theta).ceil();
+    (need.min(MAX_CHORDS_PER_QUARTER as f64) as usize).max(CHORDS_PER_SPAN)
+}
+
+/// How far an arc's outline may stand off the circle, mm.
+const OUTLINE_DEVIATION_MM: f64 = 0.005;
+/// Most chords a quarter turn (a circle of 4.5 m at the deviation above).
+const MAX_CHORDS_PER_QUARTER: usize = 1024;
+
+/// A grid angle closer to an arc's end than this share of a grid step is
+/// left out (no chord much shorter than the rest).
+const GRID_END_SHARE: f64 = 1e-3;
 
 /// Turns (radians) under this are no turn: an edge along a generator.
 const TURN_EPS: f64 = 1e-9;
@@ -290,5 +338,34 @@ mod tests {
         let exact = std::f64::consts::PI * r * r;
         assert!((area(&plain) - exact).abs() / exact > 1e-3);
         assert!((area(&pushed) - exact).abs() / exact < 3e-7);
+    }
+
+    /// Two arcs of one circle with different ends share every chord end
+    /// of the axis's grid where they overlap; their own ends are their
+    /// first and last, in their direction.
+    #[test]
+    fn arcs_of_one_circle_share_the_grid_between_their_ends() {
+        use super::turn_angles;
+        let step = std::f64::consts::FRAC_PI_2 / 16.0;
+        let whole = turn_angles(0.0, std::f64::consts::PI, 16);
+        let part = turn_angles(0.1253, -(0.1253 - 2.9981), 16);
+        assert_eq!(whole.len(), 33);
+        assert_eq!((part[0], *part.last().unwrap()), (0.1253, 2.9981));
+        for t in &part[1..part.len() - 1] {
+            assert!(
+                whole.iter().any(|w| (w - t).abs() < 1e-15),
+                "{t} on the grid"
+            );
+            assert!((t / step - (t / step).round()).abs() < 1e-12);
+        }
+        let back = turn_angles(2.9981, 0.1253 - 2.9981, 16);
+        let mut reversed = back.clone();
+        reversed.reverse();
+        for (a, b) in reversed.iter().zip(&part) {
+            assert!((a - b).abs() < 1e-15, "either way round");
+        }
+        // A grid angle a hair from an end is left out: no sliver chord.
+        let near = turn_angles(step * 3.0 - 1e-9, 1.0, 16);
+        assert!(near[1] - near[0] > 0.5 * step, "{near:?}");
     }
 }
