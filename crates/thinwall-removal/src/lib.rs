@@ -18,6 +18,7 @@
 pub mod cells;
 pub mod facets;
 pub mod flux;
+mod fold;
 mod halving;
 pub mod moments;
 pub mod outline;

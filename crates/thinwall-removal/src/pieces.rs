@@ -171,9 +171,11 @@ impl Meshed {
 
 /// A face as graph pieces of its triangles: the watertight tessellation
 /// with the removal's own edge points as boundary (so it meets its exact
-/// neighbours without a gap), split where its facing turns: one piece of
-/// the triangles facing up, one of those facing down (triangles standing
-/// vertical project to nothing and are left out).
+/// neighbours without a gap), split where its facing turns: a piece per
+/// connected patch of the triangles facing up, one per patch of those
+/// facing down (triangles standing vertical project to nothing and are
+/// left out). A face that curls past vertical and back (a free-form
+/// fillet folding over itself) gives two patches facing up, each a graph.
 pub fn facet_pieces(
     part: &Part,
     f: FaceId,
@@ -186,54 +188,84 @@ pub fn facet_pieces(
         &|e| crate::sample::edge_interior_points(part, e),
         deviation,
     )?;
+    let local: Vec<[f64; 3]> = points
+        .iter()
+        .map(|p| {
+            let l = frame.to_local(p);
+            [l.x, l.y, l.z]
+        })
+        .collect();
     let step_id = part.face(f).step_id;
     let (mut up, mut down) = (Vec::new(), Vec::new());
     for t in triangles {
-        let [a, b, c] = t.map(|i| frame.to_local(&points[i as usize]));
+        let [a, b, c] = t.map(|i| Vector3::from(local[i as usize]));
         let n = (b - a).cross(&(c - a));
         if n.z.abs() <= VERTICAL_EPS * n.norm() {
             continue;
         }
-        let tri = [a, b, c].map(|p| [p.x, p.y, p.z]);
         if n.z > 0.0 {
-            up.push(tri);
+            up.push(t);
         } else {
-            down.push(tri);
+            down.push(t);
         }
     }
     let one_way = up.is_empty() || down.is_empty();
     let mut overlap_volume = 0.0;
     let mut out = Vec::new();
     for (facing, tris) in [(Facing::Up, up), (Facing::Down, down)] {
-        if tris.is_empty() {
-            continue;
+        let patches = if one_way { vec![tris] } else { patches(&tris) };
+        for patch in patches.into_iter().filter(|p| !p.is_empty()) {
+            let tris: Vec<[[f64; 3]; 3]> =
+                patch.iter().map(|t| t.map(|i| local[i as usize])).collect();
+            // A face that faces one way all over is a graph over its own
+            // projected loops (the boundary its neighbours share); one that
+            // turns is split along its silhouette by its triangles.
+            let region = if one_way {
+                project(part, f, frame)
+            } else {
+                let (region, layered) = triangles_region(&tris, deviation)?;
+                overlap_volume += layered;
+                region
+            };
+            let height = Height::Facets {
+                facets: std::sync::Arc::new(crate::facets::Facets::new(tris)),
+                pad: [0.0; 6],
+            };
+            out.extend(finish(f, step_id, facing, region, height));
         }
-        // A face that faces one way all over is a graph over its own
-        // projected loops (the boundary its neighbours share); one that
-        // turns is split along its silhouette by its triangles.
-        let region = if one_way {
-            project(part, f, frame)
-        } else {
-            let (region, overlap) = triangles_region(&tris, deviation)?;
-            let zs = tris.iter().flat_map(|t| t.iter().map(|p| p[2]));
-            let (lo, hi) = zs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
-                (a.min(z), b.max(z))
-            });
-            overlap_volume += overlap * (hi - lo);
-            region
-        };
-        let height = Height::Facets {
-            facets: std::sync::Arc::new(crate::facets::Facets::new(tris)),
-            pad: [0.0; 6],
-        };
-        out.extend(finish(f, step_id, facing, region, height));
     }
     Ok((out, overlap_volume))
 }
 
-/// The union of triangles' projections, all facing one way; an error
-/// where they overlap (the face folds over itself in projection, or its
-/// triangles do near an apex): never a region counted twice.
+/// Triangles (indices into one point list) grouped into patches that hold
+/// together across shared edges.
+fn patches(tris: &[[u32; 3]]) -> Vec<Vec<[u32; 3]>> {
+    use petgraph::unionfind::UnionFind;
+    let mut joined = UnionFind::<usize>::new(tris.len());
+    let mut first_at: std::collections::HashMap<(u32, u32), usize> = Default::default();
+    for (k, t) in tris.iter().enumerate() {
+        for (a, b) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+            match first_at.entry((a.min(b), a.max(b))) {
+                std::collections::hash_map::Entry::Occupied(o) => {
+                    joined.union(*o.get(), k);
+                }
+                std::collections::hash_map::Entry::Vacant(v) => {
+                    v.insert(k);
+                }
+            }
+        }
+    }
+    let mut by_root: std::collections::BTreeMap<usize, Vec<[u32; 3]>> = Default::default();
+    for (k, t) in tris.iter().enumerate() {
+        by_root.entry(joined.find(k)).or_default().push(*t);
+    }
+    by_root.into_values().collect()
+}
+
+/// The union of triangles' projections, all facing one way, and the
+/// volume between the layers where they overlap (mm³); an error where
+/// that is more than the deviation allows (the face folds over itself in
+/// projection): never a region counted twice beyond the bound.
 fn triangles_region(
     tris: &[[[f64; 3]; 3]],
     deviation: f64,
@@ -252,24 +284,25 @@ fn triangles_region(
     let region = thinwall_analysis::boolean::union_tiles(&polys);
     let union: f64 = region.0.iter().map(crate::moments::area).sum();
     let overlap = (total - union).max(0.0);
-    // A fold is a share of the face and more than a few triangles' worth
-    // (a small face near vertical overlaps by specks).
-    if overlap > FOLD_SHARE * total && overlap > (FOLD_SPAN * deviation).powi(2) {
+    // Overlaps no wider than a chord's sagitta (the deviation) are the
+    // tessellation's noise along a silhouette (a tall face standing near
+    // vertical overlaps its own rows by slivers), counted into the meshed
+    // bound; wider ones holding more than a deviation-thick skin of the
+    // triangles between their layers are a face folding over itself.
+    if overlap == 0.0 {
+        return Ok((region, 0.0));
+    }
+    let (slivers, folds) = crate::fold::layered_volume(tris, 2.0 * deviation);
+    let skin = deviation * tris.iter().map(crate::fold::area).sum::<f64>();
+    if folds > skin {
         return Err(format!(
-            "a face whose triangles overlap in projection by {overlap:.4} mm² of {total:.4} (it folds over itself)"
+            "a face whose triangles overlap in projection by {overlap:.4} mm² of {total:.4}, \
+             {folds:.4} mm³ between their layers, more than a {deviation} mm skin of them \
+             ({skin:.4} mm³): it folds over itself"
         ));
     }
-    Ok((region, overlap))
+    Ok((region, slivers + folds))
 }
-
-/// Triangles of one facing overlapping by more than this share of their
-/// projected area fold over themselves (a face curling past vertical);
-/// below it, the triangles straddling a silhouette overlap their
-/// neighbours by slivers, counted into the meshed volume bound.
-const FOLD_SHARE: f64 = 1e-2;
-
-/// …and by more than a square this many deviations wide.
-const FOLD_SPAN: f64 = 10.0;
 
 impl Piece {
     /// The area of a facets piece's triangles themselves (not their
