@@ -5,8 +5,9 @@
 //! and 3e-6 of it (arcs keep their areas to 2e-7 and their outlines within
 //! 5 µm; FTC 11's lettering has edges 0.014 mm off its walls); or it is
 //! refused naming a face it cannot take, never a wrong volume; or it runs
-//! past a time budget (the arrangement of a meshed face's outline of
-//! hundreds of thousands of corners). Most parts add up.
+//! past a time budget. Eleven of the twelve add up (CTC 01 took over 400 s
+//! and 3 GB while its drill-point cones' outlines had 60k–290k corners;
+//! FTC 10's face #1573 folds over itself).
 
 mod common;
 
@@ -33,7 +34,7 @@ const OCC_VOLUMES: [(&str, f64); 12] = [
 ];
 
 /// Seconds a part's removal may take here.
-const BUDGET_SECONDS: u64 = 20;
+const BUDGET_SECONDS: u64 = 120;
 
 enum Outcome {
     AddsUp,
@@ -56,8 +57,11 @@ fn every_nist_part_adds_up_to_opencascades_volume_or_names_why_not() {
         }
     }
     eprintln!("{adds_up} add up, {refused} refused, {over} over {BUDGET_SECONDS} s");
-    assert!(adds_up >= 10, "{adds_up} of 12 add up");
-    assert!(over <= 1, "{over} over the budget");
+    assert!(adds_up >= 11, "{adds_up} of 12 add up");
+    assert!(
+        refused + over <= 1,
+        "{refused} refused, {over} over the budget"
+    );
 }
 
 fn removal(path: &std::path::Path, occ: f64, name: &str) -> Outcome {

@@ -61,6 +61,20 @@ pub fn union_tiles(tiles: &[Polygon<f64>]) -> MultiPolygon<f64> {
     from_shapes(shapes.overlay(&none, OverlayRule::Subject, FillRule::NonZero))
 }
 
+/// The region closed rings wind around (the non-zero rule over all of
+/// them as one shape): a patch of triangles' outline, outer rings counter-
+/// clockwise and holes clockwise, cleaned of the small self-overlaps its
+/// triangles leave along a silhouette.
+pub fn wound_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
+    let shape: Vec<Vec<[f64; 2]>> = rings.into_iter().filter(|r| r.len() >= 3).collect();
+    if shape.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    crate::parallel::check_deadline();
+    let none: Shapes = Vec::new();
+    from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, FillRule::NonZero))
+}
+
 /// The union of many regions, pairwise up a balanced tree (faster here
 /// than one sweep over all of them, whose overlaps run deep).
 pub fn union_all(mut parts: Vec<MultiPolygon<f64>>) -> MultiPolygon<f64> {

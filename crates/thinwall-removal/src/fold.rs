@@ -67,6 +67,12 @@ pub fn area(t: &[[f64; 3]; 3]) -> f64 {
         .hypot(u[0] * v[1] - u[1] * v[0])
 }
 
+/// A triangle's projection's area, mm².
+pub fn flat_area(t: &[[f64; 3]; 3]) -> f64 {
+    let [a, b, c] = *t;
+    0.5 * cross([a[0], a[1]], [b[0], b[1]], [c[0], c[1]]).abs()
+}
+
 fn flat_box(t: &[[f64; 3]; 3]) -> ([f64; 2], [f64; 2]) {
     let lo = [0, 1].map(|k| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min));
     let hi = [0, 1].map(|k| t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max));

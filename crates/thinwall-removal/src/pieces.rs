@@ -215,6 +215,11 @@ pub fn facet_pieces(
     for (facing, tris) in [(Facing::Up, up), (Facing::Down, down)] {
         let patches = if one_way { vec![tris] } else { patches(&tris) };
         for patch in patches.into_iter().filter(|p| !p.is_empty()) {
+            let outline = if one_way {
+                Vec::new()
+            } else {
+                patch_outline(&patch, &local, facing)
+            };
             let tris: Vec<[[f64; 3]; 3]> =
                 patch.iter().map(|t| t.map(|i| local[i as usize])).collect();
             // A face that faces one way all over is a graph over its own
@@ -223,7 +228,7 @@ pub fn facet_pieces(
             let region = if one_way {
                 project(part, f, frame)
             } else {
-                let (region, layered) = triangles_region(&tris, deviation)?;
+                let (region, layered) = triangles_region(&tris, outline, deviation)?;
                 overlap_volume += layered;
                 region
             };
@@ -235,6 +240,67 @@ pub fn facet_pieces(
         }
     }
     Ok((out, overlap_volume))
+}
+
+/// A region without the holes and parts smaller than a square a hundredth
+/// of a deviation wide: specks the booleans leave where a fan of sliver
+/// triangles meets at a cone's apex.
+fn drop_specks(region: MultiPolygon<f64>, deviation: f64) -> MultiPolygon<f64> {
+    let speck = (0.01 * deviation).powi(2);
+    MultiPolygon::new(
+        region
+            .0
+            .into_iter()
+            .filter(|p| crate::moments::area(&Polygon::new(p.exterior().clone(), vec![])) > speck)
+            .map(|p| {
+                let (outer, holes) = p.into_inner();
+                let holes = holes
+                    .into_iter()
+                    .filter(|h| crate::moments::area(&Polygon::new(h.clone(), vec![])) > speck)
+                    .collect();
+                Polygon::new(outer, holes)
+            })
+            .collect(),
+    )
+}
+
+/// A patch's outline seen from above: its edges that no other triangle of
+/// the patch shares, chained into rings running counter-clockwise round
+/// the patch (triangles facing down turn the other way in projection, so
+/// theirs are reversed).
+fn patch_outline(patch: &[[u32; 3]], local: &[[f64; 3]], facing: Facing) -> Vec<Vec<[f64; 2]>> {
+    use std::collections::{BTreeMap, HashSet};
+    let directed: HashSet<(u32, u32)> = patch
+        .iter()
+        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+        .collect();
+    let mut next: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
+    for &(a, b) in &directed {
+        if !directed.contains(&(b, a)) {
+            next.entry(a).or_default().push(b);
+        }
+    }
+    let mut rings = Vec::new();
+    while let Some((&start, _)) = next.iter().find(|(_, v)| !v.is_empty()) {
+        let mut ring = vec![start];
+        let mut at = start;
+        while let Some(b) = next.get_mut(&at).and_then(Vec::pop) {
+            if b == start {
+                break;
+            }
+            ring.push(b);
+            at = b;
+        }
+        let mut pts: Vec<[f64; 2]> = ring
+            .iter()
+            .map(|&i| [local[i as usize][0], local[i as usize][1]])
+            .collect();
+        if facing == Facing::Down {
+            pts.reverse();
+        }
+        rings.push(pts);
+    }
+    rings
 }
 
 /// Triangles (indices into one point list) grouped into patches that hold
@@ -268,20 +334,14 @@ fn patches(tris: &[[u32; 3]]) -> Vec<Vec<[u32; 3]>> {
 /// projection): never a region counted twice beyond the bound.
 fn triangles_region(
     tris: &[[[f64; 3]; 3]],
+    outline: Vec<Vec<[f64; 2]>>,
     deviation: f64,
 ) -> Result<(MultiPolygon<f64>, f64), String> {
-    let polys: Vec<Polygon<f64>> = tris
-        .iter()
-        .map(|[a, b, c]| {
-            let ring =
-                LineString::from(vec![(a[0], a[1]), (b[0], b[1]), (c[0], c[1]), (a[0], a[1])]);
-            Polygon::new(ring, vec![]).orient(geo::orient::Direction::Default)
-        })
-        .collect();
-    let total: f64 = polys.iter().map(crate::moments::area).sum();
+    let total: f64 = tris.iter().map(crate::fold::flat_area).sum();
     // Through i_overlay 9 (geo's i_overlay 4.5 panics on such input:
-    // the ledger).
-    let region = thinwall_analysis::boolean::union_tiles(&polys);
+    // the ledger): the patch's own outline, not the union of its
+    // triangles, whose slivers at an apex cut it into 10^5 corners.
+    let region = drop_specks(thinwall_analysis::boolean::wound_region(outline), deviation);
     let union: f64 = region.0.iter().map(crate::moments::area).sum();
     let overlap = (total - union).max(0.0);
     // Overlaps no wider than a chord's sagitta (the deviation) are the
