@@ -97,21 +97,27 @@ fn overlaps(a: &Rect<f64>, b: &Rect<f64>) -> bool {
         && b.min().y <= a.max().y
 }
 
+/// A triangle's normal `(b − a) × (c − a)` (not unit: twice its area long).
+pub(crate) fn normal(t: &[[f64; 3]; 3]) -> [f64; 3] {
+    let [a, b, c] = *t;
+    let (u, v) = (
+        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+        [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+    );
+    [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ]
+}
+
 impl Facets {
     /// `tris` in the removal frame, none standing vertical.
     pub fn new(tris: Vec<[[f64; 3]; 3]>) -> Self {
         let planes = tris
             .iter()
-            .map(|[a, b, c]| {
-                let (u, v) = (
-                    [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-                    [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-                );
-                let n = [
-                    u[1] * v[2] - u[2] * v[1],
-                    u[2] * v[0] - u[0] * v[2],
-                    u[0] * v[1] - u[1] * v[0],
-                ];
+            .map(|t| {
+                let (a, n) = (t[0], normal(t));
                 let (gx, gy) = (-n[0] / n[2], -n[1] / n[2]);
                 [a[2] - gx * a[0] - gy * a[1], gx, gy]
             })

@@ -57,14 +57,8 @@ fn perimeter(poly: &[[f64; 2]]) -> f64 {
 
 /// A triangle's own area (not its projection's), mm².
 pub fn area(t: &[[f64; 3]; 3]) -> f64 {
-    let [a, b, c] = *t;
-    let (u, v) = (
-        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-        [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-    );
-    0.5 * (u[1] * v[2] - u[2] * v[1])
-        .hypot(u[2] * v[0] - u[0] * v[2])
-        .hypot(u[0] * v[1] - u[1] * v[0])
+    let n = crate::facets::normal(t);
+    0.5 * n[0].hypot(n[1]).hypot(n[2])
 }
 
 /// A triangle's projection's area, mm².
@@ -134,16 +128,7 @@ fn area_centroid(poly: &[[f64; 2]]) -> (f64, [f64; 2]) {
 
 /// The height of a triangle's plane over point `c`.
 fn height(t: &[[f64; 3]; 3], c: [f64; 2]) -> f64 {
-    let [a, b, d] = *t;
-    let (u, v) = (
-        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-        [d[0] - a[0], d[1] - a[1], d[2] - a[2]],
-    );
-    let n = [
-        u[1] * v[2] - u[2] * v[1],
-        u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0],
-    ];
+    let (a, n) = (t[0], crate::facets::normal(t));
     if n[2].abs() < 1e-300 {
         return a[2];
     }
