@@ -7,7 +7,8 @@ places come from a seeded generator.
 
 Each part is `bulges_SEED.step` with `bulges_SEED.truth.json`: the plate's
 size, each bulge's kind, centre and radii, and the part's extent along the
-world axes (`lo`, `hi`, mm): along z the crests, not the edges.
+world axes (`lo`, `hi`, mm): along z the crests, not the edges; and its
+volume in closed form (`volume`, mm³).
 
 usage: python3 scripts/make_bulge_fixtures.py [OUT_DIR [FIRST_SEED [COUNT]]]
        (default fixtures/bulges, seeds 1..3)
@@ -60,8 +61,13 @@ def part(seed):
 
     hi = max(b["crest"] for b in bulges)
     lo = min(b["crest"] for b in bulges)
+    # The plate, the beads' halves outside it (pi^2 R r^2 each: half a
+    # torus) and the dome's cap (pi h^2 (3 rs - h) / 3).
+    volume = (length * width * t + math.pi ** 2 * big * r * r + math.pi ** 2 * bu * ru * ru
+              + math.pi * h * h * (3 * rs - h) / 3)
     truth = {"seed": seed, "length": length, "width": width, "thickness": t,
-             "bulges": bulges, "lo": [0.0, 0.0, lo], "hi": [length, width, hi]}
+             "bulges": bulges, "lo": [0.0, 0.0, lo], "hi": [length, width, hi],
+             "volume": volume}
     return body, truth
 
 
