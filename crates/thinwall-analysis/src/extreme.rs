@@ -11,8 +11,11 @@
 //! a free-form face's local maximum found from its highest mesh vertex) is
 //! taken when it lies on the face: on one of the face's triangles.
 //!
-//! The mesh is built only when a surface's whole extent (a sphere's, a
-//! torus's, a free-form control net's) passes beyond the boundary samples.
+//! Only a face whose surface's whole extent (a sphere's, a torus's, a
+//! free-form control net's) passes beyond the boundary samples is
+//! triangulated, alone and coarsely (a thousandth of the part's size): the
+//! part's own mesh is not built for this (it made `recognize --no-reach`
+//! ten times slower on parts with beads).
 
 use crate::PartAnalysis;
 use thinwall_brep::FaceId;
@@ -81,25 +84,56 @@ fn surface_extent(s: &Surface, dir: &Vector3) -> Option<(f64, f64)> {
 /// The highest point of face `f` along `dir` that is not on its edges, as
 /// its height, if the surface's top lies on the face.
 fn face_extreme(a: &PartAnalysis, f: FaceId, dir: &Vector3) -> Option<f64> {
-    let mesh = a.mesh();
-    let fm = mesh.faces.iter().find(|m| m.face == f)?;
-    let top = fm
-        .triangles
+    let part = a.part();
+    let (points, triangles) = thinwall_brep::tessellate::face_triangles(
+        part,
+        f,
+        &|e| edge_samples(part, e),
+        COARSE_DEVIATION * a.tol().diagonal,
+    )
+    .ok()?;
+    let top = triangles
         .iter()
         .flatten()
-        .map(|&i| mesh.points[i as usize])
+        .map(|&i| points[i as usize])
         .max_by(|p, q| p.coords.dot(dir).total_cmp(&q.coords.dot(dir)))?;
-    let candidate = match &a.part().face(f).surface {
+    let candidate = match &part.face(f).surface {
         Surface::Freeform { nurbs, .. } => ascend(nurbs, &top, dir),
         s => surface_top_near(s, &top, dir)?,
     };
-    let on_face = fm.triangles.iter().any(|t| {
-        let [p, q, r] = t.map(|i| mesh.points[i as usize]);
+    let on_face = triangles.iter().any(|t| {
+        let [p, q, r] = t.map(|i| points[i as usize]);
         on_triangle(&candidate, [p, q, r], chord_gap(&p, &q, &r))
     });
     let best = if on_face { candidate } else { top };
     Some(best.coords.dot(dir).max(top.coords.dot(dir)))
 }
+
+/// The deviation of a face triangulated to find its top, as a share of
+/// the part's size.
+const COARSE_DEVIATION: f64 = 1e-3;
+
+/// Points strictly inside edge `e`, start to end: a few per knot span.
+fn edge_samples(part: &thinwall_brep::Part, e: thinwall_brep::EdgeId) -> Vec<Point3> {
+    let Some(c) = &part.edge(e).nurbs else {
+        return Vec::new();
+    };
+    if c.degree == 1 && c.is_polynomial() {
+        return Vec::new();
+    }
+    c.spans()
+        .into_iter()
+        .enumerate()
+        .flat_map(|(k, (t0, t1))| {
+            let first = if k == 0 { 1 } else { 0 };
+            (first..EDGE_SAMPLES).map(move |i| t0 + (t1 - t0) * i as f64 / EDGE_SAMPLES as f64)
+        })
+        .map(|t| c.point(t))
+        .collect()
+}
+
+/// Points per knot span of an edge bounding a face triangulated alone.
+const EDGE_SAMPLES: usize = 8;
 
 /// The point of a sphere's or torus's highest set along `dir` nearest `p`
 /// (the pole; the torus's top point, or on its top circle when `dir` is

@@ -143,9 +143,6 @@ pub struct Removal {
     /// twice [`Removal::edge_gap`], where the part's crossings do not
     /// alternate), left out, mm³.
     pub sliver_volume: f64,
-    /// How far the edges of the part's vertical faces lie off their
-    /// surfaces, at most ([`pieces::vertical_gap`]), mm.
-    pub edge_gap: f64,
     /// The part's size (its bounding diagonal), mm: tolerances scale with it.
     pub size: f64,
     /// The faces taken as triangles (not graphs of a kind the removal
@@ -569,7 +566,6 @@ impl Removal {
                 .filter(|v| v.gap > SLIVER_WIDTH * size)
                 .collect(),
         };
-        let edge_gap = vertical.iter().map(|v| v.gap).fold(0.0, f64::max);
         let cell_bands = cells.iter().map(|c| columns.bands_of(c)).collect();
         let mut column = Column {
             blocks: Vec::new(),
@@ -615,7 +611,6 @@ impl Removal {
             meshed,
             vertical_grid,
             sliver_volume,
-            edge_gap,
             vertical,
             bottom,
             frame,
@@ -698,6 +693,12 @@ impl Removal {
             .filter(|b| b.cleared)
             .map(|b| b.volume)
             .sum()
+    }
+
+    /// How far the edges of the part's vertical faces lie off their
+    /// surfaces, at most (the file's gaps), mm.
+    pub fn edge_gap(&self) -> f64 {
+        self.vertical.iter().map(|v| v.gap).fold(0.0, f64::max)
     }
 
     pub fn removed_volume(&self) -> f64 {
