@@ -329,8 +329,7 @@ fn operations_page_holds_every_operation_and_its_fields() {
     );
     let lib = thinwall_ops::ToolLibrary::default_tools();
     let holes = common::features_in_setup(&a);
-    let (frame, ops) =
-        thinwall_ops::plan_setup(&a, &holes, &lib, None, thinwall_ops::Turn::First).unwrap();
+    let (frame, ops) = thinwall_ops::plan_setup(&a, &holes, &lib, None).unwrap();
     let count = ops.operations.len();
     let report = thinwall_report::operations::OperationsReport::new(
         "plate",
@@ -374,43 +373,29 @@ fn operations_page_holds_every_operation_and_its_fields() {
 }
 
 /// The operations page of a panel pocketed from both sides, planned one
-/// side after the other: its data holds the second side (up reversed, its
-/// frame, its own operations with fields to draw), which the page shows
-/// as a tab of its own.
+/// side after the other: its data holds the second set-up (up reversed,
+/// its frame, its own operations with fields to draw), which the page
+/// shows as a tab of its own.
 #[test]
 fn operations_page_holds_the_second_side() {
-    let part = read(&common::root().join("fixtures/pockets/pockets_4.step"));
-    let lib = thinwall_ops::ToolLibrary::default_tools();
-    let side = |up: [f64; 3], turn| {
-        let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
-        let holes = common::features_in_setup(&a);
-        thinwall_ops::plan_setup(&a, &holes, &lib, None, turn).unwrap()
-    };
-    let (frame, first) = side([0.0, 0.0, 1.0], thinwall_ops::Turn::First);
-    let (frame2, second) = side([0.0, 0.0, -1.0], thinwall_ops::Turn::AfterOpposite);
-    let count = second.operations.len();
-    assert!(count > 0 && first.out_of_reach_mm3 > 0.0);
-    let mut report = thinwall_report::operations::OperationsReport::new(
-        "panel",
-        [0.0, 0.0, 1.0],
-        &frame,
-        lib.clone(),
-        first,
-    );
-    report.second = Some(thinwall_report::operations::SecondSide::new(
-        [0.0, 0.0, -1.0],
-        &frame2,
-        second,
-    ));
+    let path = common::root().join("fixtures/pockets/pockets_4.step");
+    let part = read(&path);
+    let loaded = thinwall_study::LoadedPart::read_file(&path).unwrap();
+    let study = thinwall_study::Study::new(&loaded);
+    let mut req = thinwall_study::OperationsRequest::new(Setup::default());
+    req.later_ups = vec![[0.0, 0.0, -1.0]];
+    let report = thinwall_study::operations(&study, &req).unwrap().report;
+    let count = report.then[0].setup.operations.len();
+    assert!(count > 0 && report.setup.out_of_reach_mm3 > 0.0);
     let a = PartAnalysis::new(
         &part,
         Setup::new([0.0, 0.0, 1.0], Machine::ThreeAxis).unwrap(),
     );
     let page = html::operations_page("operations", &a, &report);
     assert_self_contained(&page);
-    assert!(page.contains("'Second side'"));
+    assert!(page.contains("'Set-up ' + (k + 2)"));
     let data = html::data_of(&page).expect("the page's data");
-    let second = &data["operations"]["second"];
+    let second = &data["operations"]["then"][0];
     assert_eq!(second["up"][2], -1.0);
     assert_eq!(second["frame"].as_array().map(Vec::len), Some(4));
     let listed = second["setup"]["operations"].as_array().unwrap();

@@ -356,12 +356,48 @@ enum tw_status tw_operations_both_sides(const struct tw_part *part,
                                         double axial_depth,
                                         struct tw_operations_result **out);
 
-// The second side of a result from `tw_operations_both_sides`, as a
-// result of its own: its up reversed, its operations, its JSON the second
-// set-up's report alone. `TW_ERR_NOT_APPLICABLE` for a result of one
-// set-up. Free with `tw_operations_free`.
+// Plan `part`'s operations over several set-ups in turn, as `thinwall
+// operations --up A --up B …`: `ups` holds `n_ups` directions (x, y, z
+// each, in the part's coordinates), each set-up cutting what those before
+// it left; `n_ups` 0 (`ups` may then be NULL) proposes the set-ups, as
+// `thinwall operations` without `--up`: the fewest ups that reach stock −
+// part, the most material first. `opt` gives the machine and parallelism
+// (its up is not used; no placement); the library and depth as
+// `tw_operations`. `*out` reads the first set-up;
+// `tw_operations_setup_count` and `tw_operations_setup_at` give the others,
+// `tw_operations_residue` what none reaches. A zero direction is
+// `TW_ERR_INVALID_ARGUMENT`. Free with `tw_operations_free`.
+enum tw_status tw_operations_setups(const struct tw_part *part,
+                                    const struct tw_options *opt,
+                                    const double *ups,
+                                    size_t n_ups,
+                                    const char *tools_toml,
+                                    double axial_depth,
+                                    struct tw_operations_result **out);
+
+// The second set-up of a result (from `tw_operations_both_sides` or
+// `tw_operations_setups`), as a result of its own: `tw_operations_setup_at`
+// with index 1. `TW_ERR_NOT_APPLICABLE` for a result of one set-up. Free
+// with `tw_operations_free`.
 enum tw_status tw_operations_second(const struct tw_operations_result *result,
                                     struct tw_operations_result **out);
+
+// How many set-ups a result holds (1, or more from
+// `tw_operations_both_sides` and `tw_operations_setups`).
+enum tw_status tw_operations_setup_count(const struct tw_operations_result *result, size_t *count);
+
+// Set-up `index` (0 the first) of a result, as a result of its own: its
+// up, its operations, its JSON that set-up's report alone.
+// `TW_ERR_OUT_OF_RANGE` past the last. Free with `tw_operations_free`.
+enum tw_status tw_operations_setup_at(const struct tw_operations_result *result,
+                                      size_t index,
+                                      struct tw_operations_result **out);
+
+// What no set-up of the result reaches, mm³ (0 for a result of one
+// set-up, which leaves what it does not reach to another:
+// `tw_operations_volumes`).
+enum tw_status tw_operations_residue(const struct tw_operations_result *result,
+                                     double *residue_mm3);
 
 // The set-up's volumes, mm³: what it leaves to another set-up (material
 // under the part its up does not reach) and what a set-up before it took
@@ -373,7 +409,7 @@ enum tw_status tw_operations_volumes(const struct tw_operations_result *result,
 // Free an operations result. NULL is allowed.
 void tw_operations_free(struct tw_operations_result *result);
 
-// The result as JSON (`thinwall/operations/1`, as the CLI prints it).
+// The result as JSON (`thinwall/operations/2`, as the CLI prints it).
 // `*out_json` is a new string to free with `tw_string_free`.
 enum tw_status tw_operations_to_json(const struct tw_operations_result *result, char **out_json);
 

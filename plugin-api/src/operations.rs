@@ -105,19 +105,75 @@ unsafe fn run(
     axial_depth: f64,
     both_sides: bool,
 ) -> Result<tw_operations_result, crate::error::Failure> {
-    let p = part_ref(part)?;
     let o = options_or_default(opt);
     let mut request = OperationsRequest::new(o.request.setup.clone());
+    request.both_sides = both_sides;
+    planned(part, opt, tools_toml, axial_depth, request)
+}
+
+/// `request` with the library and depth given, run on `part`.
+unsafe fn planned(
+    part: *const tw_part,
+    opt: *const tw_options,
+    tools_toml: *const c_char,
+    axial_depth: f64,
+    mut request: OperationsRequest,
+) -> Result<tw_operations_result, crate::error::Failure> {
+    let p = part_ref(part)?;
+    let o = options_or_default(opt);
     request.tools = library(tools_toml)?;
     // 0 asks for the largest end mill's depth.
     request.axial_depth = (axial_depth != 0.0).then_some(axial_depth);
-    request.both_sides = both_sides;
     let report = p
         .with_study(o.request.parallel, |study| {
             thinwall_study::operations(study, &request).map(|r| r.report)
         })
         .map_err(study_failure)?;
     Ok(result_of(report))
+}
+
+/// Plan `part`'s operations over several set-ups in turn, as `thinwall
+/// operations --up A --up B …`: `ups` holds `n_ups` directions (x, y, z
+/// each, in the part's coordinates), each set-up cutting what those before
+/// it left; `n_ups` 0 (`ups` may then be NULL) proposes the set-ups, as
+/// `thinwall operations` without `--up`: the fewest ups that reach stock −
+/// part, the most material first. `opt` gives the machine and parallelism
+/// (its up is not used; no placement); the library and depth as
+/// `tw_operations`. `*out` reads the first set-up;
+/// `tw_operations_setup_count` and `tw_operations_setup_at` give the others,
+/// `tw_operations_residue` what none reaches. A zero direction is
+/// `TW_ERR_INVALID_ARGUMENT`. Free with `tw_operations_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_setups(
+    part: *const tw_part,
+    opt: *const tw_options,
+    ups: *const f64,
+    n_ups: usize,
+    tools_toml: *const c_char,
+    axial_depth: f64,
+    out: *mut *mut tw_operations_result,
+) -> tw_status {
+    construct("tw_operations_setups", out, || {
+        if n_ups > 0 && ups.is_null() {
+            return Err(null("ups"));
+        }
+        let o = options_or_default(opt);
+        let mut setup = o.request.setup.clone();
+        let mut request = if n_ups == 0 {
+            let mut r = OperationsRequest::new(setup);
+            r.choose_up = true;
+            r
+        } else {
+            let given = std::slice::from_raw_parts(ups, 3 * n_ups);
+            let dirs: Vec<[f64; 3]> = given.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
+            setup.up = dirs[0];
+            let mut r = OperationsRequest::new(setup);
+            r.later_ups = dirs[1..].to_vec();
+            r
+        };
+        request.setup.placement = None;
+        planned(part, opt, tools_toml, axial_depth, request)
+    })
 }
 
 /// A result over `report`'s first set-up.
@@ -131,30 +187,106 @@ fn result_of(report: OperationsReport) -> tw_operations_result {
     tw_operations_result { report, tools }
 }
 
-/// The second side of a result from `tw_operations_both_sides`, as a
-/// result of its own: its up reversed, its operations, its JSON the second
-/// set-up's report alone. `TW_ERR_NOT_APPLICABLE` for a result of one
-/// set-up. Free with `tw_operations_free`.
+/// The second set-up of a result (from `tw_operations_both_sides` or
+/// `tw_operations_setups`), as a result of its own: `tw_operations_setup_at`
+/// with index 1. `TW_ERR_NOT_APPLICABLE` for a result of one set-up. Free
+/// with `tw_operations_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_operations_second(
     result: *const tw_operations_result,
     out: *mut *mut tw_operations_result,
 ) -> tw_status {
-    construct("tw_operations_second", out, || {
+    construct("tw_operations_second", out, || setup_at(result, 1))
+}
+
+/// How many set-ups a result holds (1, or more from
+/// `tw_operations_both_sides` and `tw_operations_setups`).
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_setup_count(
+    result: *const tw_operations_result,
+    count: *mut usize,
+) -> tw_status {
+    guard("tw_operations_setup_count", || {
         if result.is_null() {
             return Err(null("result"));
         }
-        let first = &(*result).report;
-        let second = first.second.as_ref().ok_or((
-            tw_status::TW_ERR_NOT_APPLICABLE,
-            "this result has one set-up: make it with tw_operations_both_sides".to_string(),
-        ))?;
-        let mut report = first.clone();
-        report.up = second.up;
-        report.frame = second.frame;
-        report.setup = second.setup.clone();
-        report.second = None;
-        Ok(result_of(report))
+        if count.is_null() {
+            return Err(null("count"));
+        }
+        *count = 1 + (*result).report.then.len();
+        Ok(())
+    })
+}
+
+/// Set-up `index` (0 the first) of a result, as a result of its own: its
+/// up, its operations, its JSON that set-up's report alone.
+/// `TW_ERR_OUT_OF_RANGE` past the last. Free with `tw_operations_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_setup_at(
+    result: *const tw_operations_result,
+    index: usize,
+    out: *mut *mut tw_operations_result,
+) -> tw_status {
+    construct("tw_operations_setup_at", out, || setup_at(result, index))
+}
+
+/// Set-up `index` of `result` as a result of its own.
+unsafe fn setup_at(
+    result: *const tw_operations_result,
+    index: usize,
+) -> Result<tw_operations_result, crate::error::Failure> {
+    if result.is_null() {
+        return Err(null("result"));
+    }
+    let first = &(*result).report;
+    let mut report = first.clone();
+    report.then = Vec::new();
+    report.residue = None;
+    report.proposal = None;
+    if index == 0 {
+        return Ok(result_of(report));
+    }
+    let later = first.then.get(index - 1).ok_or_else(|| {
+        let status = if index == 1 {
+            tw_status::TW_ERR_NOT_APPLICABLE
+        } else {
+            tw_status::TW_ERR_OUT_OF_RANGE
+        };
+        (
+            status,
+            format!(
+                "this result has {} set-up(s), no set-up {index}",
+                1 + first.then.len()
+            ),
+        )
+    })?;
+    report.up = later.up;
+    report.frame = later.frame;
+    report.setup = later.setup.clone();
+    Ok(result_of(report))
+}
+
+/// What no set-up of the result reaches, mm³ (0 for a result of one
+/// set-up, which leaves what it does not reach to another:
+/// `tw_operations_volumes`).
+#[no_mangle]
+pub unsafe extern "C" fn tw_operations_residue(
+    result: *const tw_operations_result,
+    residue_mm3: *mut f64,
+) -> tw_status {
+    guard("tw_operations_residue", || {
+        if result.is_null() {
+            return Err(null("result"));
+        }
+        if residue_mm3.is_null() {
+            return Err(null("residue_mm3"));
+        }
+        *residue_mm3 = (*result)
+            .report
+            .residue
+            .as_ref()
+            .map_or(0.0, |r| r.volume_mm3);
+        Ok(())
     })
 }
 
@@ -204,7 +336,7 @@ pub unsafe extern "C" fn tw_operations_free(result: *mut tw_operations_result) {
     crate::error::free(result)
 }
 
-/// The result as JSON (`thinwall/operations/1`, as the CLI prints it).
+/// The result as JSON (`thinwall/operations/2`, as the CLI prints it).
 /// `*out_json` is a new string to free with `tw_string_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_operations_to_json(

@@ -3,7 +3,8 @@
 //! its web) gives its height on the web's other side, as the JSON's
 //! `other_side` has it; a web, a hole and a wall on one side of its base
 //! are `TW_ERR_NOT_APPLICABLE`. `tw_operations_both_sides` and
-//! `tw_operations_second` plan and read both set-ups.
+//! `tw_operations_second` plan and read both set-ups;
+//! `tw_operations_setups` plans given or proposed set-ups in turn.
 
 use std::ffi::CStr;
 use std::ptr::null_mut;
@@ -106,7 +107,7 @@ fn both_sides_of_a_double_sided_panel() {
             serde_json::from_str(CStr::from_ptr(json).to_str().unwrap()).unwrap();
         tw_string_free(json);
         assert_eq!(report["up"][2], -1.0);
-        assert!(report.get("second").is_none());
+        assert!(report.get("then").is_none());
         // One set-up: no second side.
         let mut one = null_mut();
         assert_eq!(
@@ -120,6 +121,100 @@ fn both_sides_of_a_double_sided_panel() {
         );
         assert!(none.is_null());
         for r in [first, second, one] {
+            tw_operations_free(r);
+        }
+        tw_part_free(part);
+    }
+}
+
+/// `tw_operations_setups` on the same panel: proposed (no ups), two set-ups
+/// from opposite sides along the web's normal, nothing left that neither
+/// reaches; given the same two ups in order, the same operations; read
+/// one by one with `tw_operations_setup_at`, out of range past the last;
+/// a count of ups without the array is refused.
+#[test]
+fn set_ups_proposed_and_given() {
+    unsafe {
+        let part = panel();
+        let mut proposed = null_mut();
+        assert_eq!(
+            tw_operations_setups(
+                part,
+                std::ptr::null(),
+                std::ptr::null(),
+                0,
+                std::ptr::null(),
+                0.0,
+                &mut proposed
+            ),
+            tw_status::TW_OK
+        );
+        let mut n = 0usize;
+        assert_eq!(
+            tw_operations_setup_count(proposed, &mut n),
+            tw_status::TW_OK
+        );
+        assert_eq!(n, 2);
+        let mut residue = f64::NAN;
+        assert_eq!(
+            tw_operations_residue(proposed, &mut residue),
+            tw_status::TW_OK
+        );
+        assert!(residue.abs() < 1e-3, "{residue}");
+        let ups_of = |r: *mut tw_operations_result| -> Vec<(f64, usize)> {
+            (0..2)
+                .map(|k| {
+                    let mut one = null_mut();
+                    assert_eq!(tw_operations_setup_at(r, k, &mut one), tw_status::TW_OK);
+                    let mut json = null_mut();
+                    assert_eq!(tw_operations_to_json(one, &mut json), tw_status::TW_OK);
+                    let v: serde_json::Value =
+                        serde_json::from_str(CStr::from_ptr(json).to_str().unwrap()).unwrap();
+                    tw_string_free(json);
+                    let count = tw_operations_count(one);
+                    tw_operations_free(one);
+                    (v["up"][2].as_f64().unwrap(), count)
+                })
+                .collect()
+        };
+        let got = ups_of(proposed);
+        assert_eq!(got[0].0, -got[1].0);
+        assert_eq!(got[0].0.abs(), 1.0);
+        let ups = [0.0, 0.0, got[0].0, 0.0, 0.0, got[1].0];
+        let mut given = null_mut();
+        assert_eq!(
+            tw_operations_setups(
+                part,
+                std::ptr::null(),
+                ups.as_ptr(),
+                2,
+                std::ptr::null(),
+                0.0,
+                &mut given
+            ),
+            tw_status::TW_OK
+        );
+        assert_eq!(ups_of(given), got);
+        let mut past = null_mut();
+        assert_eq!(
+            tw_operations_setup_at(given, 2, &mut past),
+            tw_status::TW_ERR_OUT_OF_RANGE
+        );
+        assert!(past.is_null());
+        let mut refused = null_mut();
+        assert_eq!(
+            tw_operations_setups(
+                part,
+                std::ptr::null(),
+                std::ptr::null(),
+                2,
+                std::ptr::null(),
+                0.0,
+                &mut refused
+            ),
+            tw_status::TW_ERR_NULL_ARGUMENT
+        );
+        for r in [proposed, given] {
             tw_operations_free(r);
         }
         tw_part_free(part);

@@ -3,7 +3,7 @@
 //!
 //! | engine | serves |
 //! |---|---|
-//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`) | a meshed face's region (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
+//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`, `wound_region`, `even_odd_region`) | a meshed face's region and a face's projection whose loops overlap (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
 //! | geo's `BooleanOps` (i_overlay 4.5 inside geo 0.33) | face regions from loops (`polygon.rs`), wall overlaps of the recognizers (`walls.rs`, `curved.rs`, `offset.rs`), the removal's pieces, cells and cuts (`thinwall-removal`), flank-milling zones (`thinwall-access/src/zones.rs`), the order of operations (`thinwall-ops/src/order.rs`): few operands, made by our own code, whose outputs the snapshots pin |
 //!
 //! Why two: geo 0.33 pins i_overlay 4.5, whose hole binding panics (an
@@ -73,6 +73,19 @@ pub fn wound_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
     crate::parallel::check_deadline();
     let none: Shapes = Vec::new();
     from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, FillRule::NonZero))
+}
+
+/// The region closed rings cut out of each other (the even-odd rule over
+/// all of them as one shape): a face's projection whose loops overlap in
+/// projection, ring by ring exclusive or.
+pub fn even_odd_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
+    let shape: Vec<Vec<[f64; 2]>> = rings.into_iter().filter(|r| r.len() >= 3).collect();
+    if shape.is_empty() {
+        return MultiPolygon::new(vec![]);
+    }
+    crate::parallel::check_deadline();
+    let none: Shapes = Vec::new();
+    from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, FillRule::EvenOdd))
 }
 
 /// The union of many regions, pairwise up a balanced tree (faster here

@@ -233,9 +233,12 @@ pub struct AccessArgs {
 pub struct OperationsArgs {
     /// The STEP file.
     pub part: PathBuf,
-    /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+    /// Up direction of a set-up (tool axis), e.g. `0,0,1`; repeat it for
+    /// set-ups in turn (`--up 0,0,1 --up 0,0,-1`), each cutting what those
+    /// before it left. Default: the set-ups are proposed (the fewest ups
+    /// that reach stock − part, the most material first; see --choose-up).
     #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-    pub up: Option<[f64; 3]>,
+    pub up: Vec<[f64; 3]>,
     /// A tool library (TOML; default: the shipped one, docs/OPERATIONS.md).
     #[arg(long)]
     pub tools: Option<PathBuf>,
@@ -248,15 +251,17 @@ pub struct OperationsArgs {
     /// whole removal layered at once.
     #[arg(long)]
     pub by_feature: bool,
-    /// Then the set-up from the opposite side (up reversed), after this
-    /// one: what this one cannot reach under the part (a web pocketed
-    /// from both sides), its through holes and the stock round the part
-    /// already gone. Not with --by-feature.
+    /// Then the set-up from the opposite side (up reversed; +Z without
+    /// --up), after the first: what it cannot reach under the part (a web
+    /// pocketed from both sides), its through holes and the stock round
+    /// the part already gone. Not with --by-feature.
     #[arg(long)]
     pub both_sides: bool,
-    /// Choose the set-up: of the directions the part's planar faces face
-    /// (the largest by area), the up from which the most material is
-    /// reachable; the ups tried are listed. Not with --up.
+    /// Propose the set-ups (the default without --up): the first, of the
+    /// directions the part's planar faces face, the up from which the most
+    /// material is reachable; then, while material is left that none
+    /// reaches, the candidate that leaves the least. The ups tried and why
+    /// each was taken are listed. Not with --up.
     #[arg(long, conflicts_with = "up")]
     pub choose_up: bool,
     /// Output format.

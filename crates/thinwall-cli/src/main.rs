@@ -108,13 +108,16 @@ fn access(a: args::AccessArgs) -> Result<(), Failure> {
 }
 
 fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
-    let setup = study::setup_of(a.up, thinwall_analysis::Machine::ThreeAxis)?;
+    let setup = study::setup_of(a.up.first().copied(), thinwall_analysis::Machine::ThreeAxis)?;
     let mut request = study::OperationsRequest::new(setup);
     request.tools = tools_of(a.tools.as_deref())?;
     request.axial_depth = a.axial_depth;
     request.by_feature = a.by_feature;
     request.both_sides = a.both_sides;
-    request.choose_up = a.choose_up;
+    request.later_ups = a.up.iter().skip(1).copied().collect();
+    // Without an up the set-ups are proposed (not along the plan, which
+    // plans one set-up).
+    request.choose_up = a.choose_up || (a.up.is_empty() && !a.both_sides && !a.by_feature);
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
     let operated = study::operations(&limits::study(&loaded), &request)?;

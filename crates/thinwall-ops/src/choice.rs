@@ -32,8 +32,13 @@ pub struct UpCandidate {
     pub refused: Option<String>,
 }
 
+/// Directions closer than this (cosine of 5°) are one set-up: a face
+/// drafted a degree off the block's side adds no set-up of its own.
+pub const SAME_SETUP_COS: f64 = 0.996_194_698_091_745_5;
+
 /// The directions the planar faces face, with their area, most area
-/// first (directions within `NEAR_PARALLEL_EPS` are one).
+/// first (directions within `NEAR_PARALLEL_EPS` are one; then one within
+/// 5° of a direction with more area joins it).
 fn directions(a: &PartAnalysis) -> Vec<(Vector3, f64)> {
     let mut dirs: Vec<(Vector3, f64)> = Vec::new();
     for f in a.part().face_ids() {
@@ -48,56 +53,77 @@ fn directions(a: &PartAnalysis) -> Vec<(Vector3, f64)> {
         }
     }
     dirs.sort_by(|x, y| y.1.total_cmp(&x.1));
-    dirs
+    let mut merged: Vec<(Vector3, f64)> = Vec::new();
+    for (d, area) in dirs {
+        match merged.iter_mut().find(|(m, _)| m.dot(&d) > SAME_SETUP_COS) {
+            Some(m) => m.1 += area,
+            None => merged.push((d, area)),
+        }
+    }
+    merged
+}
+
+/// The removal along `up` (refused: why), checked.
+pub(crate) fn removal_along(a: &PartAnalysis, up: Vector3) -> Result<Removal, String> {
+    let size = a.bounding_box().diagonal();
+    let (frame, lo, hi) = frame_of(a, up);
+    // A direction the boolean library fails in (geo's i_overlay 4.5
+    // panics on some inputs: the ledger) is refused, not the end of the
+    // choice.
+    let removal = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
+            .and_then(Removal::checked)
+    }));
+    match removal {
+        Err(panic) => Err(format!("internal: {}", panic_text(&panic))),
+        Ok(Err(e)) => Err(format!("removal.{}: {e}", e.code())),
+        Ok(Ok(r)) => Ok(r),
+    }
+}
+
+/// `up` tried: the candidate and its removal (none where refused).
+fn tried(a: &PartAnalysis, up: Vector3, area: f64) -> (UpCandidate, Option<Removal>) {
+    let removal = removal_along(a, up);
+    let (reachable, left) = match &removal {
+        Ok(r) => (
+            Some(
+                crate::layers::reachable(r)
+                    .map(|b| b.volume)
+                    .sum::<f64>()
+                    .max(0.0),
+            ),
+            Some(crate::layers::out_of_reach_mm3(r)),
+        ),
+        Err(_) => (None, None),
+    };
+    // + 0.0: no negative zeros in the report.
+    let candidate = UpCandidate {
+        up: [up.x + 0.0, up.y + 0.0, up.z + 0.0],
+        facing_area_mm2: area,
+        reachable_mm3: reachable,
+        out_of_reach_mm3: left,
+        refused: removal.as_ref().err().cloned(),
+    };
+    (candidate, removal.ok())
 }
 
 /// The candidate ups, best first: the most reachable material, then the
 /// most face area facing it; refused ones last.
 pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
+    ranked(a).into_iter().map(|(c, _)| c).collect()
+}
+
+/// [`up_candidates`] with their removals.
+pub(crate) fn ranked(a: &PartAnalysis) -> Vec<(UpCandidate, Option<Removal>)> {
     let size = a.bounding_box().diagonal();
-    let mut out: Vec<UpCandidate> = directions(a)
+    let mut out: Vec<(UpCandidate, Option<Removal>)> = directions(a)
         .into_iter()
         .take(MOST_CANDIDATES)
-        .map(|(up, area)| {
-            let (frame, lo, hi) = frame_of(a, up);
-            // A direction the boolean library fails in (geo's i_overlay 4.5
-            // panics on some inputs: the ledger) is refused, not the end of
-            // the choice.
-            let removal = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
-                    .and_then(Removal::checked)
-            }));
-            let (reachable, left, refused) = match removal {
-                Err(panic) => (
-                    None,
-                    None,
-                    Some(format!("internal: {}", panic_text(&panic))),
-                ),
-                Ok(Err(e)) => (None, None, Some(format!("removal.{}: {e}", e.code()))),
-                Ok(Ok(r)) => (
-                    Some(
-                        crate::layers::reachable(&r)
-                            .map(|b| b.volume)
-                            .sum::<f64>()
-                            .max(0.0),
-                    ),
-                    Some(crate::layers::out_of_reach_mm3(&r)),
-                    None,
-                ),
-            };
-            // + 0.0: no negative zeros in the report.
-            UpCandidate {
-                up: [up.x + 0.0, up.y + 0.0, up.z + 0.0],
-                facing_area_mm2: area,
-                reachable_mm3: reachable,
-                out_of_reach_mm3: left,
-                refused,
-            }
-        })
+        .map(|(up, area)| tried(a, up, area))
         .collect();
     // Equal within the removal's precision (1e-6 of the part's box).
     let tol = 1e-6 * size.powi(3);
-    out.sort_by(|x, y| {
+    out.sort_by(|(x, _), (y, _)| {
         let (rx, ry) = (
             x.reachable_mm3.unwrap_or(-1.0),
             y.reachable_mm3.unwrap_or(-1.0),

@@ -15,10 +15,12 @@ pub mod layers;
 pub mod operations;
 mod order;
 pub mod planned;
+pub mod proposal;
 pub mod rest;
+pub mod sequence;
 pub mod setup;
 mod stage;
 pub mod tools;
 
-pub use setup::{plan_setup, OpsError, Turn};
+pub use setup::{plan_in_turn, plan_setup, OpsError};
 pub use tools::{CuttingTool, ToolKind, ToolLibrary, ToolsError};

@@ -49,52 +49,58 @@ fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f
     Ok(frame_of(a, a.up()))
 }
 
-/// Which set-up of a part's sequence this is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Turn {
-    /// The first: the stock is whole.
-    First,
-    /// After a set-up from the opposite side: its through columns are
-    /// gone ([`Removal::after_opposite`]).
-    AfterOpposite,
-}
-
 /// The operations of `a`'s set-up with `lib` (the stock is the part's
-/// oriented box, less what the set-up before took: `turn`), and the
-/// removal frame their contours are in. `features` are the part's
-/// machining features found in this set-up (its up the tool axis): the
-/// holes among them are drilled.
+/// oriented box), and the removal frame their contours are in.
+/// `features` are the part's machining features found in this set-up (its
+/// up the tool axis): the holes among them are drilled. Set-ups after
+/// another: [`plan_in_turn`].
 pub fn plan_setup(
     a: &PartAnalysis,
     features: &[MachiningFeature],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
-    turn: Turn,
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
-    let mut removal =
+    let removal =
         Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
-    if turn == Turn::AfterOpposite {
-        removal = removal.after_opposite();
-    }
-    // Through holes were drilled from the first side; blind ones entered
-    // from this side are this set-up's.
-    let blind: Vec<MachiningFeature>;
-    let drilled_here = match turn {
-        Turn::First => features,
-        Turn::AfterOpposite => {
-            blind = features.iter().filter(|m| !m.through).cloned().collect();
-            &blind[..]
-        }
-    };
-    let holes = hole_sites(drilled_here, &frame, lib);
-    let mut ops = operations(&removal, lib, axial_depth_mm, &holes, a.work());
-    ops.meshed = removal.meshed.clone();
-    ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(&removal);
-    ops.cleared_before_mm3 = removal.cleared_volume();
-    finish_by_radii(&mut ops, a, drilled_here, &frame, lib);
+    let (ops, _) = plan_in_turn(a, &removal, features, &[], lib, axial_depth_mm)?;
     Ok((frame, ops))
+}
+
+/// The operations of one set-up of several planned in turn: its
+/// `removal` has the blocks earlier set-ups reached `cleared`
+/// ([`crate::sequence::in_turn`]); `a` is the part analysed in this
+/// set-up and `features` its machining features found in it. A hole whose
+/// faces an earlier set-up drilled (`drilled_before`, their `step_id`s) is
+/// not drilled again; the faces of the holes drilled here are returned.
+pub fn plan_in_turn(
+    a: &PartAnalysis,
+    removal: &Removal,
+    features: &[MachiningFeature],
+    drilled_before: &[u64],
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> Result<(SetupOperations, Vec<u64>), OpsError> {
+    frame_for(a, lib)?;
+    let frame = removal.frame;
+    let here: Vec<MachiningFeature> = features
+        .iter()
+        .filter(|m| !m.faces.iter().any(|f| drilled_before.contains(f)))
+        .cloned()
+        .collect();
+    let holes = hole_sites(&here, &frame, lib);
+    let mut ops = operations(removal, lib, axial_depth_mm, &holes, a.work());
+    ops.meshed = removal.meshed.clone();
+    ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(removal);
+    ops.cleared_before_mm3 = removal.cleared_volume();
+    finish_by_radii(&mut ops, a, &here, &frame, lib);
+    let drilled: Vec<u64> = here
+        .iter()
+        .filter(|m| holes.iter().any(|h| h.id == m.id.to_string()))
+        .flat_map(|m| m.faces.iter().copied())
+        .collect();
+    Ok((ops, drilled))
 }
 
 /// The operations of `a`'s set-up along its `plan`: each machining feature

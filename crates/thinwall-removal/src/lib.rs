@@ -20,6 +20,7 @@ pub mod facets;
 pub mod flux;
 mod fold;
 mod halving;
+pub mod locate;
 pub mod moments;
 pub mod outline;
 pub mod pieces;
@@ -135,8 +136,9 @@ pub struct Removal {
     pub vertical: Vec<pieces::Vertical>,
     /// Vertical faces by grid square, to find those near a point.
     vertical_grid: Grid,
-    /// The block stock's bottom (none for a given solid), mm.
+    /// The block stock's bottom and top (none for a given solid), mm.
     bottom: Option<f64>,
+    top: Option<f64>,
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
     /// booleans where edges coincide up to rounding) and over cells between
     /// a vertical face's edges that the file puts apart (narrower than
@@ -602,9 +604,9 @@ impl Removal {
             )
         });
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
-        let bottom = match stock {
-            StockShape::Block { lo, .. } => Some(lo[2]),
-            StockShape::Solid(_) => None,
+        let (bottom, top) = match stock {
+            StockShape::Block { lo, hi } => (Some(lo[2]), Some(hi[2])),
+            StockShape::Solid(_) => (None, None),
         };
         Ok(Self {
             size,
@@ -613,6 +615,7 @@ impl Removal {
             sliver_volume,
             vertical,
             bottom,
+            top,
             frame,
             part_pieces,
             stock_pieces,

@@ -627,7 +627,7 @@ pub fn ring(pts: impl Iterator<Item = (f64, f64)>) -> LineString<f64> {
 /// The region of a face's rings (even-odd: the largest ring outside, the
 /// others cut out), as a valid polygon. The common case — every other
 /// ring inside the largest and apart from each other, holes of a face —
-/// is built directly; anything else by exclusive or, ring by ring.
+/// is built directly; anything else by the even-odd rule over all rings.
 fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
     use geo::{Area, Contains};
     let mut order: Vec<(f64, LineString<f64>)> = rings
@@ -648,18 +648,20 @@ fn polygon_of_rings(rings: Vec<LineString<f64>>) -> MultiPolygon<f64> {
         let p = Polygon::new(outer.clone(), holes).orient(geo::orient::Direction::Default);
         return MultiPolygon::new(vec![p]);
     }
-    let mut region = MultiPolygon::new(vec![]);
-    for (_, r) in order {
-        let p = MultiPolygon::new(vec![
-            Polygon::new(r, vec![]).orient(geo::orient::Direction::Default)
-        ]);
-        region = if region.0.is_empty() {
-            p
-        } else {
-            region.xor(&p)
-        };
-    }
-    region
+    // Through i_overlay 9: geo's xor (i_overlay 4.5) panics on the loops
+    // of some faces seen along a tilted up (NIST FTC 07 tilted 1°).
+    thinwall_analysis::boolean::even_odd_region(
+        order
+            .into_iter()
+            .map(|(_, r)| {
+                let mut pts: Vec<[f64; 2]> = r.0.iter().map(|c| [c.x, c.y]).collect();
+                if pts.len() > 1 && pts.first() == pts.last() {
+                    pts.pop();
+                }
+                pts
+            })
+            .collect(),
+    )
 }
 
 /// Whether rings' boxes are pairwise apart (then no ring holds another).

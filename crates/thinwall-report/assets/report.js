@@ -727,8 +727,8 @@
   }
 
   // ------------------------------------------------- operations
-  // One set-up's sheet (`side`: the report's first set-up, or its
-  // `second`, the opposite side after the first), under the tab `name`.
+  // One set-up's sheet (`side`: the report's first set-up, or one of
+  // `then`, the set-ups after it), under the tab `name`.
   function operationsTab(name, side) {
     const rep = D.operations;
     const ops = side.setup.operations;
@@ -771,7 +771,7 @@
         part.paint(() => colour('other'));
         legend([['rough', P['ops.rough']], ['semi-finish (rest)', P['ops.semi_finish']], ['finish (walls)', P['ops.finish_walls']], ['finish (floor)', P['ops.finish']], ['drill', P['ops.drill']], ['finish by radii', P['ops.finish_radii']]]);
         this.list();
-        if (!selected) details(name, [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['up', vec(side.up)], ['tool changes', side.setup.tool_changes + ' (' + side.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(side.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(side.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (side.setup.other_setup || []).join(' ')], ['left to another set-up', side.setup.out_of_reach_mm3 ? fmt(side.setup.out_of_reach_mm3, 1) + ' mm³ under the part' : null], ['taken by the set-up before', side.setup.cleared_before_mm3 ? fmt(side.setup.cleared_before_mm3, 1) + ' mm³' : null], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
+        if (!selected) details(name, [['tools', rep.tools.source + ' (' + rep.tools.tools.length + ')'], ['operations', String(ops.length)], ['up', vec(side.up)], ['tool changes', side.setup.tool_changes + ' (' + side.setup.plain_tool_changes + ' in the plain order)'], ['time', fmt(side.setup.time_min, 1) + ' min'], ['rest no tool reaches', fmt(side.setup.rest.reduce((s, r) => s + r.area_mm2, 0)) + ' mm²'], ['another set-up', (side.setup.other_setup || []).join(' ')], ['left to another set-up', side.setup.out_of_reach_mm3 ? fmt(side.setup.out_of_reach_mm3, 1) + ' mm³ under the part' : null], ['taken by the set-ups before', side.setup.cleared_before_mm3 ? fmt(side.setup.cleared_before_mm3, 1) + ' mm³' : null], ['no set-up reaches', rep.residue && side === rep ? fmt(rep.residue.volume_mm3, 1) + ' mm³' + (rep.residue.faces.length ? ' round #' + rep.residue.faces.join(' #') : '') : null], ['set-ups proposed', rep.proposal && side === rep ? rep.proposal.why.join(' · ') : null], ['not yet', rep.not_yet.join('; ')]], [el('p', { class: 'muted' }, 'Operations in their order. Choose one: the cutter fields of its passes are drawn at their levels (drills as their holes\' axes).')]);
         viewer.render();
       },
       leave() { marks.clear(); part.opacity(state.xray ? 0.28 : 1); },
@@ -806,7 +806,7 @@
   if (D.view === 'access') tabs.push(reachTab(), accessTab());
   if (D.view === 'operations') {
     tabs.push(operationsTab('Operations', D.operations));
-    if (D.operations.second) tabs.push(operationsTab('Second side', D.operations.second));
+    (D.operations.then || []).forEach((later, k) => tabs.push(operationsTab('Set-up ' + (k + 2), later)));
   }
 
   function show(tab) {

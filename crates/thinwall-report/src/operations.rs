@@ -1,15 +1,17 @@
 //! The operations report (`thinwall operations`, schema
-//! `thinwall/operations/1`): the tool library in force and the operations
-//! of one set-up (layers, cutter fields, tools with rest areas and their
-//! regions, operations in order); `not_yet` says what the issue asks that the report does not
-//! cover yet.
+//! `thinwall/operations/2`): the tool library in force and the operations
+//! of each set-up in turn (layers, cutter fields, tools with rest areas and
+//! their regions, operations in order), the first's at the top level and
+//! the later ones' under `then`; with several set-ups what none reaches
+//! (`residue`); when the set-ups were proposed, why (`proposal`); `not_yet`
+//! says what the issue asks that the report does not cover yet.
 
 use serde::Serialize;
 use std::fmt::Write;
 use thinwall_ops::operations::SetupOperations;
 use thinwall_ops::ToolLibrary;
 
-pub const OPERATIONS_SCHEMA: &str = "thinwall/operations/1";
+pub const OPERATIONS_SCHEMA: &str = "thinwall/operations/2";
 
 #[derive(Clone, Debug, Serialize)]
 pub struct OperationsReport {
@@ -22,26 +24,29 @@ pub struct OperationsReport {
     pub frame: [[f64; 3]; 4],
     pub tools: ToolLibrary,
     pub setup: SetupOperations,
-    /// The set-up from the opposite side, after this one (`--both-sides`).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub second: Option<SecondSide>,
-    /// With `--choose-up`: the ups tried, the chosen one (`up`) first.
+    /// The set-ups after the first, in order, each after those before it.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub setup_choice: Vec<thinwall_ops::choice::UpCandidate>,
+    pub then: Vec<LaterSetup>,
+    /// With several set-ups: what none of them reaches.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residue: Option<thinwall_ops::sequence::Residue>,
+    /// The set-ups proposed (no up given), with why.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub proposal: Option<thinwall_ops::proposal::Proposal>,
     pub not_yet: Vec<String>,
 }
 
-/// The set-up from the side opposite the first, after it: up reversed,
-/// what the first took through the part gone.
+/// A set-up after the first: its stock is what the set-ups before it
+/// left (their blocks `cleared` in its removal).
 #[derive(Clone, Debug, Serialize)]
-pub struct SecondSide {
+pub struct LaterSetup {
     pub up: [f64; 3],
     /// Its removal frame: origin, x, y, z (= its up), mm.
     pub frame: [[f64; 3]; 4],
     pub setup: SetupOperations,
 }
 
-impl SecondSide {
+impl LaterSetup {
     pub fn new(up: [f64; 3], frame: &thinwall_geom::Frame, setup: SetupOperations) -> Self {
         Self {
             up,
@@ -75,12 +80,13 @@ impl OperationsReport {
             frame: frame_rows(frame),
             tools,
             setup,
-            second: None,
-            setup_choice: Vec::new(),
+            then: Vec::new(),
+            residue: None,
+            proposal: None,
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
-                "the second side (--both-sides) is planned on the whole removal only, and its layers do not yet size the web's support".into(),
+                "set-ups after the first are planned on the whole removal only, and their layers do not yet size a web's support".into(),
             ],
         }
     }
@@ -90,19 +96,28 @@ impl OperationsReport {
             + "\n"
     }
 
-    /// A readable operation sheet (and the second side's after it).
+    /// A readable operation sheet (and each later set-up's after it).
     pub fn to_text(&self) -> String {
         let mut s = String::new();
-        choice_text(&mut s, &self.setup_choice);
+        if let Some(p) = &self.proposal {
+            proposal_text(&mut s, p);
+        }
         s.push_str(&self.sheet_text(&self.setup));
-        if let Some(second) = &self.second {
-            let u = second.up;
+        for (k, later) in self.then.iter().enumerate() {
+            let u = later.up;
             let _ = writeln!(
                 s,
-                "\nthen from the other side, up ({:.3}, {:.3}, {:.3}), after the first: the {:.1} mm³ it reached are gone",
-                u[0], u[1], u[2], second.setup.cleared_before_mm3
+                "\nset-up {}: up ({:.3}, {:.3}, {:.3}), after the set-up(s) before: the {:.1} mm³ they reached are gone",
+                k + 2,
+                u[0],
+                u[1],
+                u[2],
+                later.setup.cleared_before_mm3
             );
-            s.push_str(&self.sheet_text(&second.setup));
+            s.push_str(&self.sheet_text(&later.setup));
+        }
+        if let Some(r) = &self.residue {
+            residue_text(&mut s, r);
         }
         let _ = writeln!(s, "not yet: {}", self.not_yet.join("; "));
         s
@@ -320,17 +335,16 @@ fn hole_stage_line(s: &mut String, h: &thinwall_ops::hole_stages::HoleStage) {
     );
 }
 
-/// The ups tried for the set-up, the chosen one first.
-fn choice_text(s: &mut String, candidates: &[thinwall_ops::choice::UpCandidate]) {
-    if candidates.is_empty() {
-        return;
-    }
+/// The set-ups proposed: the first set-up's candidates, then why each
+/// was taken.
+fn proposal_text(s: &mut String, p: &thinwall_ops::proposal::Proposal) {
     let _ = writeln!(
         s,
-        "set-up chosen among {} ups the part's faces face (the most material reachable first):",
-        candidates.len()
+        "set-ups proposed: {} (first among {} ups the part's faces face, the most material reachable first):",
+        p.ups.len(),
+        p.candidates.len()
     );
-    for (k, c) in candidates.iter().enumerate() {
+    for (k, c) in p.candidates.iter().enumerate() {
         let u = c.up;
         let what = match (c.reachable_mm3, c.out_of_reach_mm3, &c.refused) {
             (Some(r), Some(l), _) => {
@@ -349,4 +363,30 @@ fn choice_text(s: &mut String, candidates: &[thinwall_ops::choice::UpCandidate])
             c.facing_area_mm2
         );
     }
+    for why in &p.why {
+        let _ = writeln!(s, "  - {why}");
+    }
+}
+
+/// What no set-up reaches.
+fn residue_text(s: &mut String, r: &thinwall_ops::sequence::Residue) {
+    let how = match r.judged {
+        thinwall_ops::sequence::Judged::Exact => "exactly",
+        thinwall_ops::sequence::Judged::AtPoints => "judged at points inside the blocks",
+    };
+    if r.blocks == 0 {
+        let _ = writeln!(
+            s,
+            "\nno set-up leaves material the others do not reach ({how})"
+        );
+        return;
+    }
+    let faces: Vec<String> = r.faces.iter().map(|f| format!("#{f}")).collect();
+    let _ = writeln!(
+        s,
+        "\nresidue: {:.1} mm³ in {} block(s) that no set-up reaches ({how}), round faces {}",
+        r.volume_mm3,
+        r.blocks,
+        faces.join(", ")
+    );
 }

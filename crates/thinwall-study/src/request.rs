@@ -103,10 +103,13 @@ pub struct OperationsRequest {
     /// one: what it could not reach under the part (a web pocketed from
     /// both sides). Whole-removal sheets only.
     pub both_sides: bool,
-    /// Choose the set-up's up instead of taking `setup.up`: of the
-    /// directions the part's planar faces face, the one from which the
-    /// most material is reachable (`thinwall_ops::choice`).
+    /// Propose the set-ups instead of taking `setup.up`: the fewest ups
+    /// from which a 3-axis machine reaches stock − part, the first the one
+    /// from which the most is reachable (`thinwall_ops::proposal`).
     pub choose_up: bool,
+    /// Set-ups after `setup`, by their ups, in order: each cuts what the
+    /// set-ups before it left.
+    pub later_ups: Vec<[f64; 3]>,
 }
 
 /// Most roughing layers an axial depth may cut a part into (the work grows
@@ -129,6 +132,12 @@ impl OperationsRequest {
         }
     }
 
+    /// Whether it asks for set-ups in turn (proposed, both sides or
+    /// several ups), not one set-up.
+    pub fn several(&self) -> bool {
+        self.choose_up || self.both_sides || !self.later_ups.is_empty()
+    }
+
     /// The shipped tool library in `setup`, the whole removal at once.
     pub fn new(setup: Setup) -> Self {
         Self {
@@ -138,6 +147,7 @@ impl OperationsRequest {
             by_feature: false,
             both_sides: false,
             choose_up: false,
+            later_ups: Vec::new(),
         }
     }
 
@@ -157,11 +167,20 @@ impl OperationsRequest {
                 "the up is chosen in the part's own coordinates: not with a placement",
             ));
         }
-        if self.both_sides && self.by_feature {
+        if self.several() && self.by_feature {
             return Err(StudyError::invalid(
-                "both_sides",
-                "the second side is planned on the whole removal, not along the plan (by_feature) yet",
+                if self.both_sides { "both_sides" } else { "up" },
+                "set-ups after the first are planned on the whole removal, not along the plan (by_feature) yet",
             ));
+        }
+        if !self.later_ups.is_empty() && (self.choose_up || self.setup.placement.is_some()) {
+            return Err(StudyError::invalid(
+                "up",
+                "several set-ups are given in the part's own coordinates: not with a placement or with the set-ups proposed",
+            ));
+        }
+        for up in &self.later_ups {
+            Setup::new(*up, self.setup.machine)?;
         }
         if self.tools.end_mills().next().is_none() {
             return Err(thinwall_ops::OpsError::NoEndMill {

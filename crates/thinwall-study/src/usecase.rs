@@ -11,12 +11,11 @@ use std::path::Path;
 use std::sync::Arc;
 use thinwall_access::reach::{self, ReachOptions};
 use thinwall_analysis::Setup;
-use thinwall_ops::choice::UpCandidate;
-use thinwall_ops::Turn;
+use thinwall_ops::{sequence, OpsError};
 use thinwall_pipeline::{MachiningRequest, Outcome, PipelineError};
 use thinwall_plan::{Plan, RuleSet};
 use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
-use thinwall_report::operations::{OperationsReport, SecondSide};
+use thinwall_report::operations::{LaterSetup, OperationsReport};
 use thinwall_report::{ClassificationReport, InspectReport, RecognitionReport};
 
 /// `inspect`: the part's bodies, faces, edges and convexity.
@@ -180,7 +179,9 @@ pub fn operations<'p>(
 ) -> Result<Operated<'p>, StudyError> {
     contained("operations", study.name(), || {
         req.check()?;
-        let (req, choice) = &chosen(study, req)?;
+        if req.several() {
+            return in_turn(study, req);
+        }
         let at = study.at(&req.setup)?;
         let a = &at.analysis;
         req.check_for_part(a.bounding_box().diagonal())?;
@@ -200,40 +201,60 @@ pub fn operations<'p>(
                 req.axial_depth,
             )?
         } else {
-            thinwall_ops::plan_setup(
-                a,
-                &holes.machining,
-                &req.tools,
-                req.axial_depth,
-                Turn::First,
-            )?
+            thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
         };
-        let mut report =
+        let report =
             OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
-        if req.both_sides {
-            report.second = Some(opposite_side(study, req)?);
-        }
-        report.setup_choice = choice.clone();
         Ok(Operated { at, report })
     })
 }
 
-/// The request with its up chosen when it asks for that (the first
-/// candidate the removal takes), and the candidates tried.
-fn chosen(
-    study: &Study<'_>,
-    req: &OperationsRequest,
-) -> Result<(OperationsRequest, Vec<UpCandidate>), StudyError> {
-    let mut req = req.clone();
-    if !req.choose_up {
-        return Ok((req, Vec::new()));
+/// Several set-ups in turn: each set-up's stock what those before it
+/// left, each hole drilled in the first set-up that drills it, what none
+/// reaches the residue.
+fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p>, StudyError> {
+    let first = study.at(&req.setup)?;
+    req.check_for_part(first.analysis.bounding_box().diagonal())?;
+    let mut ups = vec![req.setup.up];
+    if req.both_sides {
+        ups.push(req.setup.up.map(|c| -c));
     }
-    let at = study.at(&req.setup)?;
-    let candidates = thinwall_ops::choice::up_candidates(&at.analysis);
-    if let Some(best) = candidates.iter().find(|c| c.reachable_mm3.is_some()) {
-        req.setup.up = best.up;
+    ups.extend(&req.later_ups);
+    let (proposal, mut removals) =
+        sequence::setups(&first.analysis, &ups, req.choose_up).map_err(OpsError::from)?;
+    sequence::in_turn(&mut removals);
+    let residue = sequence::residue(&removals);
+    let mut drilled: Vec<u64> = Vec::new();
+    let mut sheets = Vec::new();
+    for r in &removals {
+        let z = r.frame.z;
+        // + 0.0: no negative zeros in the report.
+        let setup = Setup {
+            up: [z.x + 0.0, z.y + 0.0, z.z + 0.0],
+            ..req.setup.clone()
+        };
+        let at = study.at(&setup)?;
+        let holes = found_in_setup(study, &at, &setup)?;
+        let (ops, here) = thinwall_ops::setup::plan_in_turn(
+            &at.analysis,
+            r,
+            &holes.machining,
+            &drilled,
+            &req.tools,
+            req.axial_depth,
+        )?;
+        drilled.extend(here);
+        sheets.push((at, setup.up, r.frame, ops));
     }
-    Ok((req, candidates))
+    let mut sheets = sheets.into_iter();
+    let (at, up, frame, ops) = sheets.next().expect("a set-up at least");
+    let mut report = OperationsReport::new(study.name(), up, &frame, req.tools.clone(), ops);
+    report.then = sheets
+        .map(|(_, up, frame, ops)| LaterSetup::new(up, &frame, ops))
+        .collect();
+    report.residue = Some(residue);
+    report.proposal = proposal;
+    Ok(Operated { at, report })
 }
 
 /// The recognition with the machining features found in `setup` (its up
@@ -253,26 +274,6 @@ fn found_in_setup(
         ..Default::default()
     };
     at.outcome(&in_setup).map_err(|e| recognition(study, e))
-}
-
-/// The set-up from the side opposite `req`'s, after it: up reversed, the
-/// through columns gone, its own holes drilled.
-fn opposite_side(study: &Study<'_>, req: &OperationsRequest) -> Result<SecondSide, StudyError> {
-    let setup = Setup {
-        // 0 − c: no negative zeros in the report.
-        up: req.setup.up.map(|c| 0.0 - c),
-        ..req.setup.clone()
-    };
-    let at = study.at(&setup)?;
-    let holes = found_in_setup(study, &at, &setup)?;
-    let (frame, ops) = thinwall_ops::plan_setup(
-        &at.analysis,
-        &holes.machining,
-        &req.tools,
-        req.axial_depth,
-        Turn::AfterOpposite,
-    )?;
-    Ok(SecondSide::new(setup.up, &frame, ops))
 }
 
 pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classified<'p>, StudyError> {
