@@ -467,24 +467,17 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
         .iter()
         .all(|l| l["feature"].is_string()));
     outputs.push(("operations", by_feature));
-    // Both sides of a web pocketed from both sides: the second set-up cuts
-    // what the first left under the web.
-    let both = of(
-        &[
-            "operations",
-            "--both-sides",
-            "--choose-up",
-            "--format",
-            "json",
-        ],
-        "pockets/pockets_4.step",
-    );
+    // A web pocketed from both sides: two set-ups proposed, the second
+    // cuts what the first left under the web; nothing is left.
+    let both = of(&["operations", "--format", "json"], "pockets/pockets_4.step");
     assert!(both["setup"]["out_of_reach_mm3"].as_f64().unwrap() > 0.0);
-    // The chosen up leads the ups tried, and is the sheet's.
-    assert_eq!(both["setup_choice"][0]["up"], both["up"]);
-    assert!(both["second"]["setup"]["operations"]
+    // The first up proposed leads the ups tried, and is the sheet's.
+    assert_eq!(both["proposal"]["candidates"][0]["up"], both["up"]);
+    assert_eq!(both["proposal"]["ups"].as_array().map(Vec::len), Some(2));
+    assert!(both["then"][0]["setup"]["operations"]
         .as_array()
         .is_some_and(|o| !o.is_empty()));
+    assert_eq!(both["residue"]["blocks"], 0);
     outputs.push(("operations", both));
     for (name, v) in &outputs {
         let problems = schema_problems(&schema(name), v, name);
@@ -951,7 +944,10 @@ fn operations_sheet_json_and_errors() {
             .arg(&pocket)
             .args(["--format", "json"]),
     );
-    assert_eq!(json["schema"], "thinwall/operations/1");
+    assert_eq!(json["schema"], "thinwall/operations/2");
+    // Without --up the set-ups are proposed: one, up +Z, for this pocket.
+    assert_eq!(json["proposal"]["ups"], serde_json::json!([[0.0, 0.0, 1.0]]));
+    assert!(json.get("then").is_none());
     let ops = json["setup"]["operations"].as_array().unwrap();
     assert_eq!(ops[0]["tool"], "EM20");
     assert!(
@@ -991,10 +987,23 @@ fn operations_sheet_json_and_errors() {
                 .arg(&pocket)
                 .args(["--both-sides", "--format", "json"]),
         );
-    assert!(second["second"]["setup"]["layers"]
+    assert!(second["then"][0]["setup"]["layers"]
         .as_array()
         .unwrap()
         .is_empty());
+    // Several ups in turn: the second set-up's up as given; the residue is
+    // reported.
+    let given = json_of(bin().arg("operations").arg(&pocket).args([
+        "--up",
+        "0,0,1",
+        "--up",
+        "1,0,0",
+        "--format",
+        "json",
+    ]));
+    assert_eq!(given["then"][0]["up"], serde_json::json!([1.0, 0.0, 0.0]));
+    assert!(given["residue"]["volume_mm3"].as_f64().unwrap() >= 0.0);
+    assert!(given.get("proposal").is_none());
 
     // A tool file with a negative diameter, or an unknown key: exit 2 and
     // the line.

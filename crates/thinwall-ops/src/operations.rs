@@ -282,6 +282,11 @@ pub struct SetupOperations {
     /// for a first set-up.
     #[serde(skip_serializing_if = "is_zero")]
     pub cleared_before_mm3: f64,
+    #[serde(skip_serializing_if = "is_zero")]
+    /// At most this much of what it cuts an earlier set-up had taken: its
+    /// blocks an earlier set-up along another axis reached in part (judged
+    /// at points inside them), cut whole here, mm³.
+    pub recut_mm3: f64,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -457,6 +462,7 @@ pub(crate) fn assemble(
         meshed: Meshed::default(),
         out_of_reach_mm3: 0.0,
         cleared_before_mm3: 0.0,
+        recut_mm3: 0.0,
         layers,
         field_tools,
         operations,

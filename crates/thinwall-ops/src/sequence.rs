@@ -86,26 +86,34 @@ fn gone(p: &Point3, earlier: &[Removal], at: &[Locator]) -> bool {
 }
 
 /// Mark each later removal's blocks that an earlier set-up reached
-/// `cleared`, in turn: `removals[0]` is the first set-up's.
-pub fn in_turn(removals: &mut [Removal]) {
+/// `cleared`, in turn: `removals[0]` is the first set-up's. Returns per
+/// set-up the volume of the blocks it reaches that an earlier set-up
+/// reached in part (cut whole again: at most that much is air), mm³.
+pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
+    let mut recut = vec![0.0; removals.len()];
     for k in 1..removals.len() {
         let (earlier, rest) = removals.split_at_mut(k);
         let later = &mut rest[0];
         let at: Vec<Locator> = earlier.iter().map(Locator::new).collect();
         let from_opposite = earlier.iter().any(|e| opposite(e, later));
-        let cleared: Vec<bool> = (0..later.blocks.len())
+        let gone: Vec<f64> = (0..later.blocks.len())
             .map(|bi| {
                 if from_opposite && later.blocks[bi].open_below {
-                    return true;
+                    return 1.0;
                 }
                 let points = samples(later, bi);
-                !points.is_empty() && points.iter().all(|p| gone(p, earlier, &at))
+                let n = points.iter().filter(|p| gone(p, earlier, &at)).count();
+                n as f64 / points.len().max(1) as f64
             })
             .collect();
-        for (b, c) in later.blocks.iter_mut().zip(cleared) {
-            b.cleared = c;
+        for (b, g) in later.blocks.iter_mut().zip(gone) {
+            b.cleared = g == 1.0;
+            if g > 0.0 && g < 1.0 && b.reachable {
+                recut[k] += b.volume;
+            }
         }
     }
+    recut
 }
 
 /// What the first set-up's removal holds that none of `removals` reaches.

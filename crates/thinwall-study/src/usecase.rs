@@ -222,11 +222,11 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     ups.extend(&req.later_ups);
     let (proposal, mut removals) =
         sequence::setups(&first.analysis, &ups, req.choose_up).map_err(OpsError::from)?;
-    sequence::in_turn(&mut removals);
+    let recut = sequence::in_turn(&mut removals);
     let residue = sequence::residue(&removals);
     let mut drilled: Vec<u64> = Vec::new();
     let mut sheets = Vec::new();
-    for r in &removals {
+    for (r, recut) in removals.iter().zip(recut) {
         let z = r.frame.z;
         // + 0.0: no negative zeros in the report.
         let setup = Setup {
@@ -244,6 +244,10 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
             req.axial_depth,
         )?;
         drilled.extend(here);
+        let ops = thinwall_ops::operations::SetupOperations {
+            recut_mm3: recut,
+            ..ops
+        };
         sheets.push((at, setup.up, r.frame, ops));
     }
     let mut sheets = sheets.into_iter();
