@@ -65,7 +65,10 @@ fn proposed(
         .unwrap_or_else(|e| panic!("{} {seed:?}: {e}", path.display()));
     let proposal = proposal.expect("proposed");
     let recut = in_turn(&mut removals).iter().sum();
-    let (rot, t) = seed.map_or((Rotation3::identity(), Vector3::zeros()), common::rigid_motion);
+    let (rot, t) = seed.map_or(
+        (Rotation3::identity(), Vector3::zeros()),
+        common::rigid_motion,
+    );
     (proposal, removals, recut, rot, t)
 }
 
@@ -75,7 +78,11 @@ fn proposed(
 fn assert_adds_up(removals: &[Removal], recut: f64, name: &str) {
     let taken: f64 = removals
         .iter()
-        .map(|r| thinwall_ops::layers::reachable(r).map(|b| b.volume).sum::<f64>())
+        .map(|r| {
+            thinwall_ops::layers::reachable(r)
+                .map(|b| b.volume)
+                .sum::<f64>()
+        })
         .sum();
     let left = residue(removals);
     let first = &removals[0];
@@ -100,10 +107,12 @@ fn assert_adds_up(removals: &[Removal], recut: f64, name: &str) {
 /// Which set-up takes the world point `p`: the first whose removal holds
 /// it in a block it reaches and no set-up before took.
 fn taken_by(removals: &[Removal], p: &Point3<f64>) -> Option<usize> {
-    removals.iter().position(|r| match Locator::new(r).place(p) {
-        Place::Block(i) => r.blocks[i].reachable && !r.blocks[i].cleared,
-        Place::Solid | Place::Outside => false,
-    })
+    removals
+        .iter()
+        .position(|r| match Locator::new(r).place(p) {
+            Place::Block(i) => r.blocks[i].reachable && !r.blocks[i].cleared,
+            Place::Solid | Place::Outside => false,
+        })
 }
 
 #[test]
@@ -125,8 +134,15 @@ fn every_pocket_is_in_the_set_up_that_faces_it_in_any_pose() {
                 .iter()
                 .map(|u| (rot.inverse() * Vector3::from(*u)).z)
                 .collect();
-            assert!(ups.iter().all(|z| (z.abs() - 1.0).abs() < 1e-9), "{name}: {ups:?}");
-            assert_eq!(ups.len(), 1 + usize::from(truth.both_sides), "{name}: {ups:?}");
+            assert!(
+                ups.iter().all(|z| (z.abs() - 1.0).abs() < 1e-9),
+                "{name}: {ups:?}"
+            );
+            assert_eq!(
+                ups.len(),
+                1 + usize::from(truth.both_sides),
+                "{name}: {ups:?}"
+            );
             if !truth.both_sides {
                 assert!(ups[0] > 0.0, "{name}: the flat underside first");
             }
@@ -149,7 +165,12 @@ fn every_pocket_is_in_the_set_up_that_faces_it_in_any_pose() {
             two += usize::from(ups.len() == 2);
             sides.push(ups.iter().map(|z| z.signum()).collect::<Vec<_>>());
         }
-        assert_eq!(sides[0], sides[1], "{}: the turned copy's set-ups", path.display());
+        assert_eq!(
+            sides[0],
+            sides[1],
+            "{}: the turned copy's set-ups",
+            path.display()
+        );
     }
     eprintln!("{} panels as built and turned: {two} with two set-ups, {pockets} pockets each in the set-up facing it", parts.len());
     assert!(two > 0);
@@ -196,7 +217,10 @@ fn holes_across_the_part_get_a_set_up_along_them_in_any_pose() {
                 along += 1;
             }
             assert_adds_up(&removals, recut, &name);
-            eprintln!("{name}: {} set-up(s), {recut:.1} mm³ perhaps cut again", ups.len());
+            eprintln!(
+                "{name}: {} set-up(s), {recut:.1} mm³ perhaps cut again",
+                ups.len()
+            );
             all.push(ups);
         }
         for (a, b) in all[0].iter().zip(&all[1]) {
@@ -204,4 +228,72 @@ fn holes_across_the_part_get_a_set_up_along_them_in_any_pose() {
         }
     }
     assert!(along > 0);
+}
+
+#[derive(serde::Deserialize)]
+struct FeaturesTruth {
+    features: Vec<FeatureTruth>,
+    volume: f64,
+}
+
+#[derive(serde::Deserialize)]
+struct FeatureTruth {
+    kind: String,
+    #[serde(default)]
+    direction: Option<[f64; 3]>,
+}
+
+/// Plates with a drafted pocket (cones at its corners), a hole tilted
+/// 35–50° (part of it under material from both sides) and a spherical
+/// dimple (`scripts/make_feature_fixtures.py`), as built and turned: two
+/// set-ups, the first along the plate's normal, the second along the tilted
+/// hole's axis; nothing left; the removal's part volume is OpenCascade's
+/// within its bound, and the set-ups' volumes add up to stock − part.
+#[test]
+fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
+    let parts = common::generated_parts("THINWALL_FEATURES_DIR", "features");
+    assert!(!parts.is_empty());
+    for (k, path) in parts.iter().enumerate() {
+        let truth: FeaturesTruth = serde_json::from_str(
+            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
+        )
+        .unwrap();
+        let hole = truth
+            .features
+            .iter()
+            .find(|f| f.kind == "tilted_hole")
+            .and_then(|f| f.direction)
+            .expect("a tilted hole");
+        let axis = Vector3::from(hole);
+        let mut all = Vec::new();
+        for seed in [None, Some(4700 + k as u64)] {
+            let name = format!("{} {seed:?}", path.display());
+            let (proposal, removals, recut, rot, _) = proposed(path, seed);
+            let ups: Vec<Vector3<f64>> = proposal
+                .ups
+                .iter()
+                .map(|u| rot.inverse() * Vector3::from(*u))
+                .collect();
+            assert_eq!(ups.len(), 2, "{name}: {ups:?}");
+            assert!(ups[0].z > 1.0 - 1e-9, "{name}: first {:?}", ups[0]);
+            assert!(
+                ups[1].dot(&axis).abs() > 1.0 - 1e-9,
+                "{name}: second {:?}",
+                ups[1]
+            );
+            let first = &removals[0];
+            let bound = first.meshed.volume_bound_mm3 + 1e-6 * first.stock_volume;
+            assert!(
+                (first.part_volume - truth.volume).abs() <= bound,
+                "{name}: part volume {} against OpenCascade's {} (bound {bound})",
+                first.part_volume,
+                truth.volume
+            );
+            assert_adds_up(&removals, recut, &name);
+            all.push(ups);
+        }
+        for (a, b) in all[0].iter().zip(&all[1]) {
+            assert!((a - b).norm() < 1e-9, "{}: turned {all:?}", path.display());
+        }
+    }
 }

@@ -469,7 +469,10 @@ fn every_json_output_follows_its_schema_and_names_its_version() {
     outputs.push(("operations", by_feature));
     // A web pocketed from both sides: two set-ups proposed, the second
     // cuts what the first left under the web; nothing is left.
-    let both = of(&["operations", "--format", "json"], "pockets/pockets_4.step");
+    let both = of(
+        &["operations", "--format", "json"],
+        "pockets/pockets_4.step",
+    );
     assert!(both["setup"]["out_of_reach_mm3"].as_f64().unwrap() > 0.0);
     // The first up proposed leads the ups tried, and is the sheet's.
     assert_eq!(both["proposal"]["candidates"][0]["up"], both["up"]);
@@ -946,7 +949,10 @@ fn operations_sheet_json_and_errors() {
     );
     assert_eq!(json["schema"], "thinwall/operations/2");
     // Without --up the set-ups are proposed: one, up +Z, for this pocket.
-    assert_eq!(json["proposal"]["ups"], serde_json::json!([[0.0, 0.0, 1.0]]));
+    assert_eq!(
+        json["proposal"]["ups"],
+        serde_json::json!([[0.0, 0.0, 1.0]])
+    );
     assert!(json.get("then").is_none());
     let ops = json["setup"]["operations"].as_array().unwrap();
     assert_eq!(ops[0]["tool"], "EM20");
@@ -993,14 +999,12 @@ fn operations_sheet_json_and_errors() {
         .is_empty());
     // Several ups in turn: the second set-up's up as given; the residue is
     // reported.
-    let given = json_of(bin().arg("operations").arg(&pocket).args([
-        "--up",
-        "0,0,1",
-        "--up",
-        "1,0,0",
-        "--format",
-        "json",
-    ]));
+    let given = json_of(
+        bin()
+            .arg("operations")
+            .arg(&pocket)
+            .args(["--up", "0,0,1", "--up", "1,0,0", "--format", "json"]),
+    );
     assert_eq!(given["then"][0]["up"], serde_json::json!([1.0, 0.0, 0.0]));
     assert!(given["residue"]["volume_mm3"].as_f64().unwrap() >= 0.0);
     assert!(given.get("proposal").is_none());

@@ -63,7 +63,7 @@ fn same(a: &Vector3, b: &Vector3) -> bool {
 /// The proposal and the removal of each set-up proposed (none when every
 /// candidate was refused: the candidates say why).
 pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
-    let mut ranked = ranked(a);
+    let ranked = ranked(a);
     let candidates: Vec<UpCandidate> = ranked.iter().map(|(c, _)| c.clone()).collect();
     let mut proposal = Proposal {
         ups: Vec::new(),
@@ -72,7 +72,17 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
         later: Vec::new(),
         residue: residue(&[]),
     };
-    let Some(first) = ranked.iter_mut().find_map(|(_, r)| r.take()) else {
+    // The other candidates' removals serve the later set-ups' tries.
+    let mut built: Vec<Removal> = Vec::new();
+    let mut first = None;
+    for (_, r) in ranked {
+        match (first.is_none(), r) {
+            (true, Some(r)) => first = Some(r),
+            (false, Some(r)) => built.push(r),
+            (_, None) => {}
+        }
+    }
+    let Some(first) = first else {
         proposal
             .why
             .push("no direction the planar faces face gives a removal".into());
@@ -92,7 +102,12 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     let tol = residue_tolerance(&removals[0]);
     proposal.residue = residue(&removals);
     while proposal.residue.volume_mm3 > tol && removals.len() < MOST_SETUPS {
-        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, tol) else {
+        let tries = Tries {
+            built: &mut built,
+            later: &mut proposal.later,
+            tol,
+        };
+        let Some((r, left)) = next_setup(a, &mut removals, tries) else {
             break;
         };
         if proposal.residue.volume_mm3 - left.volume_mm3 <= tol {
@@ -134,46 +149,70 @@ fn left_text(residue: &Residue, tol: f64) -> String {
     }
 }
 
+/// How the next set-up is tried: removals built already (taken from here
+/// and put back when not chosen), the record of candidates, and the
+/// residue that counts as nothing.
+struct Tries<'t> {
+    built: &'t mut Vec<Removal>,
+    later: &'t mut Vec<LaterCandidate>,
+    tol: f64,
+}
+
+impl Tries<'_> {
+    /// The removal along `d`: built already, or now.
+    fn removal(&mut self, a: &PartAnalysis, d: Vector3) -> Result<Removal, String> {
+        match self.built.iter().position(|r| same(&r.frame.z, &d)) {
+            Some(k) => Ok(self.built.swap_remove(k)),
+            None => crate::choice::removal_along(a, d),
+        }
+    }
+}
+
 /// The best next set-up after `removals` and what it leaves (the first
-/// candidate that leaves no more than `tol`, else the one that leaves the
-/// least); each candidate tried is recorded in `later`.
+/// candidate that leaves no more than the tolerance, else the one that
+/// leaves the least); each candidate tried is recorded.
 fn next_setup(
     a: &PartAnalysis,
     removals: &mut Vec<Removal>,
-    later: &mut Vec<LaterCandidate>,
-    tol: f64,
+    mut tries: Tries<'_>,
 ) -> Option<(Removal, Residue)> {
     let setup = removals.len() + 1;
     let mut best: Option<(Removal, Residue)> = None;
     for d in next_directions(a, removals) {
-        match crate::choice::removal_along(a, d) {
-            Err(why) => later.push(LaterCandidate {
-                setup,
-                up: arr(&d),
-                residue_mm3: None,
-                refused: Some(why),
-            }),
-            Ok(r) => {
-                removals.push(r);
-                let left = residue(removals);
-                let r = removals.pop().expect("just pushed");
-                later.push(LaterCandidate {
+        let r = match tries.removal(a, d) {
+            Err(why) => {
+                tries.later.push(LaterCandidate {
                     setup,
                     up: arr(&d),
-                    residue_mm3: Some(left.volume_mm3),
-                    refused: None,
+                    residue_mm3: None,
+                    refused: Some(why),
                 });
-                if best
-                    .as_ref()
-                    .map_or(true, |(_, b)| left.volume_mm3 < b.volume_mm3)
-                {
-                    let done = left.volume_mm3 <= tol;
-                    best = Some((r, left));
-                    if done {
-                        break;
-                    }
-                }
+                continue;
             }
+            Ok(r) => r,
+        };
+        removals.push(r);
+        let left = residue(removals);
+        let r = removals.pop().expect("just pushed");
+        tries.later.push(LaterCandidate {
+            setup,
+            up: arr(&d),
+            residue_mm3: Some(left.volume_mm3),
+            refused: None,
+        });
+        if best
+            .as_ref()
+            .is_some_and(|(_, b)| b.volume_mm3 <= left.volume_mm3)
+        {
+            tries.built.push(r);
+            continue;
+        }
+        let done = left.volume_mm3 <= tries.tol;
+        if let Some((old, _)) = best.replace((r, left)) {
+            tries.built.push(old);
+        }
+        if done {
+            break;
         }
     }
     best

@@ -91,7 +91,7 @@ fn gone(p: &Point3, earlier: &[Removal], at: &[Locator]) -> bool {
 /// reached in part (cut whole again: at most that much is air), mm³.
 pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
     let mut recut = vec![0.0; removals.len()];
-    for k in 1..removals.len() {
+    for (k, recut) in recut.iter_mut().enumerate().skip(1) {
         let (earlier, rest) = removals.split_at_mut(k);
         let later = &mut rest[0];
         let at: Vec<Locator> = earlier.iter().map(Locator::new).collect();
@@ -109,7 +109,7 @@ pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
         for (b, g) in later.blocks.iter_mut().zip(gone) {
             b.cleared = g == 1.0;
             if g > 0.0 && g < 1.0 && b.reachable {
-                recut[k] += b.volume;
+                *recut += b.volume;
             }
         }
     }

@@ -250,23 +250,27 @@ fn param_at(
     (a0, sweep, closed): (f64, f64, bool),
     theta: f64,
 ) -> f64 {
-    use std::f64::consts::{PI, TAU};
+    use std::f64::consts::TAU;
     let (t0, t1) = c.domain();
-    let half = 0.5 * (t0 + t1);
     // The turn from the start at parameter t, unwrapped: just before the
-    // start (rounding) is a little below 0, a whole turn's end near 2π.
+    // start (rounding) is a little below 0, a whole turn's end near 2π. A
+    // whole turn is unwrapped next to the share of it the parameter has
+    // run (a curve's parameter follows its angle to well within half a
+    // turn): deciding by which half of the parameter t lies in failed
+    // where the angle is half a turn at the middle parameter exactly (an
+    // ellipse round a tilted cylinder), all of the second half landing on
+    // its middle.
     let turned = |t: f64| {
         let x = (sweep.signum() * (angle(&c.point(t)) - a0)).rem_euclid(TAU);
-        let before_start = if closed {
-            t < half && x > PI
-        } else {
-            x > 0.5 * (sweep.abs() + TAU)
-        };
-        let wrapped_end = closed && t >= half && x < PI;
-        if before_start {
+        if closed {
+            let share = TAU * (t - t0) / (t1 - t0);
+            return [x - TAU, x, x + TAU]
+                .into_iter()
+                .min_by(|p, q| (p - share).abs().total_cmp(&(q - share).abs()))
+                .unwrap_or(x);
+        }
+        if x > 0.5 * (sweep.abs() + TAU) {
             x - TAU
-        } else if wrapped_end {
-            x + TAU
         } else {
             x
         }
