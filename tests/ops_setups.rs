@@ -52,12 +52,21 @@ impl PanelPocket {
     }
 }
 
+/// A generated part posed, its set-ups proposed and planned in turn.
+struct Posed {
+    proposal: Proposal,
+    removals: Vec<Removal>,
+    /// What later set-ups may cut again, mm³.
+    recut: f64,
+    /// The proposed ups turned back to the part as built.
+    ups: Vec<Vector3<f64>>,
+    rot: Rotation3<f64>,
+    t: Vector3<f64>,
+}
+
 /// The part of `path` posed by `seed`, its set-ups proposed and planned in
-/// turn, and the rotation that posed it.
-fn proposed(
-    path: &Path,
-    seed: Option<u64>,
-) -> (Proposal, Vec<Removal>, f64, Rotation3<f64>, Vector3<f64>) {
+/// turn.
+fn proposed(path: &Path, seed: Option<u64>) -> Posed {
     let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
     let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "part.step").unwrap();
     let a = PartAnalysis::new(&part, Setup::default());
@@ -69,7 +78,25 @@ fn proposed(
         (Rotation3::identity(), Vector3::zeros()),
         common::rigid_motion,
     );
-    (proposal, removals, recut, rot, t)
+    let ups = proposal
+        .ups
+        .iter()
+        .map(|u| rot.inverse() * Vector3::from(*u))
+        .collect();
+    Posed {
+        proposal,
+        removals,
+        recut,
+        ups,
+        rot,
+        t,
+    }
+}
+
+/// The truth written beside a generated part.
+fn truth_of<T: serde::de::DeserializeOwned>(path: &Path) -> T {
+    serde_json::from_str(&std::fs::read_to_string(path.with_extension("truth.json")).unwrap())
+        .unwrap()
 }
 
 /// What the set-ups take (reachable, not cleared) plus the residue is
@@ -120,20 +147,20 @@ fn every_pocket_is_in_the_set_up_that_faces_it_in_any_pose() {
     let parts = common::generated_parts("THINWALL_POCKETS_DIR", "pockets");
     let (mut two, mut pockets) = (0, 0);
     for (k, path) in parts.iter().enumerate() {
-        let truth: PanelTruth = serde_json::from_str(
-            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
-        )
-        .unwrap();
+        let truth: PanelTruth = truth_of(path);
         let mut sides = Vec::new();
         for seed in [None, Some(4500 + k as u64)] {
             let name = format!("{} {seed:?}", path.display());
-            let (proposal, removals, recut, rot, t) = proposed(path, seed);
+            let Posed {
+                proposal,
+                removals,
+                recut,
+                ups,
+                rot,
+                t,
+            } = proposed(path, seed);
             // The ups, as built: along the web's normal.
-            let ups: Vec<f64> = proposal
-                .ups
-                .iter()
-                .map(|u| (rot.inverse() * Vector3::from(*u)).z)
-                .collect();
+            let ups: Vec<f64> = ups.iter().map(|u| u.z).collect();
             assert!(
                 ups.iter().all(|z| (z.abs() - 1.0).abs() < 1e-9),
                 "{name}: {ups:?}"
@@ -196,20 +223,17 @@ fn holes_across_the_part_get_a_set_up_along_them_in_any_pose() {
     let parts = common::generated_parts("THINWALL_HOLES_DIR", "holes");
     let mut along = 0;
     for (k, path) in parts.iter().enumerate() {
-        let truth: HolesTruth = serde_json::from_str(
-            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
-        )
-        .unwrap();
+        let truth: HolesTruth = truth_of(path);
         let axis = Vector3::from(truth.holes[0].direction);
         let mut all = Vec::new();
         for seed in [None, Some(4600 + k as u64)] {
             let name = format!("{} {seed:?}", path.display());
-            let (proposal, removals, recut, rot, _) = proposed(path, seed);
-            let ups: Vec<Vector3<f64>> = proposal
-                .ups
-                .iter()
-                .map(|u| rot.inverse() * Vector3::from(*u))
-                .collect();
+            let Posed {
+                removals,
+                recut,
+                ups,
+                ..
+            } = proposed(path, seed);
             let on_axis = ups.iter().any(|u| u.dot(&axis).abs() > 1.0 - 1e-9);
             assert!(on_axis, "{name}: no set-up along the holes: {ups:?}");
             if truth.upright {
@@ -254,10 +278,7 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
     let parts = common::generated_parts("THINWALL_FEATURES_DIR", "features");
     assert!(!parts.is_empty());
     for (k, path) in parts.iter().enumerate() {
-        let truth: FeaturesTruth = serde_json::from_str(
-            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
-        )
-        .unwrap();
+        let truth: FeaturesTruth = truth_of(path);
         let hole = truth
             .features
             .iter()
@@ -268,12 +289,12 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
         let mut all = Vec::new();
         for seed in [None, Some(4700 + k as u64)] {
             let name = format!("{} {seed:?}", path.display());
-            let (proposal, removals, recut, rot, _) = proposed(path, seed);
-            let ups: Vec<Vector3<f64>> = proposal
-                .ups
-                .iter()
-                .map(|u| rot.inverse() * Vector3::from(*u))
-                .collect();
+            let Posed {
+                removals,
+                recut,
+                ups,
+                ..
+            } = proposed(path, seed);
             assert_eq!(ups.len(), 2, "{name}: {ups:?}");
             assert!(ups[0].z > 1.0 - 1e-9, "{name}: first {:?}", ups[0]);
             assert!(

@@ -132,23 +132,37 @@ fn both_sides_of_a_double_sided_panel() {
 /// reaches; given the same two ups in order, the same operations; read
 /// one by one with `tw_operations_setup_at`, out of range past the last;
 /// a count of ups without the array is refused.
+/// `tw_operations_setups` on `part` with `n` ups from `ups` (NULL when
+/// empty and `n` 0): its status and result.
+unsafe fn setups(
+    part: *mut tw_part,
+    ups: &[f64],
+    n: usize,
+) -> (tw_status, *mut tw_operations_result) {
+    let mut out = null_mut();
+    let given = if ups.is_empty() {
+        std::ptr::null()
+    } else {
+        ups.as_ptr()
+    };
+    let status = tw_operations_setups(
+        part,
+        std::ptr::null(),
+        given,
+        n,
+        std::ptr::null(),
+        0.0,
+        &mut out,
+    );
+    (status, out)
+}
+
 #[test]
 fn set_ups_proposed_and_given() {
     unsafe {
         let part = panel();
-        let mut proposed = null_mut();
-        assert_eq!(
-            tw_operations_setups(
-                part,
-                std::ptr::null(),
-                std::ptr::null(),
-                0,
-                std::ptr::null(),
-                0.0,
-                &mut proposed
-            ),
-            tw_status::TW_OK
-        );
+        let (status, proposed) = setups(part, &[], 0);
+        assert_eq!(status, tw_status::TW_OK);
         let mut n = 0usize;
         assert_eq!(
             tw_operations_setup_count(proposed, &mut n),
@@ -181,19 +195,8 @@ fn set_ups_proposed_and_given() {
         assert_eq!(got[0].0, -got[1].0);
         assert_eq!(got[0].0.abs(), 1.0);
         let ups = [0.0, 0.0, got[0].0, 0.0, 0.0, got[1].0];
-        let mut given = null_mut();
-        assert_eq!(
-            tw_operations_setups(
-                part,
-                std::ptr::null(),
-                ups.as_ptr(),
-                2,
-                std::ptr::null(),
-                0.0,
-                &mut given
-            ),
-            tw_status::TW_OK
-        );
+        let (status, given) = setups(part, &ups, 2);
+        assert_eq!(status, tw_status::TW_OK);
         assert_eq!(ups_of(given), got);
         let mut past = null_mut();
         assert_eq!(
@@ -201,19 +204,9 @@ fn set_ups_proposed_and_given() {
             tw_status::TW_ERR_OUT_OF_RANGE
         );
         assert!(past.is_null());
-        let mut refused = null_mut();
-        assert_eq!(
-            tw_operations_setups(
-                part,
-                std::ptr::null(),
-                std::ptr::null(),
-                2,
-                std::ptr::null(),
-                0.0,
-                &mut refused
-            ),
-            tw_status::TW_ERR_NULL_ARGUMENT
-        );
+        let (status, refused) = setups(part, &[], 2);
+        assert_eq!(status, tw_status::TW_ERR_NULL_ARGUMENT);
+        assert!(refused.is_null());
         for r in [proposed, given] {
             tw_operations_free(r);
         }

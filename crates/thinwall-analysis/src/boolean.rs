@@ -66,26 +66,25 @@ pub fn union_tiles(tiles: &[Polygon<f64>]) -> MultiPolygon<f64> {
 /// clockwise and holes clockwise, cleaned of the small self-overlaps its
 /// triangles leave along a silhouette.
 pub fn wound_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
-    let shape: Vec<Vec<[f64; 2]>> = rings.into_iter().filter(|r| r.len() >= 3).collect();
-    if shape.is_empty() {
-        return MultiPolygon::new(vec![]);
-    }
-    crate::parallel::check_deadline();
-    let none: Shapes = Vec::new();
-    from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, FillRule::NonZero))
+    filled(rings, FillRule::NonZero)
 }
 
 /// The region closed rings cut out of each other (the even-odd rule over
 /// all of them as one shape): a face's projection whose loops overlap in
 /// projection, ring by ring exclusive or.
 pub fn even_odd_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
+    filled(rings, FillRule::EvenOdd)
+}
+
+/// The region closed rings fill, as one shape, by `rule`.
+fn filled(rings: Vec<Vec<[f64; 2]>>, rule: FillRule) -> MultiPolygon<f64> {
     let shape: Vec<Vec<[f64; 2]>> = rings.into_iter().filter(|r| r.len() >= 3).collect();
     if shape.is_empty() {
         return MultiPolygon::new(vec![]);
     }
     crate::parallel::check_deadline();
     let none: Shapes = Vec::new();
-    from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, FillRule::EvenOdd))
+    from_shapes(vec![shape].overlay(&none, OverlayRule::Subject, rule))
 }
 
 /// The union of many regions, pairwise up a balanced tree (faster here
