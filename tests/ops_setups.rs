@@ -10,8 +10,9 @@ mod common;
 use nalgebra::{Point3, Rotation3, Vector3};
 use std::path::Path;
 use thinwall_analysis::{PartAnalysis, Setup};
+use thinwall_ops::proposal::setups;
 use thinwall_ops::proposal::Proposal;
-use thinwall_ops::sequence::{in_turn, residue, residue_tolerance, setups, Judged};
+use thinwall_ops::sequence::{in_turn, residue, residue_tolerance, Judged};
 use thinwall_removal::locate::{Locator, Place};
 use thinwall_removal::Removal;
 

@@ -15,7 +15,7 @@ use crate::sequence::{residue, residue_tolerance, Residue};
 use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::Vector3;
-use thinwall_removal::{Bound, Removal};
+use thinwall_removal::{Bound, Removal, RemovalError};
 
 /// Set-ups proposed, at most.
 pub const MOST_SETUPS: usize = 6;
@@ -58,6 +58,29 @@ fn arr(v: &Vector3) -> [f64; 3] {
 /// One set-up's direction ([`SAME_SETUP_COS`]).
 fn same(a: &Vector3, b: &Vector3) -> bool {
     a.dot(b) > SAME_SETUP_COS
+}
+
+/// The removals of the set-ups along `ups`, in order (not yet
+/// [`crate::sequence::in_turn`]); when `proposed`, those [`propose`]s
+/// instead and why (`ups[0]` only says why when every candidate is
+/// refused).
+pub fn setups(
+    a: &PartAnalysis,
+    ups: &[[f64; 3]],
+    proposed: bool,
+) -> Result<(Option<Proposal>, Vec<Removal>), RemovalError> {
+    let ups: Vec<Vector3> = ups.iter().map(|u| Vector3::from(*u).normalize()).collect();
+    if proposed {
+        let (proposal, removals) = propose(a);
+        if !removals.is_empty() {
+            return Ok((Some(proposal), removals));
+        }
+        return Ok((
+            Some(proposal),
+            crate::sequence::removals_along(a, &ups[..1])?,
+        ));
+    }
+    Ok((None, crate::sequence::removals_along(a, &ups)?))
 }
 
 /// The proposal and the removal of each set-up proposed (none when every

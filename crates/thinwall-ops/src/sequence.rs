@@ -50,26 +50,6 @@ pub fn removals_along(a: &PartAnalysis, ups: &[Vector3]) -> Result<Vec<Removal>,
         .collect()
 }
 
-/// The removals of the set-ups along `ups`, in order (not yet
-/// [`in_turn`]); with `propose`, those [`crate::proposal::propose`]s
-/// instead and why (`ups[0]` only says why when every candidate is
-/// refused).
-pub fn setups(
-    a: &PartAnalysis,
-    ups: &[[f64; 3]],
-    propose: bool,
-) -> Result<(Option<crate::proposal::Proposal>, Vec<Removal>), RemovalError> {
-    let ups: Vec<Vector3> = ups.iter().map(|u| Vector3::from(*u).normalize()).collect();
-    if propose {
-        let (proposal, removals) = crate::proposal::propose(a);
-        if !removals.is_empty() {
-            return Ok((Some(proposal), removals));
-        }
-        return Ok((Some(proposal), removals_along(a, &ups[..1])?));
-    }
-    Ok((None, removals_along(a, &ups)?))
-}
-
 /// Two set-ups from opposite sides.
 fn opposite(a: &Removal, b: &Removal) -> bool {
     a.frame.z.dot(&b.frame.z) < -1.0 + NEAR_PARALLEL_EPS

@@ -221,7 +221,8 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     }
     ups.extend(&req.later_ups);
     let (proposal, mut removals) =
-        sequence::setups(&first.analysis, &ups, req.choose_up).map_err(OpsError::from)?;
+        thinwall_ops::proposal::setups(&first.analysis, &ups, req.choose_up)
+            .map_err(OpsError::from)?;
     let recut = sequence::in_turn(&mut removals);
     let residue = sequence::residue(&removals);
     let mut drilled: Vec<u64> = Vec::new();
