@@ -1,10 +1,11 @@
 //! Choosing the set-up (issue 37): among the directions the part's planar
 //! faces face (their outward normals, the largest by area), the up from
-//! which a tool reaches the most of stock − part. A pocketed plate is
+//! which a tool reaches the most of stock − part, estimated on a height
+//! map of the part's mesh ([`crate::heights`]). A pocketed plate is
 //! machined from the side its pockets open to; a frame pocketed from both
-//! sides from the side with more to take, the other after it
-//! (`--both-sides`). The directions come from the part's own faces, so
-//! turning the part turns the choice with it.
+//! sides from the side with more to take, the other after it. The
+//! directions come from the part's own faces, so turning the part turns
+//! the choice with it.
 
 use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
@@ -15,6 +16,11 @@ use thinwall_removal::{frame_of, Removal, StockShape};
 /// Candidate ups tried, at most (the directions of the most face area).
 pub const MOST_CANDIDATES: usize = 6;
 
+/// Reachable volumes closer than this share of the part's box (its
+/// diagonal cubed) are equal on height maps: the face area facing the
+/// ups decides.
+pub const TIE_SHARE: f64 = 1e-3;
+
 /// One up tried.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct UpCandidate {
@@ -22,12 +28,14 @@ pub struct UpCandidate {
     pub up: [f64; 3],
     /// Area of the planar faces facing it, mm².
     pub facing_area_mm2: f64,
-    /// What a tool along it reaches of stock − part, mm³ (none where the
-    /// removal refused the part in this set-up).
+    /// What a tool along it reaches of stock − part, mm³, on the height
+    /// map ([`crate::heights::SQUARES`] squares along the stock's longer
+    /// side).
     pub reachable_mm3: Option<f64>,
-    /// What it leaves under the part, mm³.
+    /// What it leaves under the part, mm³, likewise.
     pub out_of_reach_mm3: Option<f64>,
-    /// Why the removal refused the part along it (`removal.<code>`).
+    /// Why the exact removal refused the part along it (`removal.<code>`),
+    /// when it was tried.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refused: Option<String>,
 }
@@ -81,49 +89,33 @@ pub(crate) fn removal_along(a: &PartAnalysis, up: Vector3) -> Result<Removal, St
     }
 }
 
-/// `up` tried: the candidate and its removal (none where refused).
-fn tried(a: &PartAnalysis, up: Vector3, area: f64) -> (UpCandidate, Option<Removal>) {
-    let removal = removal_along(a, up);
-    let (reachable, left) = match &removal {
-        Ok(r) => (
-            Some(
-                crate::layers::reachable(r)
-                    .map(|b| b.volume)
-                    .sum::<f64>()
-                    .max(0.0),
-            ),
-            Some(crate::layers::out_of_reach_mm3(r)),
-        ),
-        Err(_) => (None, None),
-    };
-    // + 0.0: no negative zeros in the report.
-    let candidate = UpCandidate {
-        up: [up.x + 0.0, up.y + 0.0, up.z + 0.0],
+/// `up` scored on its height map (the part's volume `part_mm3`).
+fn scored(a: &PartAnalysis, up: Vector3, area: f64, part_mm3: f64) -> UpCandidate {
+    let map = crate::heights::HeightMap::along(a, up);
+    let reachable = map.reachable_mm3();
+    UpCandidate {
+        up: crate::proposal::clean(&up),
         facing_area_mm2: area,
-        reachable_mm3: reachable,
-        out_of_reach_mm3: left,
-        refused: removal.as_ref().err().cloned(),
-    };
-    (candidate, removal.ok())
+        reachable_mm3: Some(reachable),
+        out_of_reach_mm3: Some((map.stock_mm3() - part_mm3 - reachable).max(0.0)),
+        refused: None,
+    }
 }
 
-/// The candidate ups, best first: the most reachable material, then the
-/// most face area facing it; refused ones last.
+/// The candidate ups, best first: the most reachable material (on their
+/// height maps), then the most face area facing it.
 pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
-    ranked(a).into_iter().map(|(c, _)| c).collect()
-}
-
-/// [`up_candidates`] with their removals.
-pub(crate) fn ranked(a: &PartAnalysis) -> Vec<(UpCandidate, Option<Removal>)> {
     let size = a.bounding_box().diagonal();
-    let mut out: Vec<(UpCandidate, Option<Removal>)> = directions(a)
+    let part_mm3 = crate::heights::mesh_volume(a);
+    let mut out: Vec<UpCandidate> = directions(a)
         .into_iter()
         .take(MOST_CANDIDATES)
-        .map(|(up, area)| tried(a, up, area))
+        .map(|(up, area)| scored(a, up, area, part_mm3))
         .collect();
-    // Equal within the removal's precision (1e-6 of the part's box).
-    let tol = 1e-6 * size.powi(3);
-    out.sort_by(|(x, _), (y, _)| {
+    // Equal within the height maps' precision: a thousandth of the part's
+    // box. Then the larger face down on the table is the better set-up.
+    let tol = TIE_SHARE * size.powi(3);
+    out.sort_by(|x, y| {
         let (rx, ry) = (
             x.reachable_mm3.unwrap_or(-1.0),
             y.reachable_mm3.unwrap_or(-1.0),

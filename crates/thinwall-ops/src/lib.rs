@@ -10,6 +10,7 @@
 pub mod choice;
 pub mod drilling;
 pub mod finishing;
+pub mod heights;
 pub mod hole_stages;
 pub mod layers;
 pub mod operations;

@@ -10,11 +10,12 @@
 //! more than that, or at [`MOST_SETUPS`]. Every direction comes from the
 //! part, so turning the part turns the proposal with it.
 
-use crate::choice::{ranked, UpCandidate, SAME_SETUP_COS};
-use crate::sequence::{residue, residue_tolerance, Residue};
+use crate::choice::{up_candidates, UpCandidate, SAME_SETUP_COS};
+use crate::heights::HeightMap;
+use crate::sequence::{residue, residue_after, residue_tolerance, Residue};
 use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
-use thinwall_geom::Vector3;
+use thinwall_geom::{Point3, Vector3};
 use thinwall_removal::{Bound, Removal, RemovalError};
 
 /// Set-ups proposed, at most.
@@ -50,9 +51,11 @@ pub struct Proposal {
     pub residue: Residue,
 }
 
-fn arr(v: &Vector3) -> [f64; 3] {
-    // + 0.0: no negative zeros in the report.
-    [v.x + 0.0, v.y + 0.0, v.z + 0.0]
+/// A direction for the report: components within 1e-12 of 0 are 0 (no
+/// `-0.000` from a normal's rounding).
+pub fn clean(v: &Vector3) -> [f64; 3] {
+    let c = |x: f64| if x.abs() < 1e-12 { 0.0 } else { x };
+    [c(v.x), c(v.y), c(v.z)]
 }
 
 /// One set-up's direction ([`SAME_SETUP_COS`]).
@@ -86,59 +89,29 @@ pub fn setups(
 /// The proposal and the removal of each set-up proposed (none when every
 /// candidate was refused: the candidates say why).
 pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
-    let ranked = ranked(a);
-    let candidates: Vec<UpCandidate> = ranked.iter().map(|(c, _)| c.clone()).collect();
     let mut proposal = Proposal {
         ups: Vec::new(),
         why: Vec::new(),
-        candidates,
+        candidates: up_candidates(a),
         later: Vec::new(),
         residue: residue(&[]),
     };
-    // The other candidates' removals serve the later set-ups' tries.
-    let mut built: Vec<Removal> = Vec::new();
-    let mut first = None;
-    for (_, r) in ranked {
-        match (first.is_none(), r) {
-            (true, Some(r)) => first = Some(r),
-            (false, Some(r)) => built.push(r),
-            (_, None) => {}
-        }
-    }
-    let Some(first) = first else {
+    let Some(first) = first_setup(a, &mut proposal) else {
         proposal
             .why
             .push("no direction the planar faces face gives a removal".into());
         return (proposal, Vec::new());
     };
-    let up = arr(&first.frame.z);
-    proposal.why.push(format!(
-        "up ({:.3}, {:.3}, {:.3}): of the {} directions the planar faces face, it reaches the most material ({:.1} mm³)",
-        up[0],
-        up[1],
-        up[2],
-        proposal.candidates.len(),
-        proposal.candidates[0].reachable_mm3.unwrap_or(0.0)
-    ));
-    proposal.ups.push(up);
     let mut removals = vec![first];
     let tol = residue_tolerance(&removals[0]);
     proposal.residue = residue(&removals);
     while proposal.residue.volume_mm3 > tol && removals.len() < MOST_SETUPS {
-        let tries = Tries {
-            built: &mut built,
-            later: &mut proposal.later,
-            tol,
-        };
-        let Some((r, left)) = next_setup(a, &mut removals, tries) else {
+        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, tol) else {
             break;
         };
-        if proposal.residue.volume_mm3 - left.volume_mm3 <= tol {
-            break;
-        }
-        let up = arr(&r.frame.z);
+        let up = clean(&r.frame.z);
         proposal.why.push(format!(
-            "then up ({:.3}, {:.3}, {:.3}): it reaches {:.1} mm³ of the {:.1} mm³ the set-ups before left, {} candidate(s) tried",
+            "then up ({:.3}, {:.3}, {:.3}): it reaches {:.1} mm³ of the {:.1} mm³ the set-ups before left, the most of {} candidate(s) on their height maps",
             up[0],
             up[1],
             up[2],
@@ -152,6 +125,28 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     }
     proposal.why.push(left_text(&proposal.residue, tol));
     (proposal, removals)
+}
+
+/// The first set-up's exact removal: of the candidates, best first, the
+/// first the removal takes (those it refuses say why).
+fn first_setup(a: &PartAnalysis, proposal: &mut Proposal) -> Option<Removal> {
+    let tried = proposal.candidates.len();
+    for c in proposal.candidates.iter_mut() {
+        match crate::choice::removal_along(a, Vector3::from(c.up)) {
+            Err(why) => c.refused = Some(why),
+            Ok(r) => {
+                let up = clean(&r.frame.z);
+                let reached: f64 = crate::layers::reachable(&r).map(|b| b.volume).sum();
+                proposal.why.push(format!(
+                    "up ({:.3}, {:.3}, {:.3}): of the {tried} directions the planar faces face, it reaches the most material on their height maps ({:.1} mm³ exactly)",
+                    up[0], up[1], up[2], reached
+                ));
+                proposal.ups.push(up);
+                return Some(r);
+            }
+        }
+    }
+    None
 }
 
 /// What the proposal leaves, in words.
@@ -172,73 +167,56 @@ fn left_text(residue: &Residue, tol: f64) -> String {
     }
 }
 
-/// How the next set-up is tried: removals built already (taken from here
-/// and put back when not chosen), the record of candidates, and the
-/// residue that counts as nothing.
-struct Tries<'t> {
-    built: &'t mut Vec<Removal>,
-    later: &'t mut Vec<LaterCandidate>,
-    tol: f64,
-}
+/// Exact removals tried for one set-up, at most: the candidates best on
+/// their height maps first, until one takes more than the tolerance.
+const MOST_EXACT_TRIES: usize = 3;
 
-impl Tries<'_> {
-    /// The removal along `d`: built already, or now.
-    fn removal(&mut self, a: &PartAnalysis, d: Vector3) -> Result<Removal, String> {
-        match self.built.iter().position(|r| same(&r.frame.z, &d)) {
-            Some(k) => Ok(self.built.swap_remove(k)),
-            None => crate::choice::removal_along(a, d),
-        }
-    }
-}
-
-/// The best next set-up after `removals` and what it leaves (the first
-/// candidate that leaves no more than the tolerance, else the one that
-/// leaves the least); each candidate tried is recorded.
+/// The next set-up after `removals` and what it leaves: the candidates
+/// ranked by what they would leave on their height maps (each recorded in
+/// `later`), then the first of the best whose exact removal takes more
+/// than `tol` of what is left.
 fn next_setup(
     a: &PartAnalysis,
     removals: &mut Vec<Removal>,
-    mut tries: Tries<'_>,
+    later: &mut Vec<LaterCandidate>,
+    tol: f64,
 ) -> Option<(Removal, Residue)> {
     let setup = removals.len() + 1;
-    let mut best: Option<(Removal, Residue)> = None;
-    for d in next_directions(a, removals) {
-        let r = match tries.removal(a, d) {
+    let before = residue(removals).volume_mm3;
+    let mut ranked: Vec<(f64, Vector3)> = next_directions(a, removals)
+        .into_iter()
+        .map(|d| {
+            let map = HeightMap::along(a, d);
+            let reaches = |p: &Point3| map.reaches(p);
+            let left = residue_after(removals, Some(&reaches)).volume_mm3;
+            later.push(LaterCandidate {
+                setup,
+                up: clean(&d),
+                residue_mm3: Some(left),
+                refused: None,
+            });
+            (left, d)
+        })
+        .collect();
+    ranked.sort_by(|x, y| x.0.total_cmp(&y.0));
+    for (_, d) in ranked.into_iter().take(MOST_EXACT_TRIES) {
+        let r = match crate::choice::removal_along(a, d) {
+            Ok(r) => r,
             Err(why) => {
-                tries.later.push(LaterCandidate {
-                    setup,
-                    up: arr(&d),
-                    residue_mm3: None,
-                    refused: Some(why),
-                });
+                if let Some(c) = later.iter_mut().rev().find(|c| c.up == clean(&d)) {
+                    c.refused = Some(why);
+                }
                 continue;
             }
-            Ok(r) => r,
         };
         removals.push(r);
         let left = residue(removals);
         let r = removals.pop().expect("just pushed");
-        tries.later.push(LaterCandidate {
-            setup,
-            up: arr(&d),
-            residue_mm3: Some(left.volume_mm3),
-            refused: None,
-        });
-        if best
-            .as_ref()
-            .is_some_and(|(_, b)| b.volume_mm3 <= left.volume_mm3)
-        {
-            tries.built.push(r);
-            continue;
-        }
-        let done = left.volume_mm3 <= tries.tol;
-        if let Some((old, _)) = best.replace((r, left)) {
-            tries.built.push(old);
-        }
-        if done {
-            break;
+        if before - left.volume_mm3 > tol {
+            return Some((r, left));
         }
     }
-    best
+    None
 }
 
 /// Candidate ups after `removals`: the first's opposite, the directions

@@ -98,6 +98,12 @@ pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
 
 /// What the first set-up's removal holds that none of `removals` reaches.
 pub fn residue(removals: &[Removal]) -> Residue {
+    residue_after(removals, None)
+}
+
+/// [`residue`] with `also` another set-up's reach besides (a height map's
+/// estimate, [`crate::heights::HeightMap::reaches`]).
+pub fn residue_after(removals: &[Removal], also: Option<&dyn Fn(&Point3) -> bool>) -> Residue {
     let Some((first, later)) = removals.split_first() else {
         return Residue {
             volume_mm3: 0.0,
@@ -110,18 +116,20 @@ pub fn residue(removals: &[Removal]) -> Residue {
     let others: Vec<&Removal> = later.iter().filter(|r| !opposite(first, r)).collect();
     let at: Vec<Locator> = others.iter().map(|r| Locator::new(r)).collect();
     let reached = |p: &Point3| {
-        at.iter().zip(&others).any(|(l, r)| match l.place(p) {
-            Place::Block(i) => r.blocks[i].reachable,
-            Place::Outside | Place::Solid => false,
-        })
+        also.is_some_and(|f| f(p))
+            || at.iter().zip(&others).any(|(l, r)| match l.place(p) {
+                Place::Block(i) => r.blocks[i].reachable,
+                Place::Outside | Place::Solid => false,
+            })
     };
+    let at_points = !others.is_empty() || also.is_some();
     let (mut volume, mut blocks, mut faces) = (0.0, 0, Vec::new());
     for (bi, b) in first.blocks.iter().enumerate() {
         if b.reachable || (from_opposite && b.open_below) {
             continue;
         }
         let points = samples(first, bi);
-        let left = if others.is_empty() || points.is_empty() {
+        let left = if !at_points || points.is_empty() {
             1.0
         } else {
             points.iter().filter(|p| !reached(p)).count() as f64 / points.len() as f64
@@ -144,10 +152,10 @@ pub fn residue(removals: &[Removal]) -> Residue {
         volume_mm3: volume,
         blocks,
         faces,
-        judged: if others.is_empty() {
-            Judged::Exact
-        } else {
+        judged: if at_points {
             Judged::AtPoints
+        } else {
+            Judged::Exact
         },
     }
 }
