@@ -319,3 +319,33 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
         }
     }
 }
+
+/// The height maps the candidates are ranked on (`heights.rs`) against the
+/// exact removal, on the generated panels and feature plates: what each
+/// candidate up reaches within 1 % of stock − part and a thousandth of the
+/// stock (a square's width along the walls).
+#[test]
+fn height_maps_estimate_what_an_up_reaches() {
+    let mut parts = common::generated_parts("THINWALL_POCKETS_DIR", "pockets");
+    parts.extend(common::generated_parts("THINWALL_FEATURES_DIR", "features"));
+    let mut compared = 0;
+    for path in &parts {
+        let (part, _) = thinwall_step::read_file(path).unwrap();
+        let a = PartAnalysis::new(&part, Setup::default());
+        for c in thinwall_ops::choice::up_candidates(&a) {
+            let up = nalgebra::Vector3::from(c.up);
+            let r = &thinwall_ops::sequence::removals_along(&a, &[up]).unwrap()[0];
+            let exact: f64 = thinwall_ops::layers::reachable(r).map(|b| b.volume).sum();
+            let whole = r.stock_volume - r.part_volume;
+            let estimate = c.reachable_mm3.unwrap();
+            assert!(
+                (estimate - exact).abs() <= 0.01 * whole + 1e-3 * r.stock_volume,
+                "{} up {:?}: {estimate} mm³ on the map, {exact} exactly (of {whole})",
+                path.display(),
+                c.up
+            );
+            compared += 1;
+        }
+    }
+    assert!(compared > 0);
+}

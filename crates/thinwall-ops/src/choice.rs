@@ -16,11 +16,6 @@ use thinwall_removal::{frame_of, Removal, StockShape};
 /// Candidate ups tried, at most (the directions of the most face area).
 pub const MOST_CANDIDATES: usize = 6;
 
-/// Reachable volumes closer than this share of the part's box (its
-/// diagonal cubed) are equal on height maps: the face area facing the
-/// ups decides.
-pub const TIE_SHARE: f64 = 1e-3;
-
 /// One up tried.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct UpCandidate {
@@ -34,6 +29,9 @@ pub struct UpCandidate {
     pub reachable_mm3: Option<f64>,
     /// What it leaves under the part, mm³, likewise.
     pub out_of_reach_mm3: Option<f64>,
+    /// The stock's volume along it, mm³.
+    #[serde(skip)]
+    pub stock_mm3: f64,
     /// Why the exact removal refused the part along it (`removal.<code>`),
     /// when it was tried.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -98,6 +96,7 @@ fn scored(a: &PartAnalysis, up: Vector3, area: f64, part_mm3: f64) -> UpCandidat
         facing_area_mm2: area,
         reachable_mm3: Some(reachable),
         out_of_reach_mm3: Some((map.stock_mm3() - part_mm3 - reachable).max(0.0)),
+        stock_mm3: map.stock_mm3(),
         refused: None,
     }
 }
@@ -112,9 +111,9 @@ pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
         .take(MOST_CANDIDATES)
         .map(|(up, area)| scored(a, up, area, part_mm3))
         .collect();
-    // Equal within the height maps' precision: a thousandth of the part's
-    // box. Then the larger face down on the table is the better set-up.
-    let tol = TIE_SHARE * size.powi(3);
+    // Equal to rounding: then the larger face down on the table is the
+    // better set-up (the proposal compares near ones exactly).
+    let tol = 1e-6 * size.powi(3);
     out.sort_by(|x, y| {
         let (rx, ry) = (
             x.reachable_mm3.unwrap_or(-1.0),

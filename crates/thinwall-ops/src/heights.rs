@@ -19,7 +19,9 @@ pub struct HeightMap {
     lo: [f64; 3],
     hi: [f64; 3],
     n: [usize; 2],
-    step: f64,
+    /// A square's sides along x and y (the squares tile the footprint
+    /// exactly), mm.
+    step: [f64; 2],
     /// Per square (row by row along y), the part's highest point; −∞
     /// where no part lies over it.
     top: Vec<f64>,
@@ -29,10 +31,14 @@ impl HeightMap {
     /// The map of `a`'s mesh along `up`, over the stock of that set-up.
     pub fn along(a: &PartAnalysis, up: Vector3) -> Self {
         let (frame, lo, hi) = frame_of(a, up);
-        let step = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9) / SQUARES as f64;
+        let side = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-9) / SQUARES as f64;
         let n = [
-            (((hi[0] - lo[0]) / step).ceil() as usize).max(1),
-            (((hi[1] - lo[1]) / step).ceil() as usize).max(1),
+            (((hi[0] - lo[0]) / side).ceil() as usize).max(1),
+            (((hi[1] - lo[1]) / side).ceil() as usize).max(1),
+        ];
+        let step = [
+            (hi[0] - lo[0]).max(1e-9) / n[0] as f64,
+            (hi[1] - lo[1]).max(1e-9) / n[1] as f64,
         ];
         let mut map = Self {
             frame,
@@ -52,8 +58,8 @@ impl HeightMap {
 
     /// The square holding (x, y), if any.
     fn square(&self, x: f64, y: f64) -> Option<usize> {
-        let i = ((x - self.lo[0]) / self.step).floor();
-        let j = ((y - self.lo[1]) / self.step).floor();
+        let i = ((x - self.lo[0]) / self.step[0]).floor();
+        let j = ((y - self.lo[1]) / self.step[1]).floor();
         let inside = i >= 0.0 && j >= 0.0 && (i as usize) < self.n[0] && (j as usize) < self.n[1];
         inside.then(|| j as usize * self.n[0] + i as usize)
     }
@@ -64,25 +70,21 @@ impl HeightMap {
         }
     }
 
-    /// A triangle's heights over the square centres it covers, and along
-    /// its edges (a wall thinner than a square, a face seen edge-on).
+    /// A triangle's heights over the square centres it covers; one that
+    /// covers none (the top of a wall thinner than a square) along its
+    /// edges instead. A triangle seen edge-on (a vertical wall) adds
+    /// nothing: its neighbours above give its top, and marking the squares
+    /// its edges cross would raise the half of each that lies off the wall.
     fn triangle(&mut self, [p, q, r]: [Vector3; 3]) {
-        for (a, b) in [(p, q), (q, r), (r, p)] {
-            let steps = ((b - a).xy().norm() / (0.5 * self.step)).ceil().max(1.0) as usize;
-            for k in 0..=steps {
-                let c = a + (b - a) * (k as f64 / steps as f64);
-                self.raise(c.x, c.y, c.z);
-            }
-        }
         let det = (q.x - p.x) * (r.y - p.y) - (r.x - p.x) * (q.y - p.y);
-        if det.abs() <= 1e-12 * self.step * self.step {
+        if det.abs() <= 1e-12 * self.step[0] * self.step[1] {
             return;
         }
         let (x0, x1) = (p.x.min(q.x).min(r.x), p.x.max(q.x).max(r.x));
         let (y0, y1) = (p.y.min(q.y).min(r.y), p.y.max(q.y).max(r.y));
         let step = self.step;
         // The squares whose centres lie within [v0, v1] along one axis.
-        let range = |v0: f64, v1: f64, o: f64, n: usize| {
+        let range = |v0: f64, v1: f64, o: f64, n: usize, step: f64| {
             let a = ((v0 - o) / step - 0.5).ceil().max(0.0);
             let b = (((v1 - o) / step - 0.5).floor() + 1.0).min(n as f64);
             if b > a {
@@ -91,17 +93,31 @@ impl HeightMap {
                 0..0
             }
         };
-        for j in range(y0, y1, self.lo[1], self.n[1]) {
-            let cy = self.lo[1] + (j as f64 + 0.5) * step;
-            for i in range(x0, x1, self.lo[0], self.n[0]) {
-                let cx = self.lo[0] + (i as f64 + 0.5) * step;
+        let mut covered = 0;
+        for j in range(y0, y1, self.lo[1], self.n[1], step[1]) {
+            let cy = self.lo[1] + (j as f64 + 0.5) * step[1];
+            for i in range(x0, x1, self.lo[0], self.n[0], step[0]) {
+                let cx = self.lo[0] + (i as f64 + 0.5) * step[0];
                 let u = ((q.x - cx) * (r.y - cy) - (r.x - cx) * (q.y - cy)) / det;
                 let v = ((r.x - cx) * (p.y - cy) - (p.x - cx) * (r.y - cy)) / det;
                 let w = 1.0 - u - v;
                 if u >= -1e-12 && v >= -1e-12 && w >= -1e-12 {
                     let k = j * self.n[0] + i;
                     self.top[k] = self.top[k].max(u * p.z + v * q.z + w * r.z);
+                    covered += 1;
                 }
+            }
+        }
+        if covered > 0 {
+            return;
+        }
+        for (a, b) in [(p, q), (q, r), (r, p)] {
+            let steps = ((b - a).xy().norm() / (0.5 * step[0].min(step[1])))
+                .ceil()
+                .max(1.0) as usize;
+            for k in 0..=steps {
+                let c = a + (b - a) * (k as f64 / steps as f64);
+                self.raise(c.x, c.y, c.z);
             }
         }
     }
@@ -110,20 +126,11 @@ impl HeightMap {
     /// part's highest point (the stock's bottom where none) up to the
     /// stock's top, mm³.
     pub fn reachable_mm3(&self) -> f64 {
-        let mut sum = 0.0;
-        for j in 0..self.n[1] {
-            let h = self
-                .step
-                .min(self.hi[1] - self.lo[1] - j as f64 * self.step);
-            for i in 0..self.n[0] {
-                let w = self
-                    .step
-                    .min(self.hi[0] - self.lo[0] - i as f64 * self.step);
-                let from = self.top[j * self.n[0] + i].clamp(self.lo[2], self.hi[2]);
-                sum += w * h * (self.hi[2] - from);
-            }
-        }
-        sum
+        let area = self.step[0] * self.step[1];
+        self.top
+            .iter()
+            .map(|t| area * (self.hi[2] - t.clamp(self.lo[2], self.hi[2])))
+            .sum()
     }
 
     /// The stock's volume, mm³.
@@ -136,7 +143,7 @@ impl HeightMap {
     pub fn reaches(&self, p: &Point3) -> bool {
         let l = self.frame.to_local(p);
         self.square(l.x, l.y)
-            .is_none_or(|k| l.z >= self.top[k] - 1e-3 * self.step)
+            .is_none_or(|k| l.z >= self.top[k] - 1e-3 * self.step[0])
     }
 }
 

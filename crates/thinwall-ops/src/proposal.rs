@@ -5,10 +5,12 @@
 //! reaches (the residue, [`crate::sequence::residue`]), the next is the
 //! candidate that leaves the least: the first's opposite, the directions
 //! the faces round the residue face (planar normals, axes of cylinders
-//! and cones both ways) and the first stock's other axes. It stops when the
-//! residue is within the removal's tolerance, when no candidate takes
-//! more than that, or at [`MOST_SETUPS`]. Every direction comes from the
-//! part, so turning the part turns the proposal with it.
+//! and cones both ways) and the first stock's other axes. Candidates are
+//! judged on height maps of the part's mesh ([`crate::heights`]); only the
+//! set-ups taken get their exact removal. It stops when the residue is
+//! within the removal's tolerance, when no candidate takes more than that,
+//! or at [`MOST_SETUPS`]. Every direction comes from the part, so turning
+//! the part turns the proposal with it.
 
 use crate::choice::{up_candidates, UpCandidate, SAME_SETUP_COS};
 use crate::heights::HeightMap;
@@ -127,26 +129,60 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     (proposal, removals)
 }
 
-/// The first set-up's exact removal: of the candidates, best first, the
-/// first the removal takes (those it refuses say why).
+/// The first set-up's exact removal: of the candidates whose height maps
+/// reach within their precision of the best ([`near_best`]), the one whose
+/// exact removal reaches the most (to rounding; then the larger face on
+/// the table); if the removal refuses them all, the next candidates in
+/// turn. Those it refuses say why.
 fn first_setup(a: &PartAnalysis, proposal: &mut Proposal) -> Option<Removal> {
     let tried = proposal.candidates.len();
-    for c in proposal.candidates.iter_mut() {
-        match crate::choice::removal_along(a, Vector3::from(c.up)) {
-            Err(why) => c.refused = Some(why),
-            Ok(r) => {
-                let up = clean(&r.frame.z);
-                let reached: f64 = crate::layers::reachable(&r).map(|b| b.volume).sum();
-                proposal.why.push(format!(
-                    "up ({:.3}, {:.3}, {:.3}): of the {tried} directions the planar faces face, it reaches the most material on their height maps ({:.1} mm³ exactly)",
-                    up[0], up[1], up[2], reached
-                ));
-                proposal.ups.push(up);
-                return Some(r);
+    let mut from = 0;
+    while from < tried {
+        let group = near_best(&proposal.candidates[from..]);
+        let mut best: Option<(f64, f64, Removal)> = None;
+        for c in &mut proposal.candidates[from..from + group] {
+            match crate::choice::removal_along(a, Vector3::from(c.up)) {
+                Err(why) => c.refused = Some(why),
+                Ok(r) => {
+                    let reached: f64 = crate::layers::reachable(&r).map(|b| b.volume).sum();
+                    let tie = 1e-6 * r.stock_volume;
+                    let better = best.as_ref().is_none_or(|(v, area, _)| {
+                        reached > v + tie || (reached >= v - tie && c.facing_area_mm2 > *area)
+                    });
+                    if better {
+                        best = Some((reached, c.facing_area_mm2, r));
+                    }
+                }
             }
         }
+        if let Some((reached, _, r)) = best {
+            let up = clean(&r.frame.z);
+            proposal.why.push(format!(
+                "up ({:.3}, {:.3}, {:.3}): of the {tried} directions the planar faces face, it reaches the most material ({:.1} mm³; {group} near the best on their height maps compared exactly)",
+                up[0], up[1], up[2], reached
+            ));
+            proposal.ups.push(up);
+            return Some(r);
+        }
+        from += group;
     }
     None
+}
+
+/// How many of `candidates` (best first on their height maps) reach
+/// within the maps' precision of the first: 1 % of its reach and a
+/// thousandth of its stock (`tests/ops_setups.rs` holds the maps to that).
+fn near_best(candidates: &[UpCandidate]) -> usize {
+    let reach = |c: &UpCandidate| c.reachable_mm3.unwrap_or(0.0);
+    let Some(first) = candidates.first() else {
+        return 0;
+    };
+    let margin = 0.01 * reach(first) + 1e-3 * first.stock_mm3;
+    candidates
+        .iter()
+        .take_while(|c| reach(c) >= reach(first) - margin)
+        .count()
+        .max(1)
 }
 
 /// What the proposal leaves, in words.
