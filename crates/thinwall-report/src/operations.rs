@@ -209,6 +209,13 @@ impl OperationsReport {
                 r.out_of_reach_mm3
             );
         }
+        if r.recut_mm3 > 0.0 {
+            let _ = writeln!(
+                s,
+                "cut again: up to {:.1} mm³ of what it cuts a set-up before it along another axis took (blocks reached in part are cut whole)",
+                r.recut_mm3
+            );
+        }
         if !r.other_setup.is_empty() {
             let _ = writeln!(
                 s,
