@@ -23,6 +23,9 @@ use thinwall_removal::{Bound, Removal, RemovalError};
 /// Set-ups proposed, at most.
 pub const MOST_SETUPS: usize = 6;
 
+/// The least share of stock − part a set-up after the first must take.
+pub const MIN_SETUP_SHARE: f64 = 1e-4;
+
 /// Candidates tried for each set-up after the first, at most.
 pub const MOST_TRIED: usize = 8;
 
@@ -106,9 +109,12 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     };
     let mut removals = vec![first];
     let tol = residue_tolerance(&removals[0]);
+    // A set-up after the first must take more than this: below it, what
+    // is left is a residue to name, not a set-up with nothing to cut.
+    let worth = tol.max(MIN_SETUP_SHARE * (removals[0].stock_volume - removals[0].part_volume));
     proposal.residue = residue(&removals);
     while proposal.residue.volume_mm3 > tol && removals.len() < MOST_SETUPS {
-        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, tol) else {
+        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, worth) else {
             break;
         };
         let up = clean(&r.frame.z);
@@ -210,12 +216,12 @@ const MOST_EXACT_TRIES: usize = 3;
 /// The next set-up after `removals` and what it leaves: the candidates
 /// ranked by what they would leave on their height maps (each recorded in
 /// `later`), then the first of the best whose exact removal takes more
-/// than `tol` of what is left.
+/// than `worth` of what is left.
 fn next_setup(
     a: &PartAnalysis,
     removals: &mut Vec<Removal>,
     later: &mut Vec<LaterCandidate>,
-    tol: f64,
+    worth: f64,
 ) -> Option<(Removal, Residue)> {
     let setup = removals.len() + 1;
     let before = residue(removals).volume_mm3;
@@ -248,7 +254,7 @@ fn next_setup(
         removals.push(r);
         let left = residue(removals);
         let r = removals.pop().expect("just pushed");
-        if before - left.volume_mm3 > tol {
+        if before - left.volume_mm3 > worth {
             return Some((r, left));
         }
     }
