@@ -87,12 +87,19 @@ pub(crate) fn removal_along(a: &PartAnalysis, up: Vector3) -> Result<Removal, St
     }
 }
 
+/// A direction for the report: components within 1e-12 of 0 are 0 (no
+/// `-0.000` from a normal's rounding).
+pub fn clean(v: &Vector3) -> [f64; 3] {
+    let c = |x: f64| if x.abs() < 1e-12 { 0.0 } else { x };
+    [c(v.x), c(v.y), c(v.z)]
+}
+
 /// `up` scored on its height map (the part's volume `part_mm3`).
 fn scored(a: &PartAnalysis, up: Vector3, area: f64, part_mm3: f64) -> UpCandidate {
     let map = crate::heights::HeightMap::along(a, up);
     let reachable = map.reachable_mm3();
     UpCandidate {
-        up: crate::proposal::clean(&up),
+        up: clean(&up),
         facing_area_mm2: area,
         reachable_mm3: Some(reachable),
         out_of_reach_mm3: Some((map.stock_mm3() - part_mm3 - reachable).max(0.0)),

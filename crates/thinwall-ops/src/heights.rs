@@ -4,7 +4,7 @@
 //! above it) is estimated on it in milliseconds, where the exact removal
 //! takes seconds to minutes on a large part: the set-ups' candidates are
 //! ranked on height maps, and only the set-ups chosen get their exact
-//! removal ([`crate::proposal`]).
+//! removal (`proposal.rs`).
 
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Frame, Point3, Vector3};

@@ -12,7 +12,7 @@
 //! or at [`MOST_SETUPS`]. Every direction comes from the part, so turning
 //! the part turns the proposal with it.
 
-use crate::choice::{up_candidates, UpCandidate, SAME_SETUP_COS};
+use crate::choice::{clean, up_candidates, UpCandidate, SAME_SETUP_COS};
 use crate::heights::HeightMap;
 use crate::sequence::{residue, residue_after, residue_tolerance, Residue};
 use serde::Serialize;
@@ -54,13 +54,6 @@ pub struct Proposal {
     pub later: Vec<LaterCandidate>,
     /// What no proposed set-up reaches.
     pub residue: Residue,
-}
-
-/// A direction for the report: components within 1e-12 of 0 are 0 (no
-/// `-0.000` from a normal's rounding).
-pub fn clean(v: &Vector3) -> [f64; 3] {
-    let c = |x: f64| if x.abs() < 1e-12 { 0.0 } else { x };
-    [c(v.x), c(v.y), c(v.z)]
 }
 
 /// One set-up's direction ([`SAME_SETUP_COS`]).

@@ -102,7 +102,7 @@ pub fn residue(removals: &[Removal]) -> Residue {
 }
 
 /// [`residue`] with `also` another set-up's reach besides (a height map's
-/// estimate, [`crate::heights::HeightMap::reaches`]).
+/// estimate, `HeightMap::reaches` in `heights.rs`).
 pub fn residue_after(removals: &[Removal], also: Option<&dyn Fn(&Point3) -> bool>) -> Residue {
     let Some((first, later)) = removals.split_first() else {
         return Residue {

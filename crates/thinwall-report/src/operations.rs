@@ -202,28 +202,33 @@ impl OperationsReport {
         for h in &r.hole_stages {
             hole_stage_line(&mut s, h);
         }
-        if r.out_of_reach_mm3 > 0.0 {
-            let _ = writeln!(
-                s,
-                "left to another set-up: {:.1} mm³ under the part, which a tool along this set-up's up does not reach",
-                r.out_of_reach_mm3
-            );
-        }
-        if r.recut_mm3 > 0.0 {
-            let _ = writeln!(
-                s,
-                "cut again: up to {:.1} mm³ of what it cuts a set-up before it along another axis took (blocks reached in part are cut whole)",
-                r.recut_mm3
-            );
-        }
-        if !r.other_setup.is_empty() {
-            let _ = writeln!(
-                s,
-                "left to another set-up (the plan's features this tool axis does not reach): {}",
-                r.other_setup.join(" ")
-            );
-        }
+        between_setups(&mut s, r);
         s
+    }
+}
+
+/// What a set-up leaves to others and may cut again after them.
+fn between_setups(s: &mut String, r: &SetupOperations) {
+    if r.out_of_reach_mm3 > 0.0 {
+        let _ = writeln!(
+            s,
+            "left to another set-up: {:.1} mm³ under the part, which a tool along this set-up's up does not reach",
+            r.out_of_reach_mm3
+        );
+    }
+    if r.recut_mm3 > 0.0 {
+        let _ = writeln!(
+            s,
+            "cut again: up to {:.1} mm³ of what it cuts a set-up before it along another axis took (blocks reached in part are cut whole)",
+            r.recut_mm3
+        );
+    }
+    if !r.other_setup.is_empty() {
+        let _ = writeln!(
+            s,
+            "left to another set-up (the plan's features this tool axis does not reach): {}",
+            r.other_setup.join(" ")
+        );
     }
 }
 
