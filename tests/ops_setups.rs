@@ -94,6 +94,27 @@ fn proposed(path: &Path, seed: Option<u64>) -> Posed {
     }
 }
 
+/// `check` on the part of `path` as built and turned by `seed`, each
+/// posed and proposed (with its name for messages); the turned copy's
+/// ups, turned back, are the built one's.
+fn in_both_poses(path: &Path, seed: u64, mut check: impl FnMut(&str, &Posed)) {
+    let mut all: Vec<Vec<Vector3<f64>>> = Vec::new();
+    for seed in [None, Some(seed)] {
+        let posed = proposed(path, seed);
+        check(&format!("{} {seed:?}", path.display()), &posed);
+        all.push(posed.ups);
+    }
+    assert_eq!(
+        all[0].len(),
+        all[1].len(),
+        "{}: turned {all:?}",
+        path.display()
+    );
+    for (a, b) in all[0].iter().zip(&all[1]) {
+        assert!((a - b).norm() < 1e-9, "{}: turned {all:?}", path.display());
+    }
+}
+
 /// The truth written beside a generated part.
 fn truth_of<T: serde::de::DeserializeOwned>(path: &Path) -> T {
     serde_json::from_str(&std::fs::read_to_string(path.with_extension("truth.json")).unwrap())
@@ -226,31 +247,21 @@ fn holes_across_the_part_get_a_set_up_along_them_in_any_pose() {
     for (k, path) in parts.iter().enumerate() {
         let truth: HolesTruth = truth_of(path);
         let axis = Vector3::from(truth.holes[0].direction);
-        let mut all = Vec::new();
-        for seed in [None, Some(4600 + k as u64)] {
-            let name = format!("{} {seed:?}", path.display());
-            let Posed {
-                removals,
-                recut,
-                ups,
-                ..
-            } = proposed(path, seed);
+        in_both_poses(path, 4600 + k as u64, |name, posed| {
+            let ups = &posed.ups;
             let on_axis = ups.iter().any(|u| u.dot(&axis).abs() > 1.0 - 1e-9);
             assert!(on_axis, "{name}: no set-up along the holes: {ups:?}");
             if truth.upright {
                 assert!(ups.len() >= 2, "{name}: {ups:?}");
                 along += 1;
             }
-            assert_adds_up(&removals, recut, &name);
+            assert_adds_up(&posed.removals, posed.recut, name);
             eprintln!(
-                "{name}: {} set-up(s), {recut:.1} mm³ perhaps cut again",
-                ups.len()
+                "{name}: {} set-up(s), {:.1} mm³ perhaps cut again",
+                ups.len(),
+                posed.recut
             );
-            all.push(ups);
-        }
-        for (a, b) in all[0].iter().zip(&all[1]) {
-            assert!((a - b).norm() < 1e-9, "{}: turned {all:?}", path.display());
-        }
+        });
     }
     assert!(along > 0);
 }
@@ -287,15 +298,8 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
             .and_then(|f| f.direction)
             .expect("a tilted hole");
         let axis = Vector3::from(hole);
-        let mut all = Vec::new();
-        for seed in [None, Some(4700 + k as u64)] {
-            let name = format!("{} {seed:?}", path.display());
-            let Posed {
-                removals,
-                recut,
-                ups,
-                ..
-            } = proposed(path, seed);
+        in_both_poses(path, 4700 + k as u64, |name, posed| {
+            let ups = &posed.ups;
             assert_eq!(ups.len(), 2, "{name}: {ups:?}");
             assert!(ups[0].z > 1.0 - 1e-9, "{name}: first {:?}", ups[0]);
             assert!(
@@ -303,7 +307,7 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
                 "{name}: second {:?}",
                 ups[1]
             );
-            let first = &removals[0];
+            let first = &posed.removals[0];
             let bound = first.meshed.volume_bound_mm3 + 1e-6 * first.stock_volume;
             assert!(
                 (first.part_volume - truth.volume).abs() <= bound,
@@ -311,12 +315,8 @@ fn a_tilted_hole_gets_a_set_up_along_it_in_any_pose() {
                 first.part_volume,
                 truth.volume
             );
-            assert_adds_up(&removals, recut, &name);
-            all.push(ups);
-        }
-        for (a, b) in all[0].iter().zip(&all[1]) {
-            assert!((a - b).norm() < 1e-9, "{}: turned {all:?}", path.display());
-        }
+            assert_adds_up(&posed.removals, posed.recut, name);
+        });
     }
 }
 
