@@ -14,7 +14,7 @@
 
 use crate::choice::{clean, up_candidates, UpCandidate, SAME_SETUP_COS};
 use crate::heights::HeightMap;
-use crate::sequence::{residue, residue_after, residue_tolerance, Residue};
+use crate::sequence::{cut_after, residue, residue_after, residue_tolerance, Residue};
 use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Point3, Vector3};
@@ -247,7 +247,10 @@ fn next_setup(
         removals.push(r);
         let left = residue(removals);
         let r = removals.pop().expect("just pushed");
-        if before - left.volume_mm3 > worth {
+        // It must also have something of its own to cut: points judged in
+        // two frames can credit it with material whose blocks here were
+        // all but wholly taken before.
+        if before - left.volume_mm3 > worth && cut_after(&r, removals) > worth {
             return Some((r, left));
         }
     }

@@ -74,18 +74,7 @@ pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
     for (k, recut) in recut.iter_mut().enumerate().skip(1) {
         let (earlier, rest) = removals.split_at_mut(k);
         let later = &mut rest[0];
-        let at: Vec<Locator> = earlier.iter().map(Locator::new).collect();
-        let from_opposite = earlier.iter().any(|e| opposite(e, later));
-        let gone: Vec<f64> = (0..later.blocks.len())
-            .map(|bi| {
-                if from_opposite && later.blocks[bi].open_below {
-                    return 1.0;
-                }
-                let points = samples(later, bi);
-                let n = points.iter().filter(|p| gone(p, earlier, &at)).count();
-                n as f64 / points.len().max(1) as f64
-            })
-            .collect();
+        let gone = gone_shares(later, earlier);
         for (b, g) in later.blocks.iter_mut().zip(gone) {
             b.cleared = g == 1.0;
             if g > 0.0 && g < 1.0 && b.reachable {
@@ -94,6 +83,36 @@ pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
         }
     }
     recut
+}
+
+/// Per block of `later`, the share of it the `earlier` set-ups took: 1
+/// for a block open below after the opposite side, else the share of its
+/// points they reached.
+pub fn gone_shares(later: &Removal, earlier: &[Removal]) -> Vec<f64> {
+    let at: Vec<Locator> = earlier.iter().map(Locator::new).collect();
+    let from_opposite = earlier.iter().any(|e| opposite(e, later));
+    (0..later.blocks.len())
+        .map(|bi| {
+            if from_opposite && later.blocks[bi].open_below {
+                return 1.0;
+            }
+            let points = samples(later, bi);
+            let n = points.iter().filter(|p| gone(p, earlier, &at)).count();
+            n as f64 / points.len().max(1) as f64
+        })
+        .collect()
+}
+
+/// What set-up `later` cuts after the `earlier` ones: its reachable
+/// blocks not wholly taken before, mm³.
+pub fn cut_after(later: &Removal, earlier: &[Removal]) -> f64 {
+    later
+        .blocks
+        .iter()
+        .zip(gone_shares(later, earlier))
+        .filter(|(b, g)| b.reachable && *g < 1.0)
+        .map(|(b, _)| b.volume)
+        .sum()
 }
 
 /// What the first set-up's removal holds that none of `removals` reaches.
