@@ -11,7 +11,7 @@ use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::Vector3;
-use thinwall_removal::{frame_of, Removal, StockShape};
+use thinwall_removal::Removal;
 
 /// Candidate ups tried, at most (the directions of the most face area).
 pub const MOST_CANDIDATES: usize = 6;
@@ -71,19 +71,16 @@ fn directions(a: &PartAnalysis) -> Vec<(Vector3, f64)> {
 
 /// The removal along `up` (refused: why), checked.
 pub(crate) fn removal_along(a: &PartAnalysis, up: Vector3) -> Result<Removal, String> {
-    let size = a.bounding_box().diagonal();
-    let (frame, lo, hi) = frame_of(a, up);
     // A direction the boolean library fails in (geo's i_overlay 4.5
     // panics on some inputs: the ledger) is refused, not the end of the
     // choice.
     let removal = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)
-            .and_then(Removal::checked)
+        crate::sequence::removals_along(a, &[up])
     }));
     match removal {
         Err(panic) => Err(format!("internal: {}", panic_text(&panic))),
         Ok(Err(e)) => Err(format!("removal.{}: {e}", e.code())),
-        Ok(Ok(r)) => Ok(r),
+        Ok(Ok(mut r)) => Ok(r.remove(0)),
     }
 }
 

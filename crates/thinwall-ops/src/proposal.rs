@@ -107,7 +107,9 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     let worth = tol.max(MIN_SETUP_SHARE * (removals[0].stock_volume - removals[0].part_volume));
     proposal.residue = residue(&removals);
     while proposal.residue.volume_mm3 > tol && removals.len() < MOST_SETUPS {
-        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, worth) else {
+        let before = proposal.residue.volume_mm3;
+        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, (before, worth))
+        else {
             break;
         };
         let up = clean(&r.frame.z);
@@ -209,15 +211,14 @@ const MOST_EXACT_TRIES: usize = 3;
 /// The next set-up after `removals` and what it leaves: the candidates
 /// ranked by what they would leave on their height maps (each recorded in
 /// `later`), then the first of the best whose exact removal takes more
-/// than `worth` of what is left.
+/// than `worth` of the `before` mm³ left.
 fn next_setup(
     a: &PartAnalysis,
     removals: &mut Vec<Removal>,
     later: &mut Vec<LaterCandidate>,
-    worth: f64,
+    (before, worth): (f64, f64),
 ) -> Option<(Removal, Residue)> {
     let setup = removals.len() + 1;
-    let before = residue(removals).volume_mm3;
     let mut ranked: Vec<(f64, Vector3)> = next_directions(a, removals)
         .into_iter()
         .map(|d| {
