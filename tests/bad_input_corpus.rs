@@ -81,10 +81,10 @@ fn judge_read(m: &Mutant, read: Result<LoadedPart, StudyError>) -> Option<String
     let recognized = thinwall_study::recognize(&study, &Default::default()).err();
     let plan = thinwall_study::plan(
         &study,
-        &thinwall_study::PlanRequest {
-            recognize: Default::default(),
-            rules: thinwall_plan::RuleSet::default_rules(),
-        },
+        &thinwall_study::PlanRequest::new(
+            Default::default(),
+            thinwall_plan::RuleSet::default_rules(),
+        ),
     )
     .err();
     let setup = thinwall_analysis::Setup::default();

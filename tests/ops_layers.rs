@@ -632,7 +632,7 @@ fn the_chosen_up_is_the_pockets_side_in_any_pose() {
             let text = common::posed_step(&std::fs::read_to_string(path).unwrap(), seed);
             let (part, _) = thinwall_step::read_bytes(text.as_bytes(), "panel.step").unwrap();
             let a = PartAnalysis::new(&part, Setup::default());
-            let c = thinwall_ops::choice::up_candidates(&a);
+            let c = thinwall_setups::choice::up_candidates(&a);
             let rot = seed.map_or(nalgebra::Rotation3::identity(), |s| {
                 common::rigid_motion(s).0
             });
@@ -667,12 +667,12 @@ fn a_real_part_gets_the_up_that_reaches_most() {
     let path = common::shared_data().join("nist/nist_ftc_07_asme1_ap242-e2.stp");
     let part = thinwall_step::read_file(&path).unwrap().0;
     let a = PartAnalysis::new(&part, Setup::default());
-    let c = thinwall_ops::choice::up_candidates(&a);
-    assert!(c.len() >= 2 && c.len() <= thinwall_ops::choice::MOST_CANDIDATES);
+    let c = thinwall_setups::choice::up_candidates(&a);
+    assert!(c.len() >= 2 && c.len() <= thinwall_setups::choice::MOST_CANDIDATES);
     for (i, x) in c.iter().enumerate() {
         for y in &c[i + 1..] {
             let cos = Vector3::from(x.up).dot(&Vector3::from(y.up));
-            assert!(cos < thinwall_ops::choice::SAME_SETUP_COS, "{x:?} {y:?}");
+            assert!(cos < thinwall_setups::choice::SAME_SETUP_COS, "{x:?} {y:?}");
         }
     }
     let best = &c[0];

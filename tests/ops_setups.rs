@@ -10,11 +10,11 @@ mod common;
 use nalgebra::{Point3, Rotation3, Vector3};
 use std::path::Path;
 use thinwall_analysis::{PartAnalysis, Setup};
-use thinwall_ops::proposal::setups;
-use thinwall_ops::proposal::Proposal;
-use thinwall_ops::sequence::{in_turn, residue, residue_tolerance, Judged};
 use thinwall_removal::locate::{Locator, Place};
 use thinwall_removal::Removal;
+use thinwall_setups::proposal::setups;
+use thinwall_setups::proposal::Proposal;
+use thinwall_setups::turn::{in_turn, residue, residue_tolerance, Judged};
 
 #[derive(serde::Deserialize)]
 struct PanelTruth {
@@ -332,9 +332,9 @@ fn height_maps_estimate_what_an_up_reaches() {
     for path in &parts {
         let (part, _) = thinwall_step::read_file(path).unwrap();
         let a = PartAnalysis::new(&part, Setup::default());
-        for c in thinwall_ops::choice::up_candidates(&a) {
+        for c in thinwall_setups::choice::up_candidates(&a) {
             let up = nalgebra::Vector3::from(c.up);
-            let r = &thinwall_ops::sequence::removals_along(&a, &[up]).unwrap()[0];
+            let r = &thinwall_setups::turn::removals_along(&a, &[up]).unwrap()[0];
             let exact: f64 = thinwall_ops::layers::reachable(r).map(|b| b.volume).sum();
             let whole = r.stock_volume - r.part_volume;
             let estimate = c.reachable_mm3.unwrap();

@@ -508,10 +508,36 @@ enum tw_status tw_plan(const struct tw_part *part,
                        const char *rules_toml,
                        struct tw_plan_result **out);
 
+// Plan the part over several set-ups in turn, as `thinwall plan --up A
+// --up B …`: `ups` holds `n_ups` directions (x, y, z each, in the part's
+// coordinates), each set-up planning what those before it left; `n_ups`
+// 0 (`ups` may then be NULL) proposes the set-ups, as `thinwall plan`
+// without `--up`. `opt` gives the recognition settings (its up is not
+// used; no placement), `rules_toml` as `tw_plan`. `*out` reads the first
+// set-up; `tw_plan_setup_count` and `tw_plan_setup_at` give the others,
+// and its JSON holds them all (`then`, `residue`, `proposal`). A zero
+// direction is `TW_ERR_INVALID_ARGUMENT`. Free with `tw_plan_free`.
+enum tw_status tw_plan_setups(const struct tw_part *part,
+                              const struct tw_options *opt,
+                              const double *ups,
+                              size_t n_ups,
+                              const char *rules_toml,
+                              struct tw_plan_result **out);
+
+// The number of set-ups of a plan (1 for a plan of one set-up).
+enum tw_status tw_plan_setup_count(const struct tw_plan_result *plan, size_t *count);
+
+// Set-up `index` (0 the first) of a plan, as a plan of its own: its up,
+// constraints, machining features and JSON that set-up's alone.
+// `TW_ERR_OUT_OF_RANGE` past the last. Free with `tw_plan_free`.
+enum tw_status tw_plan_setup_at(const struct tw_plan_result *plan,
+                                size_t index,
+                                struct tw_plan_result **out);
+
 // Free a plan. NULL is allowed.
 void tw_plan_free(struct tw_plan_result *plan);
 
-// The plan as JSON (`thinwall/plan/1`, as the CLI prints it).
+// The plan as JSON (`thinwall/plan/2`, as the CLI prints it).
 // `*out_json` is a new string to free with `tw_string_free`.
 enum tw_status tw_plan_to_json(const struct tw_plan_result *plan, char **out_json);
 

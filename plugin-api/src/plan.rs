@@ -105,52 +105,159 @@ pub unsafe extern "C" fn tw_plan(
     out: *mut *mut tw_plan_result,
 ) -> tw_status {
     construct("tw_plan", out, || {
-        let p = part_ref(part)?;
-        let rules = if rules_toml.is_null() {
-            RuleSet::default_rules()
-        } else {
-            let text = CStr::from_ptr(rules_toml).to_str().map_err(|_| {
-                (
-                    tw_status::TW_ERR_INVALID_ARGUMENT,
-                    "rules_toml is not UTF-8".to_string(),
-                )
-            })?;
-            RuleSet::from_toml(text, "rules")
-                .map_err(|e| (tw_status::TW_ERR_INVALID_CONFIG, e.to_string()))?
-        };
         let o = options_or_default(opt);
-        let request = thinwall_study::PlanRequest {
-            recognize: o.request.clone(),
-            rules,
+        let request = thinwall_study::PlanRequest::new(o.request.clone(), rules_of(rules_toml)?);
+        planned(part, opt, &request)
+    })
+}
+
+/// Plan the part over several set-ups in turn, as `thinwall plan --up A
+/// --up B …`: `ups` holds `n_ups` directions (x, y, z each, in the part's
+/// coordinates), each set-up planning what those before it left; `n_ups`
+/// 0 (`ups` may then be NULL) proposes the set-ups, as `thinwall plan`
+/// without `--up`. `opt` gives the recognition settings (its up is not
+/// used; no placement), `rules_toml` as `tw_plan`. `*out` reads the first
+/// set-up; `tw_plan_setup_count` and `tw_plan_setup_at` give the others,
+/// and its JSON holds them all (`then`, `residue`, `proposal`). A zero
+/// direction is `TW_ERR_INVALID_ARGUMENT`. Free with `tw_plan_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_setups(
+    part: *const tw_part,
+    opt: *const tw_options,
+    ups: *const f64,
+    n_ups: usize,
+    rules_toml: *const c_char,
+    out: *mut *mut tw_plan_result,
+) -> tw_status {
+    construct("tw_plan_setups", out, || {
+        if n_ups > 0 && ups.is_null() {
+            return Err(null("ups"));
+        }
+        let o = options_or_default(opt);
+        let mut recognize = o.request.clone();
+        recognize.setup.placement = None;
+        let dirs: Vec<[f64; 3]> = if n_ups == 0 {
+            Vec::new()
+        } else {
+            std::slice::from_raw_parts(ups, 3 * n_ups)
+                .chunks(3)
+                .map(|c| [c[0], c[1], c[2]])
+                .collect()
         };
-        let plan = p
-            .with_study(o.request.parallel, |study| {
-                thinwall_study::plan(study, &request).map(|planned| planned.plan)
-            })
-            .map_err(study_failure)?;
-        let pairs = plan
-            .sequence
-            .iter()
-            .map(|c| {
-                let r = match c.relation {
-                    Relation::Before => tw_relation::TW_RELATION_BEFORE,
-                    Relation::Simultaneous => tw_relation::TW_RELATION_SIMULTANEOUS,
-                };
-                (
-                    cstring(&c.before.to_string()),
-                    cstring(&c.after.to_string()),
-                    r,
-                )
-            })
-            .collect();
-        let rules = plan.sequence.iter().map(|c| cstring(&c.rule)).collect();
-        let features = feature_entries(&plan);
-        Ok(tw_plan_result {
-            plan,
-            pairs,
-            rules,
-            features,
+        if let Some(first) = dirs.first() {
+            recognize.setup.up = *first;
+        }
+        let mut request = thinwall_study::PlanRequest::new(recognize, rules_of(rules_toml)?);
+        request.propose = dirs.is_empty();
+        request.later_ups = dirs.iter().skip(1).copied().collect();
+        planned(part, opt, &request)
+    })
+}
+
+/// The rules of a rule file's text, or the shipped ones for NULL.
+unsafe fn rules_of(rules_toml: *const c_char) -> Result<RuleSet, crate::error::Failure> {
+    if rules_toml.is_null() {
+        return Ok(RuleSet::default_rules());
+    }
+    let text = CStr::from_ptr(rules_toml).to_str().map_err(|_| {
+        (
+            tw_status::TW_ERR_INVALID_ARGUMENT,
+            "rules_toml is not UTF-8".to_string(),
+        )
+    })?;
+    RuleSet::from_toml(text, "rules").map_err(|e| (tw_status::TW_ERR_INVALID_CONFIG, e.to_string()))
+}
+
+/// The plan of `request` on `part` as a result.
+unsafe fn planned(
+    part: *const tw_part,
+    opt: *const tw_options,
+    request: &thinwall_study::PlanRequest,
+) -> Result<tw_plan_result, crate::error::Failure> {
+    let p = part_ref(part)?;
+    let o = options_or_default(opt);
+    let plan = p
+        .with_study(o.request.parallel, |study| {
+            thinwall_study::plan(study, request).map(|planned| planned.plan)
         })
+        .map_err(study_failure)?;
+    Ok(result_of(plan))
+}
+
+/// A result over `plan` (its accessors read this set-up's).
+fn result_of(plan: std::sync::Arc<Plan>) -> tw_plan_result {
+    let pairs = plan
+        .sequence
+        .iter()
+        .map(|c| {
+            let r = match c.relation {
+                Relation::Before => tw_relation::TW_RELATION_BEFORE,
+                Relation::Simultaneous => tw_relation::TW_RELATION_SIMULTANEOUS,
+            };
+            (
+                cstring(&c.before.to_string()),
+                cstring(&c.after.to_string()),
+                r,
+            )
+        })
+        .collect();
+    let rules = plan.sequence.iter().map(|c| cstring(&c.rule)).collect();
+    let features = feature_entries(&plan);
+    tw_plan_result {
+        plan,
+        pairs,
+        rules,
+        features,
+    }
+}
+
+/// The number of set-ups of a plan (1 for a plan of one set-up).
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_setup_count(
+    plan: *const tw_plan_result,
+    count: *mut usize,
+) -> tw_status {
+    guard("tw_plan_setup_count", || {
+        if plan.is_null() {
+            return Err(null("plan"));
+        }
+        if count.is_null() {
+            return Err(null("count"));
+        }
+        *count = 1 + (&(*plan).plan).then.len();
+        Ok(())
+    })
+}
+
+/// Set-up `index` (0 the first) of a plan, as a plan of its own: its up,
+/// constraints, machining features and JSON that set-up's alone.
+/// `TW_ERR_OUT_OF_RANGE` past the last. Free with `tw_plan_free`.
+#[no_mangle]
+pub unsafe extern "C" fn tw_plan_setup_at(
+    plan: *const tw_plan_result,
+    index: usize,
+    out: *mut *mut tw_plan_result,
+) -> tw_status {
+    construct("tw_plan_setup_at", out, || {
+        if plan.is_null() {
+            return Err(null("plan"));
+        }
+        let first = &(*plan).plan;
+        let count = 1 + first.then.len();
+        let mut one = match index {
+            0 => Plan::clone(first),
+            i if i < count => first.then[i - 1].clone(),
+            _ => {
+                return Err((
+                    tw_status::TW_ERR_OUT_OF_RANGE,
+                    format!("set-up {index} of {count}"),
+                ))
+            }
+        };
+        one.then = Vec::new();
+        one.residue = None;
+        one.proposal = None;
+        Ok(result_of(std::sync::Arc::new(one)))
     })
 }
 
@@ -160,7 +267,7 @@ pub unsafe extern "C" fn tw_plan_free(plan: *mut tw_plan_result) {
     free(plan)
 }
 
-/// The plan as JSON (`thinwall/plan/1`, as the CLI prints it).
+/// The plan as JSON (`thinwall/plan/2`, as the CLI prints it).
 /// `*out_json` is a new string to free with `tw_string_free`.
 #[no_mangle]
 pub unsafe extern "C" fn tw_plan_to_json(

@@ -4,7 +4,8 @@
 //! `other_side` has it; a web, a hole and a wall on one side of its base
 //! are `TW_ERR_NOT_APPLICABLE`. `tw_operations_both_sides` and
 //! `tw_operations_second` plan and read both set-ups;
-//! `tw_operations_setups` plans given or proposed set-ups in turn.
+//! `tw_operations_setups` and `tw_plan_setups` plan given or proposed
+//! set-ups in turn.
 
 use std::ffi::CStr;
 use std::ptr::null_mut;
@@ -209,6 +210,93 @@ fn set_ups_proposed_and_given() {
         assert!(refused.is_null());
         for r in [proposed, given] {
             tw_operations_free(r);
+        }
+        tw_part_free(part);
+    }
+}
+
+/// `tw_plan_setups` on `part` with `n` ups from `ups` (NULL when empty).
+unsafe fn plan_setups(
+    part: *mut tw_part,
+    ups: &[f64],
+    n: usize,
+) -> (tw_status, *mut tw_plan_result) {
+    let mut out = null_mut();
+    let given = if ups.is_empty() {
+        std::ptr::null()
+    } else {
+        ups.as_ptr()
+    };
+    let status = tw_plan_setups(part, std::ptr::null(), given, n, std::ptr::null(), &mut out);
+    (status, out)
+}
+
+/// A plan's JSON.
+unsafe fn plan_json(p: *const tw_plan_result) -> serde_json::Value {
+    let mut json = null_mut();
+    assert_eq!(tw_plan_to_json(p, &mut json), tw_status::TW_OK);
+    let v = serde_json::from_str(CStr::from_ptr(json).to_str().unwrap()).unwrap();
+    tw_string_free(json);
+    v
+}
+
+/// `tw_plan_setups` on the same panel: proposed, two set-ups from opposite
+/// sides, the second's removal holding what the first took as cleared
+/// (its features and that add up to stock − part), nothing left; given
+/// the same ups in order, the same plans; each set-up read on its own with
+/// `tw_plan_setup_at`, out of range past the last.
+#[test]
+fn plans_of_set_ups_proposed_and_given() {
+    unsafe {
+        let part = panel();
+        let (status, proposed) = plan_setups(part, &[], 0);
+        assert_eq!(status, tw_status::TW_OK);
+        let mut n = 0usize;
+        assert_eq!(tw_plan_setup_count(proposed, &mut n), tw_status::TW_OK);
+        assert_eq!(n, 2);
+        let whole = plan_json(proposed);
+        assert!(whole["residue"]["volume_mm3"].as_f64().unwrap() < 1e-3);
+        assert_eq!(whole["then"].as_array().unwrap().len(), 1);
+        let second = &whole["then"][0]["removal"];
+        let taken = second["cleared_before_mm3"].as_f64().unwrap();
+        let own = second["removed_volume_mm3"].as_f64().unwrap();
+        let stock_part = second["stock_volume_mm3"].as_f64().unwrap()
+            - second["part_volume_mm3"].as_f64().unwrap();
+        assert!(taken > 0.0 && own > 0.0);
+        assert!(
+            (taken + own - stock_part).abs() < 1e-6 * stock_part + 1.0,
+            "{taken} + {own} vs {stock_part}"
+        );
+        let ups_of = |r: *mut tw_plan_result| -> Vec<(f64, usize)> {
+            (0..2)
+                .map(|k| {
+                    let mut one = null_mut();
+                    assert_eq!(tw_plan_setup_at(r, k, &mut one), tw_status::TW_OK);
+                    let v = plan_json(one);
+                    assert!(v.get("then").is_none());
+                    let features = v["machining_features"].as_array().unwrap().len();
+                    tw_plan_free(one);
+                    (v["up"][2].as_f64().unwrap(), features)
+                })
+                .collect()
+        };
+        let got = ups_of(proposed);
+        assert_eq!(got[0].0, -got[1].0);
+        let ups = [0.0, 0.0, got[0].0, 0.0, 0.0, got[1].0];
+        let (status, given) = plan_setups(part, &ups, 2);
+        assert_eq!(status, tw_status::TW_OK);
+        assert_eq!(ups_of(given), got);
+        let mut past = null_mut();
+        assert_eq!(
+            tw_plan_setup_at(given, 2, &mut past),
+            tw_status::TW_ERR_OUT_OF_RANGE
+        );
+        assert!(past.is_null());
+        let (status, refused) = plan_setups(part, &[], 2);
+        assert_eq!(status, tw_status::TW_ERR_NULL_ARGUMENT);
+        assert!(refused.is_null());
+        for r in [proposed, given] {
+            tw_plan_free(r);
         }
         tw_part_free(part);
     }

@@ -371,9 +371,11 @@ pub enum MillingArg {
 /// The settings flags of `recognize`.
 #[derive(clap::Args)]
 pub struct RecognizeFlags {
-    /// Up direction of the set-up (tool axis), e.g. `0,0,1`.
+    /// Up direction of the set-up (tool axis), e.g. `0,0,1`. `plan` takes
+    /// it repeated for set-ups in turn (`--up 0,0,1 --up 0,0,-1`), and
+    /// without one proposes the set-ups; the others take one (default +Z).
     #[arg(long, value_parser = parse_vector, allow_hyphen_values = true)]
-    pub up: Option<[f64; 3]>,
+    pub up: Vec<[f64; 3]>,
     /// TOML file with recognition settings (see docs/RECOGNITION.md).
     #[arg(long)]
     pub config: Option<PathBuf>,
@@ -428,7 +430,24 @@ pub struct RecognizeFlags {
 
 impl RecognizeFlags {
     /// The request: the settings file (if any), then the flags over it.
+    /// One `--up` at most.
     pub fn request(self) -> Result<thinwall_study::RecognizeRequest, Failure> {
+        if self.up.len() > 1 {
+            return Err(Failure::Usage(
+                "--up: one set-up here (only plan takes several, in turn)".into(),
+            ));
+        }
+        self.first_request()
+    }
+
+    /// The request of the first `--up` and the ups after it (set-ups in
+    /// turn, `plan`).
+    pub fn in_turn(mut self) -> Result<(thinwall_study::RecognizeRequest, Vec<[f64; 3]>), Failure> {
+        let later = self.up.split_off(self.up.len().min(1));
+        Ok((self.first_request()?, later))
+    }
+
+    fn first_request(self) -> Result<thinwall_study::RecognizeRequest, Failure> {
         let settings = match &self.config {
             Some(path) => {
                 // A settings file that cannot be used is a usage failure,
@@ -461,7 +480,7 @@ impl RecognizeFlags {
         if let Some(d) = self.tool_diameter {
             cfg.thresholds.preferred_tool_diameter_mm = d;
         }
-        let given_up = self.up.or(settings.up);
+        let given_up = self.up.first().copied().or(settings.up);
         let setup = thinwall_study::setup_of(given_up, self.machine.machine(self.tilt_limit))?;
         let stock = match &self.stock {
             Some(path) => Some(std::sync::Arc::new(thinwall_step::read_file(path)?.0)),

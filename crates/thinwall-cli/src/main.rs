@@ -76,10 +76,12 @@ fn run(command: Command) -> Result<(), Failure> {
 }
 
 fn plan(a: args::PlanArgs) -> Result<(), Failure> {
-    let request = study::PlanRequest {
-        recognize: a.flags.request()?,
-        rules: rules_of(a.rules.as_deref())?,
-    };
+    let (recognize, later_ups) = a.flags.in_turn()?;
+    // Without an up (flag or settings) the set-ups are proposed.
+    let propose = !recognize.machining.in_setup;
+    let mut request = study::PlanRequest::new(recognize, rules_of(a.rules.as_deref())?);
+    request.later_ups = later_ups;
+    request.propose = propose;
     let loaded = LoadedPart::read_file(&a.part)?;
     let s = limits::study(&loaded);
     let planned = study::plan(&s, &request)?;

@@ -323,8 +323,8 @@ fn classify_json_and_errors() {
 }
 
 /// Check `value` against the parts of JSON Schema our schemas use:
-/// `required`, `properties`, `items`, `type`, `enum`, `$ref` to the root's
-/// `$defs`, `pattern` (as a prefix or whole-match of simple patterns is
+/// `required`, `properties`, `items`, `type`, `enum`, `$ref` to the root or
+/// its `$defs`, `pattern` (as a prefix or whole-match of simple patterns is
 /// not needed: only presence and kinds). Returns the problems, with their
 /// paths.
 fn schema_problems(
@@ -343,7 +343,12 @@ fn schema_problems_in(
 ) -> Vec<String> {
     use serde_json::Value;
     if let Some(Value::String(r)) = schema.get("$ref") {
-        let name = r.strip_prefix("#/$defs/").expect("refs to $defs only");
+        if r == "#" {
+            return schema_problems_in(root, root, value, path);
+        }
+        let name = r
+            .strip_prefix("#/$defs/")
+            .expect("refs to the root or $defs only");
         let def = &root["$defs"][name];
         assert!(def.is_object(), "{path}: no $defs/{name}");
         return schema_problems_in(root, def, value, path);

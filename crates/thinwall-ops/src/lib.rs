@@ -7,18 +7,14 @@
 //! ([`finishing`]), holes' spots, countersinks and chamfers
 //! ([`hole_stages`]), and the whole run for a set-up ([`setup`]).
 
-pub mod choice;
 pub mod drilling;
 pub mod finishing;
-pub mod heights;
 pub mod hole_stages;
 pub mod layers;
 pub mod operations;
 mod order;
 pub mod planned;
-pub mod proposal;
 pub mod rest;
-pub mod sequence;
 pub mod setup;
 mod stage;
 pub mod tools;

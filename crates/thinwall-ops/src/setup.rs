@@ -70,7 +70,7 @@ pub fn plan_setup(
 
 /// The operations of one set-up of several planned in turn: its
 /// `removal` has the blocks earlier set-ups reached `cleared`
-/// ([`crate::sequence::in_turn`]); `a` is the part analysed in this
+/// ([`thinwall_setups::in_turn`]); `a` is the part analysed in this
 /// set-up and `features` its machining features found in it. A hole whose
 /// faces an earlier set-up drilled (`drilled_before`, their `step_id`s) is
 /// not drilled again; the faces of the holes drilled here are returned.

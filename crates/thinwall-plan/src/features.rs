@@ -119,7 +119,8 @@ fn distribute(
         }
     }
     let mut rest: BTreeMap<BulkKey, Vec<Piece>> = BTreeMap::new();
-    for b in &r.blocks {
+    // A block an earlier set-up took is no feature of this one.
+    for b in r.blocks.iter().filter(|b| !b.cleared) {
         let mut covering: Vec<usize> = r.cell_bands[b.cell]
             .iter()
             .flat_map(|&k| by_band.get(k).into_iter().flatten().copied())

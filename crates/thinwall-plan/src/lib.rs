@@ -16,6 +16,7 @@ pub mod sizing;
 pub mod solid_part;
 pub mod steps;
 mod touch;
+pub mod turn;
 mod types;
 pub mod volumes;
 mod whole;
@@ -26,6 +27,7 @@ pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
 pub use sizing::{size_wall, Milling, Sizes, SizingError, SizingParameters, WallDimensions};
 /// The removal engine the plan is built over (its own crate).
 pub use thinwall_removal as removal;
+pub use turn::InTurn;
 pub use types::{LayerConstraint, Plan, PlannedFeature, RemovalSummary, VolumeId, WallPlan};
 
 use thinwall_analysis::{PartAnalysis, StiffnessKind};
@@ -33,7 +35,7 @@ use thinwall_analysis::{PartAnalysis, StiffnessKind};
 use thinwall_pipeline::Outcome;
 
 /// The plan's JSON contract name and version.
-pub const PLAN_SCHEMA: &str = "thinwall/plan/1";
+pub const PLAN_SCHEMA: &str = "thinwall/plan/2";
 
 /// What the planner layers leave out, per feature: curved walls get their
 /// place in the sequence and their sizes, not step-approach layers (those
@@ -170,18 +172,40 @@ pub fn plan(
     out: &Outcome,
     rules: &RuleSet,
 ) -> Result<Plan, PlanError> {
+    plan_in_turn(file, analysis, out, rules, None)
+}
+
+/// [`plan`] of one set-up of several planned in turn (`turn`; none: the
+/// only set-up): the blocks the earlier set-ups took are no features of
+/// this one, and a thin web with material still under it gets no step
+/// layers here ([`turn::supported_webs`]).
+pub fn plan_in_turn(
+    file: &str,
+    analysis: &PartAnalysis,
+    out: &Outcome,
+    rules: &RuleSet,
+    turn: Option<&InTurn>,
+) -> Result<Plan, PlanError> {
     let part = analysis.part();
     let scene = Scene::of(part, out);
     let seq = sequence(&scene, rules);
     let mut walls = wall_plans(out)?;
     let faces = adapt::Faces::new(part);
     let (shapes, mut adaptations) = adapt::shapes(&faces, out, &scene, &mut walls);
-    let layers = steps::layers(out, &scene, &seq, &walls, &shapes);
+    let supported = turn.map(|t| turn::supported_webs(out, &walls, t));
+    let supported = supported.unwrap_or_default();
+    let layered: Vec<WallPlan> = walls
+        .iter()
+        .filter(|w| !supported.contains(&w.id))
+        .cloned()
+        .collect();
+    let layers = steps::layers(out, &scene, &seq, &layered, &shapes);
     let limits = limits(out, &walls);
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let splits = adapt::hole_splits(&faces, out, &walls, &shapes);
+    let earlier = turn.map_or(&[][..], |t| t.earlier);
     let (removal, mut machining_features, frame) =
-        whole::removal_plan(analysis, out, &layers, &splits);
+        whole::removal_plan(analysis, out, &layers, &splits, earlier);
     let adapted = adapt::relations(
         &faces,
         out,
@@ -200,18 +224,7 @@ pub fn plan(
         file: file.to_string(),
         up: out.setup.up,
         rules: rules.source.clone(),
-        stiffness_features: out
-            .recognition
-            .features
-            .iter()
-            .zip(&scene.facts)
-            .map(|(f, fact)| PlannedFeature {
-                id: f.id,
-                kind: f.kind,
-                thin: f.thin,
-                top: fact.top,
-            })
-            .collect(),
+        stiffness_features: planned_features(out, &scene),
         connections: out.structure.connections.clone(),
         sequence: seq.constraints.clone(),
         rejected: seq.rejected.clone(),
@@ -225,6 +238,25 @@ pub fn plan(
         machining_features,
         feature_sequence,
         limits,
+        supported_webs: supported.into_iter().collect(),
+        then: Vec::new(),
+        residue: None,
+        proposal: None,
         queries: seq,
     })
+}
+
+/// Every stiffness feature with its top in the set-up.
+fn planned_features(out: &Outcome, scene: &Scene) -> Vec<PlannedFeature> {
+    out.recognition
+        .features
+        .iter()
+        .zip(&scene.facts)
+        .map(|(f, fact)| PlannedFeature {
+            id: f.id,
+            kind: f.kind,
+            thin: f.thin,
+            top: fact.top,
+        })
+        .collect()
 }

@@ -280,6 +280,21 @@ pub struct Plan {
     /// sequenced and sized, but their step approach is not designed yet).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub limits: Vec<String>,
+    /// Thin webs with material still under them in this set-up (a later
+    /// set-up takes it): supported, so no step layers here (`turn.rs`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub supported_webs: Vec<FeatureId>,
+    /// The set-ups after this one, planned in turn (issue 37): each one's
+    /// stock what the set-ups before it left. Empty for a plan of one
+    /// set-up; a later set-up's plan has none of its own.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub then: Vec<Plan>,
+    /// What none of the set-ups reaches (a plan over several set-ups).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residue: Option<thinwall_setups::Residue>,
+    /// The set-ups proposed and why (when they were not given).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub proposal: Option<thinwall_setups::Proposal>,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,
@@ -313,6 +328,18 @@ pub struct RemovalSummary {
     /// free-form faces): their area and the volume bound they imply.
     #[serde(skip_serializing_if = "thinwall_removal::pieces::Meshed::is_empty")]
     pub meshed: thinwall_removal::pieces::Meshed,
+    /// A set-up after others: the volume of the blocks they took (no
+    /// feature of this set-up's holds it), mm³.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub cleared_before_mm3: f64,
+    /// A set-up after others: the volume of the blocks they took in part,
+    /// cut whole again here (at most that much is air), mm³.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub recut_mm3: f64,
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
 }
 
 /// A `before` relation between two layers and why.

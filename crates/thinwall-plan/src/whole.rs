@@ -13,12 +13,15 @@ use thinwall_pipeline::Outcome;
 use thinwall_removal::{frame_of, Removal, StockShape};
 
 /// The removal plan of `part` with its designed `layers` (plan order).
-/// Heights closer than the part's feature tolerance are the same.
+/// Heights closer than the part's feature tolerance are the same. After
+/// the `earlier` set-ups' removals (none: the first set-up), the blocks
+/// they took are `cleared` and left out of the features.
 pub fn removal_plan(
     a: &PartAnalysis,
     out: &Outcome,
     layers: &[Layer],
     splits: &[crate::types::HoleSplit],
+    earlier: &[Removal],
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
     let up = out.setup.up_in_part();
@@ -39,13 +42,18 @@ pub fn removal_plan(
         notes,
         ..Default::default()
     };
-    let r = match Removal::new(part, frame, &stock, &bands, size).and_then(Removal::checked) {
+    let mut r = match Removal::new(part, frame, &stock, &bands, size).and_then(Removal::checked) {
         Ok(r) => r,
         Err(e) => {
             summary.unavailable = Some(e);
             return (summary, Vec::new(), frame_out);
         }
     };
+    // After other set-ups: what they took is no feature of this one.
+    if !earlier.is_empty() {
+        summary.recut_mm3 = thinwall_setups::turn::clear_taken(&mut r, earlier);
+        summary.cleared_before_mm3 = r.cleared_volume();
+    }
     let band_area: Vec<f64> = layer_band
         .iter()
         .map(|b| {

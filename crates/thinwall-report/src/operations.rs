@@ -29,10 +29,10 @@ pub struct OperationsReport {
     pub then: Vec<LaterSetup>,
     /// With several set-ups: what none of them reaches.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub residue: Option<thinwall_ops::sequence::Residue>,
+    pub residue: Option<thinwall_setups::turn::Residue>,
     /// The set-ups proposed (no up given), with why.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub proposal: Option<thinwall_ops::proposal::Proposal>,
+    pub proposal: Option<thinwall_setups::proposal::Proposal>,
     pub not_yet: Vec<String>,
 }
 
@@ -349,7 +349,7 @@ fn hole_stage_line(s: &mut String, h: &thinwall_ops::hole_stages::HoleStage) {
 
 /// The set-ups proposed: the first set-up's candidates, then why each
 /// was taken.
-fn proposal_text(s: &mut String, p: &thinwall_ops::proposal::Proposal) {
+pub(crate) fn proposal_text(s: &mut String, p: &thinwall_setups::proposal::Proposal) {
     let _ = writeln!(
         s,
         "set-ups proposed: {} (first among {} ups the part's faces face, the most material reachable first):",
@@ -381,10 +381,10 @@ fn proposal_text(s: &mut String, p: &thinwall_ops::proposal::Proposal) {
 }
 
 /// What no set-up reaches.
-fn residue_text(s: &mut String, r: &thinwall_ops::sequence::Residue) {
+pub(crate) fn residue_text(s: &mut String, r: &thinwall_setups::turn::Residue) {
     let how = match r.judged {
-        thinwall_ops::sequence::Judged::Exact => "exactly",
-        thinwall_ops::sequence::Judged::AtPoints => "judged at points inside the blocks",
+        thinwall_setups::turn::Judged::Exact => "exactly",
+        thinwall_setups::turn::Judged::AtPoints => "judged at points inside the blocks",
     };
     if r.blocks == 0 {
         let _ = writeln!(

@@ -1,4 +1,4 @@
-//! A plan (`thinwall/plan/1`) as JSON and as text: the planner computes
+//! A plan (`thinwall/plan/2`) as JSON and as text: the planner computes
 //! it, this module only writes it.
 
 use thinwall_plan::{features, sequence, Plan};
@@ -21,10 +21,17 @@ fn removal_text(plan: &Plan, s: &mut String) {
         r.stock,
         r.stock_volume_mm3,
         r.part_volume_mm3,
-        r.removed_volume_mm3,
+        r.removed_volume_mm3 + r.cleared_before_mm3,
         plan.machining_features.len(),
         r.cells
     );
+    if r.cleared_before_mm3 > 0.0 {
+        let _ = writeln!(
+            s,
+            "  {:.1} mm³ of it taken by the set-ups before; {:.1} mm³ taken in part before, cut again here",
+            r.cleared_before_mm3, r.recut_mm3
+        );
+    }
     meshed_line(s, &r.meshed);
     for n in &r.notes {
         let _ = writeln!(s, "  note: {n}");
@@ -104,8 +111,38 @@ pub fn to_json(plan: &Plan) -> String {
 }
 
 /// A table a planner can read: the order, the constraints, the
-/// rejected candidates.
+/// rejected candidates; over several set-ups, why they were proposed,
+/// each set-up's table in turn and what none reaches.
 pub fn to_text(plan: &Plan) -> String {
+    use std::fmt::Write;
+    if plan.then.is_empty() {
+        return setup_text(plan);
+    }
+    let mut s = String::new();
+    if let Some(p) = &plan.proposal {
+        crate::operations::proposal_text(&mut s, p);
+    }
+    let n = 1 + plan.then.len();
+    for (k, p) in std::iter::once(plan).chain(&plan.then).enumerate() {
+        let u = p.up;
+        let _ = writeln!(
+            s,
+            "\n== set-up {} of {n}: up ({:.3}, {:.3}, {:.3}) ==",
+            k + 1,
+            u[0],
+            u[1],
+            u[2]
+        );
+        s.push_str(&setup_text(p));
+    }
+    if let Some(r) = &plan.residue {
+        crate::operations::residue_text(&mut s, r);
+    }
+    s
+}
+
+/// One set-up's table.
+fn setup_text(plan: &Plan) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let _ = writeln!(
@@ -169,6 +206,14 @@ pub fn to_text(plan: &Plan) -> String {
     removal_text(plan, &mut s);
     for l in &plan.limits {
         let _ = writeln!(s, "not planned yet: {l}");
+    }
+    if !plan.supported_webs.is_empty() {
+        let ids: Vec<String> = plan.supported_webs.iter().map(|f| f.to_string()).collect();
+        let _ = writeln!(
+            s,
+            "supported webs: {} (material a later set-up takes is still under them: no step layers here)",
+            ids.join(" ")
+        );
     }
     let _ = writeln!(s, "rejected candidates: {}", plan.rejected.len());
     for r in &plan.rejected {

@@ -19,16 +19,43 @@ pub fn setup_of(up: Option<[f64; 3]>, machine: Machine) -> Result<Setup, StudyEr
     Ok(Setup::new(up.unwrap_or([0.0, 0.0, 1.0]), machine)?)
 }
 
-/// `plan`: a recognition and the sequence rules.
+/// `plan`: a recognition and the sequence rules; with `later_ups` or
+/// `propose`, several set-ups planned in turn.
 #[derive(Clone, Debug)]
 pub struct PlanRequest {
+    /// The recognition of the (first) set-up; later set-ups are
+    /// recognized with the same settings along their ups.
     pub recognize: RecognizeRequest,
     pub rules: RuleSet,
+    /// Set-ups after the first, by their ups, in order: each plans what
+    /// the set-ups before it left.
+    pub later_ups: Vec<[f64; 3]>,
+    /// Propose the set-ups instead of taking the recognition's up and
+    /// `later_ups` (`thinwall_setups::proposal`).
+    pub propose: bool,
 }
 
 impl PlanRequest {
+    /// One set-up: `recognize`'s.
+    pub fn new(recognize: RecognizeRequest, rules: RuleSet) -> Self {
+        Self {
+            recognize,
+            rules,
+            later_ups: Vec::new(),
+            propose: false,
+        }
+    }
+
     pub fn check(&self) -> Result<(), StudyError> {
+        for up in &self.later_ups {
+            Setup::new(*up, self.recognize.setup.machine)?;
+        }
         self.recognize.check().map_err(StudyError::Request)
+    }
+
+    /// Whether it asks for set-ups in turn (proposed or several ups).
+    pub fn several(&self) -> bool {
+        self.propose || !self.later_ups.is_empty()
     }
 }
 
@@ -105,7 +132,7 @@ pub struct OperationsRequest {
     pub both_sides: bool,
     /// Propose the set-ups instead of taking `setup.up`: the fewest ups
     /// from which a 3-axis machine reaches stock − part, the first the one
-    /// from which the most is reachable (`thinwall_ops::proposal`).
+    /// from which the most is reachable (`thinwall_setups::proposal`).
     pub choose_up: bool,
     /// Set-ups after `setup`, by their ups, in order: each cuts what the
     /// set-ups before it left.

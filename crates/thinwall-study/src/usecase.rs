@@ -11,12 +11,13 @@ use std::path::Path;
 use std::sync::Arc;
 use thinwall_access::reach::{self, ReachOptions};
 use thinwall_analysis::Setup;
-use thinwall_ops::{sequence, OpsError};
+use thinwall_ops::OpsError;
 use thinwall_pipeline::{MachiningRequest, Outcome, PipelineError};
 use thinwall_plan::{Plan, RuleSet};
 use thinwall_report::access::{AccessReport, ReachResult, ReachSettings};
 use thinwall_report::operations::{LaterSetup, OperationsReport};
 use thinwall_report::{ClassificationReport, InspectReport, RecognitionReport};
+use thinwall_setups::turn as sequence;
 
 /// `inspect`: the part's bodies, faces, edges and convexity.
 pub struct Inspected<'p> {
@@ -33,11 +34,15 @@ pub struct Recognized<'p> {
     pub timings: Vec<(&'static str, f64)>,
 }
 
-/// `plan`: the recognition it planned and the plan.
+/// `plan`: the recognition it planned and the plan (of the first set-up;
+/// the later set-ups' plans are its `then`).
 pub struct Planned<'p> {
     pub at: Arc<AtSetup<'p>>,
     pub outcome: Arc<Outcome>,
     pub plan: Arc<Plan>,
+    /// Each later set-up's analysis and recognition, in the order of
+    /// `plan.then`.
+    pub later: Vec<(Arc<AtSetup<'p>>, Arc<Outcome>)>,
 }
 
 /// `access`: flank milling and reach of every face.
@@ -102,13 +107,85 @@ pub fn recognize<'p>(
 pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
     contained("plan", study.name(), || {
         req.check()?;
+        if req.several() {
+            return plan_in_turn(study, req);
+        }
         let at = study.at(&req.recognize.setup)?;
         let outcome = at
             .outcome(&req.recognize)
             .map_err(|e| recognition(study, e))?;
         let plan = at.plan(study.name(), &req.recognize, &req.rules)?;
-        Ok(Planned { at, outcome, plan })
+        Ok(Planned {
+            at,
+            outcome,
+            plan,
+            later: Vec::new(),
+        })
     })
+}
+
+/// Several set-ups planned in turn: each set-up recognized along its up
+/// with the request's settings, its plan over what the set-ups before it
+/// left. When the set-ups' removals cannot be made (a face no graph along
+/// a given up), the first set-up is planned alone and its removal says
+/// why.
+fn plan_in_turn<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
+    let first = study.at(&req.recognize.setup)?;
+    let ups: Vec<[f64; 3]> = std::iter::once(req.recognize.setup.up)
+        .chain(req.later_ups.iter().copied())
+        .collect();
+    let Ok((proposal, mut removals)) = thinwall_setups::setups(&first.analysis, &ups, req.propose)
+    else {
+        return plan(
+            study,
+            &PlanRequest::new(req.recognize.clone(), req.rules.clone()),
+        );
+    };
+    sequence::in_turn(&mut removals);
+    let residue = sequence::residue(&removals);
+    let mut plans = Vec::new();
+    for (k, r) in removals.iter().enumerate() {
+        let recognize = RecognizeRequest {
+            setup: setup_along(&req.recognize.setup, r),
+            ..req.recognize.clone()
+        };
+        let at = study.at(&recognize.setup)?;
+        let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
+        let turn = thinwall_plan::InTurn {
+            this: r,
+            earlier: &removals[..k],
+        };
+        let plan = thinwall_plan::plan_in_turn(
+            study.name(),
+            &at.analysis,
+            &outcome,
+            &req.rules,
+            Some(&turn),
+        )?;
+        plans.push((at, outcome, plan));
+    }
+    let mut plans = plans.into_iter();
+    let (at, outcome, mut plan) = plans.next().expect("a set-up at least");
+    let later: Vec<_> = plans.collect();
+    plan.then = later.iter().map(|(_, _, p)| p.clone()).collect();
+    plan.residue = Some(residue);
+    plan.proposal = proposal;
+    Ok(Planned {
+        at,
+        outcome,
+        plan: Arc::new(plan),
+        later: later.into_iter().map(|(a, o, _)| (a, o)).collect(),
+    })
+}
+
+/// `base` with its up along removal `r`'s (+ 0.0: no negative zeros in a
+/// report).
+fn setup_along(base: &Setup, r: &thinwall_plan::removal::Removal) -> Setup {
+    let z = r.frame.z;
+    Setup {
+        up: [z.x + 0.0, z.y + 0.0, z.z + 0.0],
+        ..base.clone()
+    }
 }
 
 /// Write each machining feature of `plan` as a STEP solid (`V1.step`, …)
@@ -221,19 +298,14 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     }
     ups.extend(&req.later_ups);
     let (proposal, mut removals) =
-        thinwall_ops::proposal::setups(&first.analysis, &ups, req.choose_up)
+        thinwall_setups::proposal::setups(&first.analysis, &ups, req.choose_up)
             .map_err(OpsError::from)?;
     let recut = sequence::in_turn(&mut removals);
     let residue = sequence::residue(&removals);
     let mut drilled: Vec<u64> = Vec::new();
     let mut sheets = Vec::new();
     for (r, recut) in removals.iter().zip(recut) {
-        let z = r.frame.z;
-        // + 0.0: no negative zeros in the report.
-        let setup = Setup {
-            up: [z.x + 0.0, z.y + 0.0, z.z + 0.0],
-            ..req.setup.clone()
-        };
+        let setup = setup_along(&req.setup, r);
         let at = study.at(&setup)?;
         let holes = found_in_setup(study, &at, &setup)?;
         let (ops, here) = thinwall_ops::setup::plan_in_turn(

@@ -61,10 +61,7 @@ fn each_command_builds_the_analysis_and_the_mesh_once() {
         "recognize with reach, every format"
     );
 
-    let plan_req = PlanRequest {
-        recognize: req.clone(),
-        rules: thinwall_plan::RuleSet::default_rules(),
-    };
+    let plan_req = PlanRequest::new(req.clone(), thinwall_plan::RuleSet::default_rules());
     let plan_built = counted(&part, &[Text, Json, Svg, Html], |s| {
         plan(s, &plan_req).unwrap().into()
     });

@@ -75,7 +75,7 @@ pub(crate) fn removal_along(a: &PartAnalysis, up: Vector3) -> Result<Removal, St
     // panics on some inputs: the ledger) is refused, not the end of the
     // choice.
     let removal = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        crate::sequence::removals_along(a, &[up])
+        crate::turn::removals_along(a, &[up])
     }));
     match removal {
         Err(panic) => Err(format!("internal: {}", panic_text(&panic))),

@@ -2,7 +2,7 @@
 //! reaches stock − part, chosen greedily. The first is the direction the
 //! part's planar faces face that reaches the most material
 //! ([`crate::choice`]); while material is left that no set-up so far
-//! reaches (the residue, [`crate::sequence::residue`]), the next is the
+//! reaches (the residue, [`crate::turn::residue`]), the next is the
 //! candidate that leaves the least: the first's opposite, the directions
 //! the faces round the residue face (planar normals, axes of cylinders
 //! and cones both ways) and the first stock's other axes. Candidates are
@@ -14,7 +14,7 @@
 
 use crate::choice::{clean, up_candidates, UpCandidate, SAME_SETUP_COS};
 use crate::heights::HeightMap;
-use crate::sequence::{cut_after, residue, residue_after, residue_tolerance, Residue};
+use crate::turn::{cut_after, residue, residue_after, residue_tolerance, Residue};
 use serde::Serialize;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Point3, Vector3};
@@ -62,7 +62,7 @@ fn same(a: &Vector3, b: &Vector3) -> bool {
 }
 
 /// The removals of the set-ups along `ups`, in order (not yet
-/// [`crate::sequence::in_turn`]); when `proposed`, those [`propose`]s
+/// [`crate::turn::in_turn`]); when `proposed`, those [`propose`]s
 /// instead and why (`ups[0]` only says why when every candidate is
 /// refused).
 pub fn setups(
@@ -76,12 +76,9 @@ pub fn setups(
         if !removals.is_empty() {
             return Ok((Some(proposal), removals));
         }
-        return Ok((
-            Some(proposal),
-            crate::sequence::removals_along(a, &ups[..1])?,
-        ));
+        return Ok((Some(proposal), crate::turn::removals_along(a, &ups[..1])?));
     }
-    Ok((None, crate::sequence::removals_along(a, &ups)?))
+    Ok((None, crate::turn::removals_along(a, &ups)?))
 }
 
 /// The proposal and the removal of each set-up proposed (none when every
@@ -145,7 +142,12 @@ fn first_setup(a: &PartAnalysis, proposal: &mut Proposal) -> Option<Removal> {
             match crate::choice::removal_along(a, Vector3::from(c.up)) {
                 Err(why) => c.refused = Some(why),
                 Ok(r) => {
-                    let reached: f64 = crate::layers::reachable(&r).map(|b| b.volume).sum();
+                    let reached: f64 = r
+                        .blocks
+                        .iter()
+                        .filter(|b| b.reachable && !b.cleared)
+                        .map(|b| b.volume)
+                        .sum();
                     let tie = 1e-6 * r.stock_volume;
                     let better = best.as_ref().is_none_or(|(v, area, _)| {
                         reached > v + tie || (reached >= v - tie && c.facing_area_mm2 > *area)

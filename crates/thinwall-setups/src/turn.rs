@@ -73,13 +73,21 @@ pub fn in_turn(removals: &mut [Removal]) -> Vec<f64> {
     let mut recut = vec![0.0; removals.len()];
     for (k, recut) in recut.iter_mut().enumerate().skip(1) {
         let (earlier, rest) = removals.split_at_mut(k);
-        let later = &mut rest[0];
-        let gone = gone_shares(later, earlier);
-        for (b, g) in later.blocks.iter_mut().zip(gone) {
-            b.cleared = g == 1.0;
-            if g > 0.0 && g < 1.0 && b.reachable {
-                *recut += b.volume;
-            }
+        *recut = clear_taken(&mut rest[0], earlier);
+    }
+    recut
+}
+
+/// Mark the blocks of `later` the `earlier` set-ups took whole `cleared`;
+/// the volume of those it reaches that they took in part (cut whole
+/// again: at most that much is air), mm³.
+pub fn clear_taken(later: &mut Removal, earlier: &[Removal]) -> f64 {
+    let gone = gone_shares(later, earlier);
+    let mut recut = 0.0;
+    for (b, g) in later.blocks.iter_mut().zip(gone) {
+        b.cleared = g == 1.0;
+        if g > 0.0 && g < 1.0 && b.reachable {
+            recut += b.volume;
         }
     }
     recut
