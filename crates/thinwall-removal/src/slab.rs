@@ -65,12 +65,18 @@ pub fn cut(r: &Removal, b: &Block, cuts: &[f64], tol: f64) -> Vec<Slice> {
         // Lower end: the cut where the lower bound is under it, else the bound.
         let (under, over) = match below_c {
             None => (Side::Nothing, Side::All),
-            Some(c) => (side(&hl, c, bbox, true), side(&hl, c, bbox, false)),
+            Some(c) => (
+                side_in(&hl, lo_r, c, bbox, true),
+                side_in(&hl, lo_r, c, bbox, false),
+            ),
         };
         // Upper end: the cut where the upper bound is over it, else the bound.
         let (u_under, u_over) = match above_c {
             None => (Side::All, Side::Nothing),
-            Some(c) => (side(&hu, c, bbox, true), side(&hu, c, bbox, false)),
+            Some(c) => (
+                side_in(&hu, hi_r, c, bbox, true),
+                side_in(&hu, hi_r, c, bbox, false),
+            ),
         };
         let lower_cut = below_c.map(Bound::Flat);
         let upper_cut = above_c.map(Bound::Flat);
@@ -94,8 +100,8 @@ pub fn cut(r: &Removal, b: &Block, cuts: &[f64], tol: f64) -> Vec<Slice> {
                 volume,
             });
         };
-        let extra_u = below_c.map(|c| side(&hu, c, bbox, false));
-        let extra_l = above_c.map(|c| side(&hl, c, bbox, true));
+        let extra_u = below_c.map(|c| side_in(&hu, hi_r, c, bbox, false));
+        let extra_l = above_c.map(|c| side_in(&hl, lo_r, c, bbox, true));
         let all = Side::All;
         if let (Some(lc), Some(uc)) = (lower_cut, upper_cut) {
             add(&[&under, &u_over], lc, uc);
@@ -153,6 +159,30 @@ fn clip(region: &MultiPolygon<f64>, sides: &[&Side]) -> MultiPolygon<f64> {
     }
     out.0.retain(|p| super::flux::area(p) > 0.0);
     out
+}
+
+/// [`side`] of a bound whose heights lie in `range`: a cone, a surface of
+/// revolution or facets (no straight level lines) is wholly below or
+/// above a cut outside its range ([`cut`] moves any other cut to its
+/// end), so the side is all or nothing there.
+fn side_in(h: &Height, range: [f64; 2], c: f64, bbox: Rect<f64>, below: bool) -> Side {
+    let whole = match h {
+        Height::Cone { .. } | Height::Revolved { .. } | Height::Facets { .. } => {
+            if c >= range[1] {
+                Some(below)
+            } else if c < range[0] {
+                Some(!below)
+            } else {
+                None
+            }
+        }
+        _ => None,
+    };
+    match whole {
+        Some(true) => Side::All,
+        Some(false) => Side::Nothing,
+        None => side(h, c, bbox, below),
+    }
 }
 
 /// Where `h ≤ c` (`below`) or `h > c` (not `below`), as convex pieces of

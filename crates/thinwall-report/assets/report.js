@@ -421,17 +421,19 @@
   })();
 
   // ------------------------------------------------------------ the plan
-  function planTab() {
-    const plan = D.plan;
+  // One set-up's plan (`plan`: the page's, or one of its `then`) with its
+  // features' `volumes`, under the tab `name`.
+  function planTab(name, plan, volumes) {
     const feats = plan.machining_features;
     const order = plan.feature_sequence.order;
     const rank = new Map(order.map((id, k) => [id, k]));
     const byId = new Map(feats.map((f) => [f.id, f]));
     const sorted = order.map((id) => byId.get(id)).filter(Boolean);
     const vols = new Map();
-    for (const v of D.volumes) if (v.geometry) {
+    for (const v of volumes) if (v.geometry) {
       const s = shape(v.geometry, 0.45);
       s.tag = { kind: 'volume', id: v.id };
+      s.group.visible = false;
       viewer.add(s.group); viewer.pickables.push(s);
       vols.set(v.id, s);
     }
@@ -507,7 +509,7 @@
     function showFeature(f) {
       selected = { key: f.id };
       const rel = plan.feature_sequence.relations.filter((r) => r.before === f.id || r.after === f.id);
-      const vol = D.volumes.find((v) => v.id === f.id);
+      const vol = volumes.find((v) => v.id === f.id);
       details(f.id + ' — ' + f.size_class.replace('_', ' '), [
         ['order', (rank.get(f.id) + 1) + ' of ' + sorted.length], ['owner', f.owner], ['side', f.side === undefined ? null : String(f.side + 1)],
         ['step (fig. 4.1)', f.step === undefined ? null : String(f.step)], ['type', f.type], ['product adjacency', f.product_adjacency],
@@ -521,18 +523,23 @@
         ...rel.slice(0, 30).map((r) => el('div', null, link(r.before === f.id ? '→ ' + r.after : '← ' + r.before, () => go(rank.get(r.before === f.id ? r.after : r.before))), ' ', el('span', { class: 'muted' }, r.why))),
       ]);
     }
-    box.append(el('h4', null, 'Machining-feature order: step through it'),
+    const controls = el('div', null, el('h4', null, 'Machining-feature order: step through it'),
       el('div', { class: 'controls' },
         el('button', { onclick: () => go(first()), title: 'first' }, '«'), el('button', { onclick: () => go(next(-1)) }, '◀'), slider,
         el('button', { onclick: () => go(next(1)) }, '▶'), el('button', { onclick: () => go(sorted.length), title: 'all removed' }, '»'), play, wallSel),
       now,
       el('div', { class: 'muted' }, plan.removal.unavailable ? 'No removal plan: ' + plan.removal.unavailable :
-        `Volumes still to remove are drawn in their class colour, the current one in orange, numbered in the order (with a wall chosen, by their step in its approach, as Popma fig. 4.1). Stock ${plan.removal.stock}, ${fmt(plan.removal.removed_volume_mm3, 0)} mm³ removed in ${feats.length} features.`));
+        `Up ${vec(plan.up)}. Volumes still to remove are drawn in their class colour, the current one in orange, numbered in the order (with a wall chosen, by their step in its approach, as Popma fig. 4.1). Stock ${plan.removal.stock}, ${fmt(plan.removal.removed_volume_mm3, 0)} mm³ removed in ${feats.length} features` +
+        (plan.removal.cleared_before_mm3 ? `; ${fmt(plan.removal.cleared_before_mm3, 0)} mm³ taken by the set-ups before` : '') +
+        (plan.supported_webs ? `; webs supported by the material under them (no step layers here): ${plan.supported_webs.join(' ')}` : '') + '.'),
+      D.plan.then && plan === D.plan ? el('div', { class: 'muted' }, (D.plan.proposal ? 'Set-ups proposed: ' + D.plan.proposal.why.join(' · ') + ' ' : '') + (D.plan.residue ? 'No set-up reaches ' + fmt(D.plan.residue.volume_mm3, 1) + ' mm³.' : '')) : '');
+    controls.hidden = true;
+    box.append(controls);
     const legendItems = ['large', 'small', 'bulk', 'other_setup', 'detail'].filter((c) => feats.some((f) => f.size_class === c)).map((c) => [c.replace('_', ' '), P['plan.' + c]]).concat([['current', P['plan.current']]]);
     return {
-      name: 'Plan order',
-      enter() { part.group.visible = state.part; for (const s of vols.values()) s.group.visible = true; labels.visible = true; legend(legendItems); go(step); },
-      leave() { for (const s of vols.values()) s.group.visible = false; labels.visible = false; },
+      name,
+      enter() { controls.hidden = false; part.group.visible = state.part; for (const s of vols.values()) s.group.visible = true; labels.visible = true; legend(legendItems); go(step); },
+      leave() { controls.hidden = true; for (const s of vols.values()) s.group.visible = false; labels.visible = false; },
       list() { redraw(); },
       paint() { redraw(); },
       select(id) { if (rank.has(id)) go(rank.get(id)); },
@@ -799,7 +806,9 @@
       () => [...new Set(mach.map((f) => f.kind))].sort().map((k) => [k, P['machining.' + k]])));
   }
   if (D.view === 'plan') {
-    tabs.push(planTab());
+    const sets = D.plan.then ? D.plan.then.length + 1 : 1;
+    tabs.push(planTab(sets > 1 ? 'Set-up 1 order' : 'Plan order', D.plan, D.volumes));
+    (D.plan.then || []).forEach((later, k) => tabs.push(planTab('Set-up ' + (k + 2) + ' order', later, D.later_volumes[k])));
     tabs.push(featureTab('Stiffness features', stiff, (f) => P['stiffness.' + f.kind] || P.other, stiffRows, kindLegend));
   }
   if (D.view === 'classification') tabs.push(classificationTab());

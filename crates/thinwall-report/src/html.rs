@@ -66,6 +66,10 @@ enum View<'a> {
     Recognition,
     Plan {
         plan: serde_json::Value,
+        /// Per set-up after the first (`plan.then`), its features'
+        /// volumes (the first set-up's are the page's `volumes`).
+        #[serde(skip_serializing_if = "Vec::is_empty")]
+        later_volumes: Vec<Vec<VolumeGeometry>>,
     },
     Classification {
         classification: &'a ClassificationReport,
@@ -158,8 +162,25 @@ pub fn recognition_page(title: &str, a: &PartAnalysis, report: &RecognitionRepor
 /// A plan as a page: the part coloured by the recognition, every machining
 /// feature's solids numbered in the plan's order.
 pub fn plan_page(title: &str, a: &PartAnalysis, report: &RecognitionReport, plan: &Plan) -> String {
-    let volumes = plan
-        .machining_features
+    let volumes = plan_volumes(plan);
+    let later_volumes = plan.then.iter().map(plan_volumes).collect();
+    let plan = serde_json::to_value(plan).unwrap_or(serde_json::Value::Null);
+    page(
+        title,
+        a,
+        Some(report),
+        View::Plan {
+            plan,
+            later_volumes,
+        },
+        volumes,
+    )
+}
+
+/// One set-up's machining features as pictures (a note where its solids
+/// are not written yet).
+fn plan_volumes(plan: &Plan) -> Vec<VolumeGeometry> {
+    plan.machining_features
         .iter()
         .map(|f| match thinwall_plan::volumes::feature_part(plan, f) {
             Some(p) => VolumeGeometry {
@@ -173,9 +194,7 @@ pub fn plan_page(title: &str, a: &PartAnalysis, report: &RecognitionReport, plan
                 note: Some("its solids (over a cone) are not written yet".to_string()),
             },
         })
-        .collect();
-    let plan = serde_json::to_value(plan).unwrap_or(serde_json::Value::Null);
-    page(title, a, Some(report), View::Plan { plan }, volumes)
+        .collect()
 }
 
 /// A classification as a page: the part, and every volume (`volumes`, in
