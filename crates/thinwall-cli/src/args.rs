@@ -137,7 +137,8 @@ pub struct PlanArgs {
     /// A TOML file of sequence rules (default: the shipped five).
     #[arg(long)]
     pub rules: Option<PathBuf>,
-    /// Write each step-approach layer as a STEP solid (`V1.step`, …) here.
+    /// Write each machining feature as a STEP solid (`V1.step`, …) here;
+    /// a later set-up's into `setup-2/`, ….
     #[arg(long)]
     pub volumes_dir: Option<PathBuf>,
     /// Output format.

@@ -189,9 +189,19 @@ fn setup_along(base: &Setup, r: &thinwall_plan::removal::Removal) -> Setup {
 }
 
 /// Write each machining feature of `plan` as a STEP solid (`V1.step`, …)
-/// into `dir`; the number of solids not written (bounded by a cylinder or
-/// a cone: their volumes are in the plan).
+/// into `dir`, and those of each later set-up (`plan.then`) into
+/// `dir/setup-2`, …; the number of solids not written (bounded by a
+/// cylinder or a cone: their volumes are in the plan).
 pub fn write_volumes(plan: &Plan, dir: &Path) -> Result<usize, StudyError> {
+    let mut skipped = write_setup_volumes(plan, dir)?;
+    for (k, later) in plan.then.iter().enumerate() {
+        skipped += write_setup_volumes(later, &dir.join(format!("setup-{}", k + 2)))?;
+    }
+    Ok(skipped)
+}
+
+/// [`write_volumes`] of one set-up's plan.
+fn write_setup_volumes(plan: &Plan, dir: &Path) -> Result<usize, StudyError> {
     let io = |p: &Path, e: std::io::Error| StudyError::Io {
         path: p.display().to_string(),
         message: e.to_string(),
