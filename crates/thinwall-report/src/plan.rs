@@ -120,7 +120,7 @@ pub fn to_text(plan: &Plan) -> String {
     }
     let mut s = String::new();
     if let Some(p) = &plan.proposal {
-        crate::operations::proposal_text(&mut s, p);
+        crate::setups::proposal_text(&mut s, p);
     }
     let n = 1 + plan.then.len();
     for (k, p) in std::iter::once(plan).chain(&plan.then).enumerate() {
@@ -136,7 +136,7 @@ pub fn to_text(plan: &Plan) -> String {
         s.push_str(&setup_text(p));
     }
     if let Some(r) = &plan.residue {
-        crate::operations::residue_text(&mut s, r);
+        crate::setups::residue_text(&mut s, r);
     }
     s
 }
