@@ -8,7 +8,9 @@
 //! set-up machines what another already took; a thin web keeps the
 //! support of the material under it in the first set-up (no step layers
 //! there) and gets its layers in the set-up that mills its last side; the
-//! same ups given in order give the same plans.
+//! same ups given in order give the same plans; operations along each
+//! set-up's plan (`--by-feature`) keep its relations and drill each hole
+//! once.
 
 mod common;
 
@@ -226,5 +228,99 @@ fn one_set_up_plans_of_curved_parts_add_up() {
             path.display(),
             precision(&plan)
         );
+    }
+}
+
+/// Operations along the plans of set-ups in turn (`operations
+/// --by-feature` without `--up`) on the double-sided panels: two set-ups
+/// from opposite sides, each with operations on its own plan's features
+/// only (none on a feature another set-up's plan holds), every relation
+/// of its plan kept in its order, its layers' shares, rest and drilled
+/// areas making up each section, no hole drilled twice.
+#[test]
+fn operations_follow_each_set_ups_plan() {
+    for path in common::generated_parts("THINWALL_POCKETS_DIR", "pockets") {
+        let truth: PanelTruth = serde_json::from_str(
+            &std::fs::read_to_string(path.with_extension("truth.json")).unwrap(),
+        )
+        .unwrap();
+        if !truth.both_sides {
+            continue;
+        }
+        let name = path.display().to_string();
+        let loaded = LoadedPart::read_file(&path).unwrap();
+        let study = Study::new(&loaded);
+        let mut req = thinwall_study::OperationsRequest::new(Default::default());
+        req.by_feature = true;
+        req.choose_up = true;
+        let report = thinwall_study::operations(&study, &req)
+            .unwrap_or_else(|e| panic!("{name}: {e}"))
+            .report;
+        assert_eq!(report.then.len(), 1, "{name}");
+        let plan = plan_of(&path, None, &[]);
+        let sheets = std::iter::once((&report.setup, report.frame))
+            .chain(report.then.iter().map(|l| (&l.setup, l.frame)));
+        // Each hole drilled, by its axis's point on the frame's plane,
+        // in the part's coordinates.
+        let mut drilled: Vec<Vector3<f64>> = Vec::new();
+        for (k, ((ops, frame), plan)) in sheets.zip(setups(&plan)).enumerate() {
+            let what = format!("{name} set-up {}", k + 1);
+            assert!(!ops.operations.is_empty(), "{what}");
+            let steps = |id: &str| -> Vec<usize> {
+                ops.operations
+                    .iter()
+                    .filter(|o| o.feature.as_deref() == Some(id))
+                    .map(|o| o.step)
+                    .collect()
+            };
+            for o in ops.operations.iter().filter_map(|o| o.feature.as_deref()) {
+                assert!(
+                    plan.machining_features.iter().any(|f| f.id == o),
+                    "{what}: {o} is no feature of its plan"
+                );
+            }
+            for r in &plan.feature_sequence.relations {
+                let (a, b) = (steps(&r.before), steps(&r.after));
+                if let (Some(last), Some(first)) = (a.iter().max(), b.iter().min()) {
+                    assert!(
+                        last < first,
+                        "{what}: {} before {} broken",
+                        r.before,
+                        r.after
+                    );
+                }
+            }
+            for (l, fts) in ops.layers.iter().zip(&ops.field_tools) {
+                let cleared: f64 = fts
+                    .iter()
+                    .flat_map(|ft| &ft.shares)
+                    .map(|s| s.cleared_mm2)
+                    .sum();
+                let rest: f64 = fts.iter().map(|ft| ft.rest_mm2).sum();
+                let holes: f64 = l
+                    .fields
+                    .iter()
+                    .zip(fts)
+                    .filter(|(_, ft)| ft.drilled.is_some())
+                    .map(|(f, _)| f.area_mm2)
+                    .sum();
+                assert!(
+                    (cleared + rest + holes - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
+                    "{what}: layer {}",
+                    l.index
+                );
+            }
+            let [o, x, y, z] = frame.map(Vector3::from);
+            for h in ops.holes.iter().filter(|h| h.drill.is_some()) {
+                let at = o + x * h.centre[0] + y * h.centre[1];
+                // Its axis: any point of it off this one by a multiple of z.
+                let same = |p: &Vector3<f64>| {
+                    let d = p - at;
+                    (d - z * d.dot(&z)).norm() < 1e-6
+                };
+                assert!(!drilled.iter().any(same), "{what}: {} drilled twice", h.id);
+                drilled.push(at);
+            }
+        }
     }
 }

@@ -255,7 +255,7 @@ pub struct OperationsArgs {
     /// Then the set-up from the opposite side (up reversed; +Z without
     /// --up), after the first: what it cannot reach under the part (a web
     /// pocketed from both sides), its through holes and the stock round
-    /// the part already gone. Not with --by-feature.
+    /// the part already gone.
     #[arg(long)]
     pub both_sides: bool,
     /// Propose the set-ups (the default without --up): the first, of the

@@ -117,9 +117,8 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     request.by_feature = a.by_feature;
     request.both_sides = a.both_sides;
     request.later_ups = a.up.iter().skip(1).copied().collect();
-    // Without an up the set-ups are proposed (not along the plan, which
-    // plans one set-up).
-    request.choose_up = a.choose_up || (a.up.is_empty() && !a.both_sides && !a.by_feature);
+    // Without an up the set-ups are proposed.
+    request.choose_up = a.choose_up || (a.up.is_empty() && !a.both_sides);
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
     let operated = study::operations(&limits::study(&loaded), &request)?;

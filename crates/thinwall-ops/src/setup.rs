@@ -113,6 +113,24 @@ pub fn along_plan(
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
 ) -> Result<(Frame, SetupOperations), OpsError> {
+    let (frame, _, _) = frame_for(a, lib)?;
+    let (ops, _) = along_plan_in_turn(a, plan, features, &[], lib, axial_depth_mm)?;
+    Ok((frame, ops))
+}
+
+/// [`along_plan`] for one set-up of several planned in turn (its `plan`
+/// leaves out what the set-ups before took,
+/// `thinwall_plan::plan_in_turn`): a hole whose faces an earlier set-up
+/// drilled (`drilled_before`) is not drilled again; the faces of the holes
+/// drilled here are returned.
+pub fn along_plan_in_turn(
+    a: &PartAnalysis,
+    plan: &thinwall_plan::Plan,
+    features: &[MachiningFeature],
+    drilled_before: &[u64],
+    lib: &ToolLibrary,
+    axial_depth_mm: Option<f64>,
+) -> Result<(SetupOperations, Vec<u64>), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     if let Some(why) = &plan.removal.unavailable {
         return Err(OpsError::NoPlan(why.clone()));
@@ -122,12 +140,24 @@ pub fn along_plan(
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
-    let holes = hole_sites(features, &frame, lib);
+    let here: Vec<MachiningFeature> = features
+        .iter()
+        .filter(|m| !m.faces.iter().any(|f| drilled_before.contains(f)))
+        .cloned()
+        .collect();
+    let holes = hole_sites(&here, &frame, lib);
     let mut ops =
         crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
     ops.meshed = plan.removal.meshed.clone();
-    finish_by_radii(&mut ops, a, features, &frame, lib);
-    Ok((frame, ops))
+    ops.cleared_before_mm3 = plan.removal.cleared_before_mm3;
+    ops.recut_mm3 = plan.removal.recut_mm3;
+    finish_by_radii(&mut ops, a, &here, &frame, lib);
+    let drilled: Vec<u64> = here
+        .iter()
+        .filter(|m| holes.iter().any(|h| h.id == m.id.to_string()))
+        .flat_map(|m| m.faces.iter().copied())
+        .collect();
+    Ok((ops, drilled))
 }
 
 /// The features finished by their radii and the holes' stages, their

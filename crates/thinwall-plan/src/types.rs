@@ -300,6 +300,19 @@ pub struct Plan {
     pub queries: Sequence,
 }
 
+impl Plan {
+    /// The removal frame (`frame`) as a frame.
+    pub fn removal_frame(&self) -> thinwall_geom::Frame {
+        let f = self.frame;
+        thinwall_geom::Frame {
+            origin: f[0].into(),
+            x: f[1].into(),
+            y: f[2].into(),
+            z: f[3].into(),
+        }
+    }
+}
+
 /// The removal's figures, or why there is none.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct RemovalSummary {

@@ -86,7 +86,8 @@ impl OperationsReport {
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),
-                "set-ups after the first are planned on the whole removal only, and their layers do not yet size a web's support".into(),
+                "a web keeps the support of the material under it (no step layers while a later set-up's material is there) with --by-feature only, along each set-up's plan".into(),
+                "with --by-feature a later set-up's contours treat what earlier set-ups took as walls, not open (no tool comes in over it)".into(),
             ],
         }
     }

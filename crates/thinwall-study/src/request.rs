@@ -194,12 +194,6 @@ impl OperationsRequest {
                 "the up is chosen in the part's own coordinates: not with a placement",
             ));
         }
-        if self.several() && self.by_feature {
-            return Err(StudyError::invalid(
-                if self.both_sides { "both_sides" } else { "up" },
-                "set-ups after the first are planned on the whole removal, not along the plan (by_feature) yet",
-            ));
-        }
         if !self.later_ups.is_empty() && (self.choose_up || self.setup.placement.is_some()) {
             return Err(StudyError::invalid(
                 "up",

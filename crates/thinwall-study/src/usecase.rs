@@ -307,6 +307,9 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
         ups.push(req.setup.up.map(|c| -c));
     }
     ups.extend(&req.later_ups);
+    if req.by_feature {
+        return along_plans(study, req, ups);
+    }
     let (proposal, mut removals) =
         thinwall_setups::proposal::setups(&first.analysis, &ups, req.choose_up)
             .map_err(OpsError::from)?;
@@ -342,6 +345,58 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     report.residue = Some(residue);
     report.proposal = proposal;
     Ok(Operated { at, report })
+}
+
+/// Several set-ups in turn along their plans ([`plan_in_turn`]): each
+/// machining feature of each set-up's plan layered and tooled on its own,
+/// in an order that keeps the plan's relations; each hole drilled in the
+/// first set-up that drills it.
+fn along_plans<'p>(
+    study: &Study<'p>,
+    req: &OperationsRequest,
+    ups: Vec<[f64; 3]>,
+) -> Result<Operated<'p>, StudyError> {
+    let recognize = RecognizeRequest {
+        setup: req.setup.clone(),
+        ..Default::default()
+    };
+    let mut plan_req = PlanRequest::new(recognize, RuleSet::default_rules());
+    plan_req.later_ups = ups[1..].to_vec();
+    plan_req.propose = req.choose_up;
+    let planned = plan_in_turn(study, &plan_req)?;
+    let ats = std::iter::once(&planned.at).chain(planned.later.iter().map(|(a, _)| a));
+    let plans = std::iter::once(planned.plan.as_ref()).chain(&planned.plan.then);
+    let mut drilled: Vec<u64> = Vec::new();
+    let mut sheets = Vec::new();
+    for (at, plan) in ats.zip(plans) {
+        let setup = Setup {
+            up: plan.up,
+            ..req.setup.clone()
+        };
+        let holes = found_in_setup(study, at, &setup)?;
+        let (ops, here) = thinwall_ops::setup::along_plan_in_turn(
+            &at.analysis,
+            plan,
+            &holes.machining,
+            &drilled,
+            &req.tools,
+            req.axial_depth,
+        )?;
+        drilled.extend(here);
+        sheets.push((plan.up, plan.removal_frame(), ops));
+    }
+    let mut sheets = sheets.into_iter();
+    let (up, frame, ops) = sheets.next().expect("a set-up at least");
+    let mut report = OperationsReport::new(study.name(), up, &frame, req.tools.clone(), ops);
+    report.then = sheets
+        .map(|(up, frame, ops)| LaterSetup::new(up, &frame, ops))
+        .collect();
+    report.residue = planned.plan.residue.clone();
+    report.proposal = planned.plan.proposal.clone();
+    Ok(Operated {
+        at: planned.at.clone(),
+        report,
+    })
 }
 
 /// The recognition with the machining features found in `setup` (its up
