@@ -224,7 +224,8 @@ pub unsafe extern "C" fn tw_plan_setup_count(
         if count.is_null() {
             return Err(null("count"));
         }
-        *count = 1 + (&(*plan).plan).then.len();
+        let p = &*plan;
+        *count = 1 + p.plan.then.len();
         Ok(())
     })
 }
