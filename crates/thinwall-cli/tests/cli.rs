@@ -980,16 +980,17 @@ fn operations_sheet_json_and_errors() {
     assert!(plain["setup"]["operations"].as_array().unwrap().is_empty());
     assert!(plain["setup"]["layers"].as_array().unwrap().is_empty());
 
-    // The second side is planned on the whole removal only: along the
-    // plan it is a request error (exit 2) naming the option.
-    let both = bin()
-        .arg("operations")
-        .arg(&pocket)
-        .args(["--by-feature", "--both-sides"])
-        .output()
-        .unwrap();
-    assert_eq!(both.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&both.stderr).contains("both_sides"));
+    // Both sides along their plans: the opposite set-up's plan has its
+    // own features, none of them what the first took.
+    let both = json_of(
+        bin()
+            .arg("operations")
+            .arg(&pocket)
+            .args(["--by-feature", "--both-sides", "--format", "json"]),
+    );
+    assert_eq!(both["then"].as_array().map(Vec::len), Some(1));
+    assert_eq!(both["then"][0]["up"], serde_json::json!([0.0, 0.0, -1.0]));
+    assert!(both["then"][0]["setup"]["cleared_before_mm3"].as_f64().unwrap() > 0.0);
     // A one-sided part: the second side has nothing left to cut.
     let second =
         json_of(
