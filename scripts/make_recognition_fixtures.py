@@ -298,6 +298,30 @@ def drafted_panel(deg):
                 drafted_prism(1.75, 3.5, 3.5 - taper, 3, DRAFT_H))
 
 
+def thin_top_panel(deg, top=0.9):
+    """A 3 mm web with a drafted rib in the middle and a drafted flange on
+    its y = 0 edge, both 30 high, each side leaning `deg` towards the other
+    down to a `top` mm thin top edge (the foot as thick as the draft
+    makes it: 3 mm at 2°, 6.15 mm at 5°)."""
+    taper = 2 * DRAFT_H * math.tan(math.radians(deg))
+    foot = top + taper
+    return fuse(box(0, 0, 0, 200, 100, 3),
+                drafted_prism(50, foot, top, 3, DRAFT_H),
+                drafted_prism(foot / 2, foot, top, 3, DRAFT_H))
+
+
+def thin_top_expected(deg, top=0.9):
+    def expect(fs):
+        c = lambda f, i: f["centroid"][i]
+        side = lambda f: f["normal"] is not None and abs(f["normal"][1]) > 0.9 and c(f, 2) > 3 + 1e-6
+        return [
+            wall("web", lambda f: (n_is(f, [0, 0, -1]) and near(c(f, 2), 0)) or (n_is(f, [0, 0, 1]) and near(c(f, 2), 3)), thickness=3.0, fs=fs, name="W"),
+            wall("rib", lambda f: side(f) and 40 < c(f, 1) < 60, thickness=top, fs=fs, name="R"),
+            wall("flange", lambda f: side(f) and c(f, 1) < 10, thickness=top, fs=fs, name="F"),
+        ]
+    return expect
+
+
 def drafted_expected(deg):
     taper = 2 * DRAFT_H * math.tan(math.radians(deg))
 
@@ -443,6 +467,8 @@ def main():
         "drafted_05": (lambda: drafted_panel(0.5), drafted_expected(0.5), "a drafted rib and flange, 0.5° per side"),
         "drafted_1": (lambda: drafted_panel(1.0), drafted_expected(1.0), "a drafted rib and flange, 1° per side"),
         "drafted_2": (lambda: drafted_panel(2.0), drafted_expected(2.0), "a drafted rib and flange, 2° per side"),
+        "drafted_thin_2": (lambda: thin_top_panel(2.0), thin_top_expected(2.0), "a drafted rib and flange, 2° per side, 3 mm at the foot and 0.9 mm at the top"),
+        "drafted_thin_5": (lambda: thin_top_panel(5.0), thin_top_expected(5.0), "a drafted rib and flange, 5° per side, 6.15 mm at the foot and 0.9 mm at the top"),
         "pocketed_rib": (pocketed_rib, pocketed_expected, "a rib with a blind pocket in one side and a rectangular window through it"),
         "c_frame": (c_frame, c_frame_expected, "an upright C-section frame with stiffeners and large holes in the web"),
         "thin_plate": (thin_plate, plate_expected, "a free 2 mm plate: a thin wall standing on nothing"),
@@ -460,7 +486,8 @@ def main():
         json.dump(doc, open(os.path.join(out, name + ".expected.json"), "w"), indent=1)
         print(name, len(fs), "faces,", len(expected), "features")
     for base_name, build in [("flange_cutouts", flange_cutouts), ("drafted_05", lambda: drafted_panel(0.5)), ("drafted_1", lambda: drafted_panel(1.0)),
-                             ("drafted_2", lambda: drafted_panel(2.0))]:
+                             ("drafted_2", lambda: drafted_panel(2.0)), ("drafted_thin_2", lambda: thin_top_panel(2.0)),
+                             ("drafted_thin_5", lambda: thin_top_panel(5.0))]:
         if only and base_name + "_turned" not in only:
             continue
         write_turned(out, base_name, build())
