@@ -398,3 +398,37 @@ fn a_chamfer_reaches_its_leg() {
         assert!((bevel.depth - 50.0).abs() < 0.01, "{}", bevel.depth);
     }
 }
+
+/// A cut-out through a thin flange (10 mm wide, the flange 1.2 mm thick)
+/// is a through slot whose largest tool is its width across, 10 mm: the
+/// tool overhangs the flange's faces, where the slot's floor drops away,
+/// and only the cut-out's sides bound it (once the flange's thickness, 1.2
+/// mm, was taken). As built and turned (its up turned alike).
+#[test]
+fn a_cut_out_through_a_flange_takes_a_tool_its_width_across() {
+    for name in ["flange_cutouts", "flange_cutouts_turned"] {
+        let dir = common::root().join("fixtures/recognition");
+        let expected: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(dir.join(format!("{name}.expected.json"))).unwrap(),
+        )
+        .unwrap();
+        let up: Vec<f64> = serde_json::from_value(expected["up"].clone()).unwrap();
+        let (part, _) = thinwall_step::read_file(dir.join(format!("{name}.step"))).unwrap();
+        let setup =
+            Setup::new([up[0], up[1], up[2]], thinwall_analysis::Machine::ThreeAxis).unwrap();
+        let m = recognize(&PartAnalysis::new(&part, setup));
+        let cutouts: Vec<&MachiningFeature> = m
+            .iter()
+            .filter(|f| f.kind == MachiningKind::Slot && (f.width - 1.2).abs() < 1e-6)
+            .collect();
+        assert_eq!(cutouts.len(), 3, "{name}: {m:?}");
+        for f in cutouts {
+            let tool = f.largest_tool_diameter.expect("a tool bound");
+            assert!(
+                (tool - 10.0).abs() < 1e-3,
+                "{name} {}: tool <= {tool}",
+                f.id
+            );
+        }
+    }
+}

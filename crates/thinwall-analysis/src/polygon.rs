@@ -250,28 +250,57 @@ pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
 /// Radius of the largest circle inside `region` (approximate: a grid
 /// search refined around the best point), mm.
 pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
-    use geo::{BoundingRect, Contains, Distance, Euclidean, Point};
-    let Some(b) = region.bounding_rect() else {
-        return 0.0;
-    };
-    // The distance to the boundary at (x, y) when it exceeds `floor`, else
-    // 0 (a point outside counts 0). Stopping once a ring comes within
-    // `floor` changes nothing: such a point cannot be the best.
-    let dist = |x: f64, y: f64, floor: f64| -> f64 {
-        let p = Point::new(x, y);
-        if !region.contains(&p) {
-            return 0.0;
-        }
+    use geo::{Distance, Euclidean};
+    farthest(region, |p, floor| {
         let mut d = f64::INFINITY;
         for poly in &region.0 {
             for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
-                d = d.min(Euclidean.distance(&p, ring));
+                d = d.min(Euclidean.distance(p, ring));
                 if d <= floor {
                     return 0.0;
                 }
             }
         }
         d
+    })
+}
+
+/// Radius of the largest circle centred in `region` that crosses none of
+/// `walls` (polylines in the region's plane), mm: where only some of a
+/// floor's edges are walls (a face rises there) and the others open (the
+/// floor drops away), the tool may overhang the open ones. Unbounded
+/// (infinite) without walls. Approximate as [`inscribed_radius`].
+pub fn clearance_radius(region: &MultiPolygon<f64>, walls: &[geo::LineString<f64>]) -> f64 {
+    use geo::{Distance, Euclidean};
+    if walls.is_empty() {
+        return f64::INFINITY;
+    }
+    farthest(region, |p, floor| {
+        let mut d = f64::INFINITY;
+        for w in walls {
+            d = d.min(Euclidean.distance(p, w));
+            if d <= floor {
+                return 0.0;
+            }
+        }
+        d
+    })
+}
+
+/// The largest `dist` over points of `region` (a grid search refined
+/// around the best point); `dist(p, floor)` may answer 0 as soon as it
+/// knows it is at most `floor` (such a point cannot be the best).
+fn farthest(region: &MultiPolygon<f64>, dist: impl Fn(&geo::Point<f64>, f64) -> f64) -> f64 {
+    use geo::{BoundingRect, Contains, Point};
+    let Some(b) = region.bounding_rect() else {
+        return 0.0;
+    };
+    let at = |x: f64, y: f64, floor: f64| -> f64 {
+        let p = Point::new(x, y);
+        if !region.contains(&p) {
+            return 0.0;
+        }
+        dist(&p, floor)
     };
     let n = 12;
     let (mut w, mut h) = (b.width(), b.height());
@@ -282,7 +311,7 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
                 b.min().x + w * i as f64 / n as f64,
                 b.min().y + h * j as f64 / n as f64,
             );
-            let d = dist(x, y, best.2);
+            let d = at(x, y, best.2);
             if d > best.2 {
                 best = (x, y, d);
             }
@@ -296,7 +325,7 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
             for j in 0..=n {
                 let x = cx - w / 2.0 + w * i as f64 / n as f64;
                 let y = cy - h / 2.0 + h * j as f64 / n as f64;
-                let d = dist(x, y, best.2);
+                let d = at(x, y, best.2);
                 if d > best.2 {
                     best = (x, y, d);
                 }
@@ -304,6 +333,20 @@ pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
         }
     }
     best.2
+}
+
+/// The points of edge `e` from its start to its end: its ends when
+/// straight, a few per knot span when curved (as a face's loops).
+pub fn edge_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3> {
+    let edge = part.edge(e);
+    match &edge.nurbs {
+        Some(c) => coedge_params(c, true, SAMPLES_PER_SPAN)
+            .0
+            .into_iter()
+            .map(|t| c.point(t))
+            .collect(),
+        None => vec![part.vertex(edge.start).point, part.vertex(edge.end).point],
+    }
 }
 
 /// `a ∩ b`, empty when either is empty.

@@ -982,15 +982,20 @@ fn operations_sheet_json_and_errors() {
 
     // Both sides along their plans: the opposite set-up's plan has its
     // own features, none of them what the first took.
-    let both = json_of(
-        bin()
-            .arg("operations")
-            .arg(&pocket)
-            .args(["--by-feature", "--both-sides", "--format", "json"]),
-    );
+    let both = json_of(bin().arg("operations").arg(&pocket).args([
+        "--by-feature",
+        "--both-sides",
+        "--format",
+        "json",
+    ]));
     assert_eq!(both["then"].as_array().map(Vec::len), Some(1));
     assert_eq!(both["then"][0]["up"], serde_json::json!([0.0, 0.0, -1.0]));
-    assert!(both["then"][0]["setup"]["cleared_before_mm3"].as_f64().unwrap() > 0.0);
+    assert!(
+        both["then"][0]["setup"]["cleared_before_mm3"]
+            .as_f64()
+            .unwrap()
+            > 0.0
+    );
     // A one-sided part: the second side has nothing left to cut.
     let second =
         json_of(

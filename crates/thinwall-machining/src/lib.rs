@@ -65,7 +65,7 @@ pub use stock::Stock;
 use geo::{Area, MultiPolygon};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
-use thinwall_analysis::polygon::{inscribed_radius, min_rect_sides};
+use thinwall_analysis::polygon::{clearance_radius, inscribed_radius, min_rect_sides};
 use thinwall_analysis::{Catalog, FeatureId, MachiningId, MachiningKind, PartAnalysis, Profile};
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::{FEATURE_PARALLEL_DEG, NEAR_PARALLEL_EPS, UNIT_PARALLEL_EPS};
@@ -610,7 +610,56 @@ fn largest_tool(
             .flat_map(|p| p.0)
             .collect(),
     );
-    (floors.unsigned_area() > 0.0).then(|| 2.0 * inscribed_radius(&floors))
+    if floors.unsigned_area() <= 0.0 {
+        return None;
+    }
+    // Each floor in its own frame: the largest disk centred on it that
+    // crosses none of its walls (the tool may overhang its open edges,
+    // where it drops away, as a cut-out through a flange); the tool that
+    // reaches every floor is no wider than the least of them.
+    let radius = bottom
+        .iter()
+        .filter_map(|&f| {
+            let floor = a.polygon(f)?;
+            let walls = floor_walls(a, f);
+            let clear = clearance_radius(&floor, &walls);
+            Some(if clear.is_finite() {
+                clear
+            } else {
+                inscribed_radius(&floor)
+            })
+        })
+        .fold(f64::INFINITY, f64::min);
+    radius.is_finite().then_some(2.0 * radius)
+}
+
+/// The walls of floor `f`: every edge but a convex one (a face rises
+/// there, or a fillet blends into one; only where the floor drops away is
+/// it open), as polylines in its frame (the frame of
+/// `PartAnalysis::polygon`).
+fn floor_walls(a: &PartAnalysis, f: FaceId) -> Vec<geo::LineString<f64>> {
+    let g = a.graph();
+    let mut out = Vec::new();
+    if let Some(p) = a.planar(f) {
+        for (_, adj) in g.neighbours(f) {
+            for &k in &adj.edges {
+                let e = &g.edges[k];
+                if e.convexity == Convexity::Convex {
+                    continue;
+                }
+                let pts = thinwall_analysis::polygon::edge_points(a.part(), e.edge);
+                out.push(geo::LineString::from(
+                    pts.iter()
+                        .map(|q| {
+                            let l = p.frame.to_local(q);
+                            (l.x, l.y)
+                        })
+                        .collect::<Vec<_>>(),
+                ));
+            }
+        }
+    }
+    out
 }
 
 fn depression_feature(

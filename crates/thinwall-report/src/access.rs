@@ -185,7 +185,7 @@ impl AccessReport {
         for (id, sides) in &self.wall_sides {
             for (k, side) in sides.iter().enumerate() {
                 if let Some(r) = &side.reason {
-                    let _ = writeln!(s, "  {id} side {k}: {r}");
+                    let _ = writeln!(s, "  {id} side {}: {r}", k + 1);
                 }
             }
         }

@@ -48,7 +48,7 @@ fn removal_text(plan: &Plan, s: &mut String) {
         };
         let owner = f.owner.map(|o| o.to_string()).unwrap_or_else(|| "-".into());
         let place = match (f.side, f.step) {
-            (Some(side), Some(step)) => format!("side {side} step {step}"),
+            (Some(side), Some(step)) => format!("side {} step {step}", side + 1),
             _ => String::new(),
         };
         let reach = match (f.reachable, f.access) {
@@ -109,6 +109,12 @@ fn removal_text(plan: &Plan, s: &mut String) {
 pub fn to_json(plan: &Plan) -> String {
     serde_json::to_string_pretty(plan).expect("a plan serialises")
 }
+
+/// What the walls' sizes and the layers' words mean.
+pub const SIZES_LEGEND: &str = "  (the step approach, Popma §4.1.1: the material beside a thin wall is taken in layers \
+B_RF wide, large ones H_RF tall on one side and small ones h_RF tall on the other, alternately, so the wall \
+stays supported below each cut; large layers go on the side facing up, or with more stiffness features \
+standing on it; sides are numbered 1 and 2; a web is face milled and its figures are across its span)";
 
 /// A table a planner can read: the order, the constraints, the
 /// rejected candidates; over several set-ups, why they were proposed,
@@ -176,6 +182,9 @@ fn setup_text(plan: &Plan) -> String {
             w.sizes.note
         );
     }
+    if !plan.walls.is_empty() {
+        let _ = writeln!(s, "{SIZES_LEGEND}");
+    }
     if !plan.adaptations.is_empty() {
         let _ = writeln!(s, "adaptations (§4.1.3): {}", plan.adaptations.len());
         for a in &plan.adaptations {
@@ -194,7 +203,7 @@ fn setup_text(plan: &Plan) -> String {
             l.id,
             l.owner,
             l.step,
-            l.side,
+            l.side + 1,
             format!("{:?}", l.size_class).to_lowercase(),
             l.from_foot[0],
             l.from_foot[1],

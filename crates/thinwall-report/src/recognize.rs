@@ -209,26 +209,39 @@ impl RecognitionReport {
     }
 }
 
+/// What the walls table's columns mean.
+pub const WALLS_LEGEND: &str = "  (t: thickness, a drafted wall's thinnest; h: a rib's, flange's or wall's height above its base; \
+span: a web's largest unsupported radius, the inscribed circle of its face, which it is sized on; \
+L: length; defl.: deflection under the cutting force; h/t: h or span over t; sides are numbered 1 and 2)";
+
 /// The walls table, thin ones first.
 fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
     let thin = walls.iter().filter(|f| f.thin == Some(true)).count();
     let _ = writeln!(s, "walls: {} ({} thin)", walls.len(), thin);
     let _ = writeln!(
         s,
-        "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  on",
-        "id", "kind", "thin", "t mm", "h mm", "L mm", "defl. mm", "h/t", "faces"
+        "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  on",
+        "id", "kind", "thin", "t mm", "h mm", "span mm", "L mm", "defl. mm", "h/t", "faces"
     );
     let mut sorted = walls.to_vec();
     sorted.sort_by_key(|f| (f.thin != Some(true), f.kind, f.id.to_string()));
     for f in sorted {
+        // A web's figure across its face is its span, not a height.
+        let web = f.kind == thinwall_analysis::StiffnessKind::Web;
+        let (h, span) = if web {
+            (String::new(), mm(f.height))
+        } else {
+            (mm(f.height), String::new())
+        };
         let _ = writeln!(
             s,
-            "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  {}",
+            "  {:<6}{:<8}{:<6}{:>10}{:>10}{:>10}{:>10}{:>12}{:>8}{:>7}  {}",
             f.id,
             f.kind.name(),
             if f.thin == Some(true) { "yes" } else { "no" },
             mm(f.thickness),
-            mm(f.height),
+            h,
+            span,
             mm(f.length),
             f.deflection.map(|d| format!("{d:.4}")).unwrap_or_default(),
             f.slenderness.map(|d| format!("{d:.1}")).unwrap_or_default(),
@@ -242,6 +255,7 @@ fn walls_text(s: &mut String, walls: &[&StiffnessFeature]) {
                 + &curved_note(f)
         );
     }
+    let _ = writeln!(s, "{WALLS_LEGEND}");
 }
 
 /// Walls through their base: their figures on its other side.
@@ -530,7 +544,7 @@ impl RecognitionReport {
         for e in &self.stiffness_features {
             for (i, a) in e.access.iter().flatten().enumerate() {
                 if !a.reachable {
-                    blocked.push(format!("  {} side {}: {}", e.feature.id, i, a.reason));
+                    blocked.push(format!("  {} side {}: {}", e.feature.id, i + 1, a.reason));
                 }
             }
         }
