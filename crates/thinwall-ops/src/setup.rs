@@ -84,23 +84,14 @@ pub fn plan_in_turn(
 ) -> Result<(SetupOperations, Vec<u64>), OpsError> {
     frame_for(a, lib)?;
     let frame = removal.frame;
-    let here: Vec<MachiningFeature> = features
-        .iter()
-        .filter(|m| !m.faces.iter().any(|f| drilled_before.contains(f)))
-        .cloned()
-        .collect();
+    let here = not_drilled(features, drilled_before);
     let holes = hole_sites(&here, &frame, lib);
     let mut ops = operations(removal, lib, axial_depth_mm, &holes, a.work());
     ops.meshed = removal.meshed.clone();
     ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(removal);
     ops.cleared_before_mm3 = removal.cleared_volume();
     finish_by_radii(&mut ops, a, &here, &frame, lib);
-    let drilled: Vec<u64> = here
-        .iter()
-        .filter(|m| holes.iter().any(|h| h.id == m.id.to_string()))
-        .flat_map(|m| m.faces.iter().copied())
-        .collect();
-    Ok((ops, drilled))
+    Ok((ops, drilled_faces(&here, &holes)))
 }
 
 /// The operations of `a`'s set-up along its `plan`: each machining feature
@@ -140,11 +131,7 @@ pub fn along_plan_in_turn(
         geo::Coord { x: hi[0], y: hi[1] },
     );
     let size = a.bounding_box().diagonal();
-    let here: Vec<MachiningFeature> = features
-        .iter()
-        .filter(|m| !m.faces.iter().any(|f| drilled_before.contains(f)))
-        .cloned()
-        .collect();
+    let here = not_drilled(features, drilled_before);
     let holes = hole_sites(&here, &frame, lib);
     let mut ops =
         crate::planned::by_feature(plan, lib, axial_depth_mm, &holes, stock, size, a.work());
@@ -152,12 +139,25 @@ pub fn along_plan_in_turn(
     ops.cleared_before_mm3 = plan.removal.cleared_before_mm3;
     ops.recut_mm3 = plan.removal.recut_mm3;
     finish_by_radii(&mut ops, a, &here, &frame, lib);
-    let drilled: Vec<u64> = here
+    Ok((ops, drilled_faces(&here, &holes)))
+}
+
+/// The features no earlier set-up drilled (none of their faces in
+/// `drilled_before`).
+fn not_drilled(features: &[MachiningFeature], drilled_before: &[u64]) -> Vec<MachiningFeature> {
+    features
         .iter()
+        .filter(|m| !m.faces.iter().any(|f| drilled_before.contains(f)))
+        .cloned()
+        .collect()
+}
+
+/// The faces of the features among `here` that `holes` drill.
+fn drilled_faces(here: &[MachiningFeature], holes: &[crate::drilling::HoleSite]) -> Vec<u64> {
+    here.iter()
         .filter(|m| holes.iter().any(|h| h.id == m.id.to_string()))
         .flat_map(|m| m.faces.iter().copied())
-        .collect();
-    Ok((ops, drilled))
+        .collect()
 }
 
 /// The features finished by their radii and the holes' stages, their

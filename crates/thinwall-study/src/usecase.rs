@@ -336,15 +336,37 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
         };
         sheets.push((at, setup.up, r.frame, ops));
     }
-    let mut sheets = sheets.into_iter();
-    let (at, up, frame, ops) = sheets.next().expect("a set-up at least");
+    let at = sheets[0].0.clone();
+    let sheets = sheets
+        .into_iter()
+        .map(|(_, up, frame, ops)| (up, frame, ops));
+    let report = report_of(study, req, sheets, Some(residue), proposal);
+    Ok(Operated { at, report })
+}
+
+/// The operations report of set-ups in turn: each set-up's up, removal
+/// frame and operations, the first's first.
+fn report_of(
+    study: &Study<'_>,
+    req: &OperationsRequest,
+    mut sheets: impl Iterator<
+        Item = (
+            [f64; 3],
+            thinwall_geom::Frame,
+            thinwall_ops::operations::SetupOperations,
+        ),
+    >,
+    residue: Option<thinwall_setups::Residue>,
+    proposal: Option<thinwall_setups::Proposal>,
+) -> OperationsReport {
+    let (up, frame, ops) = sheets.next().expect("a set-up at least");
     let mut report = OperationsReport::new(study.name(), up, &frame, req.tools.clone(), ops);
     report.then = sheets
-        .map(|(_, up, frame, ops)| LaterSetup::new(up, &frame, ops))
+        .map(|(up, frame, ops)| LaterSetup::new(up, &frame, ops))
         .collect();
-    report.residue = Some(residue);
+    report.residue = residue;
     report.proposal = proposal;
-    Ok(Operated { at, report })
+    report
 }
 
 /// Several set-ups in turn along their plans ([`plan_in_turn`]): each
@@ -385,14 +407,13 @@ fn along_plans<'p>(
         drilled.extend(here);
         sheets.push((plan.up, plan.removal_frame(), ops));
     }
-    let mut sheets = sheets.into_iter();
-    let (up, frame, ops) = sheets.next().expect("a set-up at least");
-    let mut report = OperationsReport::new(study.name(), up, &frame, req.tools.clone(), ops);
-    report.then = sheets
-        .map(|(up, frame, ops)| LaterSetup::new(up, &frame, ops))
-        .collect();
-    report.residue = planned.plan.residue.clone();
-    report.proposal = planned.plan.proposal.clone();
+    let report = report_of(
+        study,
+        req,
+        sheets.into_iter(),
+        planned.plan.residue.clone(),
+        planned.plan.proposal.clone(),
+    );
     Ok(Operated {
         at: planned.at.clone(),
         report,
