@@ -84,7 +84,9 @@ fn plan(a: args::PlanArgs) -> Result<(), Failure> {
     request.propose = propose;
     let loaded = LoadedPart::read_file(&a.part)?;
     let s = limits::study(&loaded);
-    let planned = study::plan(&s, &request)?;
+    let spinner = Spinner::new();
+    let planned = study::plan_observed(&s, &request, &|m| spinner.say(m))?;
+    drop(spinner);
     if let Some(dir) = &a.volumes_dir {
         let skipped = study::write_volumes(&planned.plan, dir)?;
         if skipped > 0 {
@@ -121,7 +123,10 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     request.choose_up = a.choose_up || (a.up.is_empty() && !a.both_sides);
     request.check()?;
     let loaded = LoadedPart::read_file(&a.part)?;
-    let operated = study::operations(&limits::study(&loaded), &request)?;
+    let spinner = Spinner::new();
+    let operated =
+        study::operations_observed(&limits::study(&loaded), &request, &|m| spinner.say(m))?;
+    drop(spinner);
     emit(operated.into(), a.format, a.output.as_deref())
 }
 
@@ -228,6 +233,41 @@ impl Bar {
     fn inc(&self) {
         if let Some(b) = &self.0 {
             b.inc(1);
+        }
+    }
+}
+
+/// What a long command is doing, on a terminal only: set-ups in turn
+/// take minutes on large parts.
+struct Spinner(Option<indicatif::ProgressBar>);
+
+impl Spinner {
+    fn new() -> Self {
+        Self(
+            std::io::IsTerminal::is_terminal(&std::io::stderr()).then(|| {
+                let b = indicatif::ProgressBar::new_spinner();
+                if let Ok(style) =
+                    indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
+                {
+                    b.set_style(style);
+                }
+                b.enable_steady_tick(std::time::Duration::from_millis(120));
+                b
+            }),
+        )
+    }
+
+    fn say(&self, what: &str) {
+        if let Some(b) = &self.0 {
+            b.set_message(what.to_string());
+        }
+    }
+}
+
+impl Drop for Spinner {
+    fn drop(&mut self) {
+        if let Some(b) = &self.0 {
+            b.finish_and_clear();
         }
     }
 }

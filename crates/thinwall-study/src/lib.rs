@@ -42,6 +42,7 @@ pub use request::{
 };
 pub use study::{AtSetup, Study};
 pub use usecase::{
-    access, access_observed, classify, inspect, operations, plan, recognize, size_wall,
-    write_volumes, Accessed, Classified, Inspected, Operated, Planned, Recognized,
+    access, access_observed, classify, inspect, operations, operations_observed, plan,
+    plan_observed, recognize, size_wall, write_volumes, Accessed, Classified, Inspected, Operated,
+    Planned, Recognized,
 };

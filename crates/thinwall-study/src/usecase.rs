@@ -105,10 +105,21 @@ pub fn recognize<'p>(
 }
 
 pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
+    plan_observed(study, req, &|_| {})
+}
+
+/// [`plan`], calling `stage` with what it does as each stage of set-ups
+/// in turn begins (proposing them, recognizing and planning each: a host
+/// shows it, the stages take minutes on large parts).
+pub fn plan_observed<'p>(
+    study: &Study<'p>,
+    req: &PlanRequest,
+    stage: &dyn Fn(&str),
+) -> Result<Planned<'p>, StudyError> {
     contained("plan", study.name(), || {
         req.check()?;
         if req.several() {
-            return plan_in_turn(study, req);
+            return plan_in_turn(study, req, stage);
         }
         let at = study.at(&req.recognize.setup)?;
         let outcome = at
@@ -129,11 +140,16 @@ pub fn plan<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, Stu
 /// left. When the set-ups' removals cannot be made (a face no graph along
 /// a given up), the first set-up is planned alone and its removal says
 /// why.
-fn plan_in_turn<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>, StudyError> {
+fn plan_in_turn<'p>(
+    study: &Study<'p>,
+    req: &PlanRequest,
+    stage: &dyn Fn(&str),
+) -> Result<Planned<'p>, StudyError> {
     let first = study.at(&req.recognize.setup)?;
     let ups: Vec<[f64; 3]> = std::iter::once(req.recognize.setup.up)
         .chain(req.later_ups.iter().copied())
         .collect();
+    stage(setups_stage(req.propose));
     let Ok((proposal, mut removals)) = thinwall_setups::setups(&first.analysis, &ups, req.propose)
     else {
         return plan(
@@ -149,6 +165,7 @@ fn plan_in_turn<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>,
             setup: setup_along(&req.recognize.setup, r),
             ..req.recognize.clone()
         };
+        stage(&setup_stage(k, removals.len(), &recognize.setup.up));
         let at = study.at(&recognize.setup)?;
         let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
         let turn = thinwall_plan::InTurn {
@@ -176,6 +193,26 @@ fn plan_in_turn<'p>(study: &Study<'p>, req: &PlanRequest) -> Result<Planned<'p>,
         plan: Arc::new(plan),
         later: later.into_iter().map(|(a, o, _)| (a, o)).collect(),
     })
+}
+
+/// What set-ups in turn do first.
+fn setups_stage(propose: bool) -> &'static str {
+    if propose {
+        "proposing set-ups"
+    } else {
+        "the set-ups' removals"
+    }
+}
+
+/// Set-up `k` (of `n`) along `up` begins.
+fn setup_stage(k: usize, n: usize, up: &[f64; 3]) -> String {
+    format!(
+        "set-up {} of {n}, up ({:.3}, {:.3}, {:.3})",
+        k + 1,
+        up[0],
+        up[1],
+        up[2]
+    )
 }
 
 /// `base` with its up along removal `r`'s (+ 0.0: no negative zeros in a
@@ -264,10 +301,20 @@ pub fn operations<'p>(
     study: &Study<'p>,
     req: &OperationsRequest,
 ) -> Result<Operated<'p>, StudyError> {
+    operations_observed(study, req, &|_| {})
+}
+
+/// [`operations`], calling `stage` as each stage of set-ups in turn
+/// begins (as [`plan_observed`]).
+pub fn operations_observed<'p>(
+    study: &Study<'p>,
+    req: &OperationsRequest,
+    stage: &dyn Fn(&str),
+) -> Result<Operated<'p>, StudyError> {
     contained("operations", study.name(), || {
         req.check()?;
         if req.several() {
-            return in_turn(study, req);
+            return in_turn(study, req, stage);
         }
         let at = study.at(&req.setup)?;
         let a = &at.analysis;
@@ -299,7 +346,11 @@ pub fn operations<'p>(
 /// Several set-ups in turn: each set-up's stock what those before it
 /// left, each hole drilled in the first set-up that drills it, what none
 /// reaches the residue.
-fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p>, StudyError> {
+fn in_turn<'p>(
+    study: &Study<'p>,
+    req: &OperationsRequest,
+    stage: &dyn Fn(&str),
+) -> Result<Operated<'p>, StudyError> {
     let first = study.at(&req.setup)?;
     req.check_for_part(first.analysis.bounding_box().diagonal())?;
     let mut ups = vec![req.setup.up];
@@ -308,8 +359,9 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     }
     ups.extend(&req.later_ups);
     if req.by_feature {
-        return along_plans(study, req, ups);
+        return along_plans(study, req, ups, stage);
     }
+    stage(setups_stage(req.choose_up));
     let (proposal, mut removals) =
         thinwall_setups::proposal::setups(&first.analysis, &ups, req.choose_up)
             .map_err(OpsError::from)?;
@@ -317,8 +369,9 @@ fn in_turn<'p>(study: &Study<'p>, req: &OperationsRequest) -> Result<Operated<'p
     let residue = sequence::residue(&removals);
     let mut drilled: Vec<u64> = Vec::new();
     let mut sheets = Vec::new();
-    for (r, recut) in removals.iter().zip(recut) {
+    for (k, (r, recut)) in removals.iter().zip(recut).enumerate() {
         let setup = setup_along(&req.setup, r);
+        stage(&setup_stage(k, removals.len(), &setup.up));
         let at = study.at(&setup)?;
         let holes = found_in_setup(study, &at, &setup)?;
         let (ops, here) = thinwall_ops::setup::plan_in_turn(
@@ -377,6 +430,7 @@ fn along_plans<'p>(
     study: &Study<'p>,
     req: &OperationsRequest,
     ups: Vec<[f64; 3]>,
+    stage: &dyn Fn(&str),
 ) -> Result<Operated<'p>, StudyError> {
     let recognize = RecognizeRequest {
         setup: req.setup.clone(),
@@ -385,7 +439,7 @@ fn along_plans<'p>(
     let mut plan_req = PlanRequest::new(recognize, RuleSet::default_rules());
     plan_req.later_ups = ups[1..].to_vec();
     plan_req.propose = req.choose_up;
-    let planned = plan_in_turn(study, &plan_req)?;
+    let planned = plan_in_turn(study, &plan_req, stage)?;
     let ats = std::iter::once(&planned.at).chain(planned.later.iter().map(|(a, _)| a));
     let plans = std::iter::once(planned.plan.as_ref()).chain(&planned.plan.then);
     let mut drilled: Vec<u64> = Vec::new();
