@@ -78,28 +78,7 @@ fn operations_keep_every_relation_of_the_plan() {
             drills += usize::from(o.stage == Stage::Drill);
         }
         assert!(ops.tool_changes <= ops.plain_tool_changes, "{what}");
-        for (l, fts) in ops.layers.iter().zip(&ops.field_tools) {
-            let cleared: f64 = fts
-                .iter()
-                .flat_map(|ft| &ft.shares)
-                .map(|s| s.cleared_mm2)
-                .sum();
-            let rest: f64 = fts.iter().map(|ft| ft.rest_mm2).sum();
-            let drilled: f64 = l
-                .fields
-                .iter()
-                .zip(fts)
-                .filter(|(_, ft)| ft.drilled.is_some())
-                .map(|(f, _)| f.area_mm2)
-                .sum();
-            assert!(
-                (cleared + rest + drilled - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
-                "{what}: layer {} of {:?}: {cleared} cleared + {rest} rest + {drilled} drilled, section {}",
-                l.index,
-                l.feature,
-                l.area_mm2
-            );
-        }
+        common::assert_layers_add_up(&ops, &what);
         let flat = |h: &Height| matches!(*h, Height::Plane { gx, gy, .. } if gx.hypot(gy) < 1e-9);
         for f in plan.machining_features.iter().filter(|f| f.reachable) {
             if !f.solids.iter().all(|s| flat(&s.lower) && flat(&s.upper)) {

@@ -290,26 +290,7 @@ fn operations_follow_each_set_ups_plan() {
                     );
                 }
             }
-            for (l, fts) in ops.layers.iter().zip(&ops.field_tools) {
-                let cleared: f64 = fts
-                    .iter()
-                    .flat_map(|ft| &ft.shares)
-                    .map(|s| s.cleared_mm2)
-                    .sum();
-                let rest: f64 = fts.iter().map(|ft| ft.rest_mm2).sum();
-                let holes: f64 = l
-                    .fields
-                    .iter()
-                    .zip(fts)
-                    .filter(|(_, ft)| ft.drilled.is_some())
-                    .map(|(f, _)| f.area_mm2)
-                    .sum();
-                assert!(
-                    (cleared + rest + holes - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
-                    "{what}: layer {}",
-                    l.index
-                );
-            }
+            common::assert_layers_add_up(ops, &what);
             let [o, x, y, z] = frame.map(Vector3::from);
             for h in ops.holes.iter().filter(|h| h.drill.is_some()) {
                 let at = o + x * h.centre[0] + y * h.centre[1];

@@ -243,3 +243,30 @@ pub fn tessellated_volume(part: &thinwall_brep::Part) -> f64 {
         })
         .sum()
 }
+
+/// In every layer of `ops` the tools' shares, the rest and the drilled
+/// fields make up the section (1e-6).
+pub fn assert_layers_add_up(ops: &thinwall_ops::operations::SetupOperations, what: &str) {
+    for (l, fts) in ops.layers.iter().zip(&ops.field_tools) {
+        let cleared: f64 = fts
+            .iter()
+            .flat_map(|ft| &ft.shares)
+            .map(|s| s.cleared_mm2)
+            .sum();
+        let rest: f64 = fts.iter().map(|ft| ft.rest_mm2).sum();
+        let drilled: f64 = l
+            .fields
+            .iter()
+            .zip(fts)
+            .filter(|(_, ft)| ft.drilled.is_some())
+            .map(|(f, _)| f.area_mm2)
+            .sum();
+        assert!(
+            (cleared + rest + drilled - l.area_mm2).abs() <= 1e-6 * l.area_mm2.max(1.0),
+            "{what}: layer {} of {:?}: {cleared} cleared + {rest} rest + {drilled} drilled, section {}",
+            l.index,
+            l.feature,
+            l.area_mm2
+        );
+    }
+}
