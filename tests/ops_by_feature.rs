@@ -48,27 +48,7 @@ fn operations_keep_every_relation_of_the_plan() {
         let holes = common::features_in_setup(&a);
         meshed += usize::from(!plan.removal.meshed.is_empty());
         let (_, ops) = along_plan(&a, &plan, &holes, &lib, None).unwrap();
-        // The steps of each feature's operations.
-        let steps = |id: &str| -> Vec<usize> {
-            ops.operations
-                .iter()
-                .filter(|o| o.feature.as_deref() == Some(id))
-                .map(|o| o.step)
-                .collect()
-        };
-        for r in &plan.feature_sequence.relations {
-            let (a, b) = (steps(&r.before), steps(&r.after));
-            if let (Some(last), Some(first)) = (a.iter().max(), b.iter().min()) {
-                assert!(
-                    last < first,
-                    "{what}: {} before {} ({}) broken: step {last} after {first}",
-                    r.before,
-                    r.after,
-                    r.why
-                );
-                relations += 1;
-            }
-        }
+        relations += common::assert_relations_kept(&ops, &plan, &what);
         for o in &ops.operations {
             assert!(
                 o.after.iter().all(|&s| s < o.step),

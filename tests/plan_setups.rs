@@ -266,30 +266,13 @@ fn operations_follow_each_set_ups_plan() {
         for (k, ((ops, frame), plan)) in sheets.zip(setups(&plan)).enumerate() {
             let what = format!("{name} set-up {}", k + 1);
             assert!(!ops.operations.is_empty(), "{what}");
-            let steps = |id: &str| -> Vec<usize> {
-                ops.operations
-                    .iter()
-                    .filter(|o| o.feature.as_deref() == Some(id))
-                    .map(|o| o.step)
-                    .collect()
-            };
             for o in ops.operations.iter().filter_map(|o| o.feature.as_deref()) {
                 assert!(
                     plan.machining_features.iter().any(|f| f.id == o),
                     "{what}: {o} is no feature of its plan"
                 );
             }
-            for r in &plan.feature_sequence.relations {
-                let (a, b) = (steps(&r.before), steps(&r.after));
-                if let (Some(last), Some(first)) = (a.iter().max(), b.iter().min()) {
-                    assert!(
-                        last < first,
-                        "{what}: {} before {} broken",
-                        r.before,
-                        r.after
-                    );
-                }
-            }
+            common::assert_relations_kept(ops, plan, &what);
             common::assert_layers_add_up(ops, &what);
             let [o, x, y, z] = frame.map(Vector3::from);
             for h in ops.holes.iter().filter(|h| h.drill.is_some()) {

@@ -270,3 +270,35 @@ pub fn assert_layers_add_up(ops: &thinwall_ops::operations::SetupOperations, wha
         );
     }
 }
+
+/// Every relation of `plan`'s feature sequence holds in `ops`' order: all
+/// operations of the feature before come before all of the feature after.
+/// Returns how many relations had operations on both sides.
+pub fn assert_relations_kept(
+    ops: &thinwall_ops::operations::SetupOperations,
+    plan: &thinwall_plan::Plan,
+    what: &str,
+) -> usize {
+    let steps = |id: &str| -> Vec<usize> {
+        ops.operations
+            .iter()
+            .filter(|o| o.feature.as_deref() == Some(id))
+            .map(|o| o.step)
+            .collect()
+    };
+    let mut kept = 0;
+    for r in &plan.feature_sequence.relations {
+        let (a, b) = (steps(&r.before), steps(&r.after));
+        if let (Some(last), Some(first)) = (a.iter().max(), b.iter().min()) {
+            assert!(
+                last < first,
+                "{what}: {} before {} ({}) broken: step {last} after {first}",
+                r.before,
+                r.after,
+                r.why
+            );
+            kept += 1;
+        }
+    }
+    kept
+}
