@@ -157,6 +157,11 @@ pub struct Removal {
 
 pub use thinwall_geom::tolerance::SLIVER_WIDTH;
 
+/// The widest lens two outlines of one curve can leave between them, each
+/// within the outline deviation of the curve, mm (`sample.rs`): a cell no
+/// wider whose column crosses the part's faces out of turn is such a lens.
+const OUTLINE_LENS_MM: f64 = 2.0 * sample::OUTLINE_DEVIATION_MM;
+
 /// Corners of a cell toward which another point to read its column is
 /// tried, at most (twice: half-way and nine tenths of the way).
 const COLUMN_POINT_TRIES: usize = 16;
@@ -468,9 +473,11 @@ impl Columns<'_> {
     fn blocks_over(&self, ci: usize, c: &cells::Cell, column: &mut Column) {
         let (solid, stock_iv, alternate) = self.intervals(c);
         let width = mean_width(&c.poly);
-        if !alternate && self.between_edges(c, width) {
-            // Between a vertical face's edges that the file puts apart: the
-            // column's volume by its faces' fluxes, in no block.
+        if !alternate && (width <= OUTLINE_LENS_MM || self.between_edges(c, width)) {
+            // Between a vertical face's edges that the file puts apart, or
+            // between two outlines of one curve cut differently (a lens no
+            // wider than two outline deviations): the column's volume by
+            // its faces' fluxes, in no block.
             column.sliver_volume += self.flux_volume(c);
             return;
         }

@@ -1288,7 +1288,9 @@ pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
         }
         let mut segments = Vec::new();
         let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for lp in face_loop_points(part, f) {
+        let loops = face_loop_points(part, f);
+        let gap = edge_gap(part, f).max(outline_gap(&face.surface, &loops));
+        for lp in loops {
             let pts: Vec<_> = lp.iter().map(|p| frame.to_local(p)).collect();
             for (i, p) in pts.iter().enumerate() {
                 let q = pts[(i + 1) % pts.len()];
@@ -1304,7 +1306,7 @@ pub fn vertical_faces(part: &Part, frame: &Frame) -> Vec<Vertical> {
         }
         out.push(Vertical {
             step_id: face.step_id,
-            gap: edge_gap(part, f),
+            gap,
             segments,
             bbox: Rect::new(Coord { x: lo[0], y: lo[1] }, Coord { x: hi[0], y: hi[1] }),
             z: [lo[2], hi[2]],
@@ -1325,6 +1327,38 @@ fn is_vertical(s: &Surface, frame: &Frame) -> bool {
     }
 }
 
+/// How far a vertical face's sampled outlines lie off its surface, at
+/// their points and their chords' middles, mm. Two edges of one wall cut
+/// differently (a cross hole's rim on a plane, cut round its own axis, and
+/// where it meets a bore, cut round the bore's; a drill's rim and the
+/// curves where cross holes break into its wall) project onto polygons
+/// that part by up to this twice: thin lenses whose columns see one
+/// face's edge and not the other's.
+fn outline_gap(surface: &Surface, loops: &[Vec<Point3>]) -> f64 {
+    let off = |p: &Point3| surface_off(surface, p);
+    loops
+        .iter()
+        .flat_map(|lp| {
+            (0..lp.len()).map(move |i| {
+                let (p, q) = (lp[i], lp[(i + 1) % lp.len()]);
+                off(&p).max(off(&Point3::from((p.coords + q.coords) * 0.5)))
+            })
+        })
+        .fold(0.0, f64::max)
+}
+
+/// A point's distance off a plane or a cylinder (0 for other surfaces), mm.
+fn surface_off(surface: &Surface, p: &Point3) -> f64 {
+    match surface {
+        Surface::Plane { frame: pf } => (p - pf.origin).dot(&pf.z).abs(),
+        Surface::Cylinder { frame: cf, radius } => {
+            let l = p - cf.origin;
+            ((l - cf.z * l.dot(&cf.z)).norm() - radius).abs()
+        }
+        _ => 0.0,
+    }
+}
+
 /// How far a vertical face's edges lie off its surface, at most, mm: the
 /// file's own gaps (an edge approximated by a B-spline, a vertex off its
 /// line), taken on the edges' curves. The wall's top and bottom outlines
@@ -1332,14 +1366,7 @@ fn is_vertical(s: &Surface, frame: &Frame) -> bool {
 /// part's faces out of turn.
 fn edge_gap(part: &Part, f: FaceId) -> f64 {
     let surface = &part.face(f).surface;
-    let off = |p: &Point3| match surface {
-        Surface::Plane { frame: pf } => (p - pf.origin).dot(&pf.z).abs(),
-        Surface::Cylinder { frame: cf, radius } => {
-            let l = p - cf.origin;
-            ((l - cf.z * l.dot(&cf.z)).norm() - radius).abs()
-        }
-        _ => 0.0,
-    };
+    let off = |p: &Point3| surface_off(surface, p);
     let mut gap: f64 = 0.0;
     for &l in &part.face(f).loops {
         for ce in &part.loop_(l).coedges {

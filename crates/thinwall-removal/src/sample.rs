@@ -65,11 +65,13 @@ pub fn edge_interior_points(part: &Part, e: thinwall_brep::EdgeId) -> Vec<Point3
 }
 
 /// An edge's points from its start (its end left to the next edge): cut
-/// evenly by angle about the axis it runs round — the cylinder one of its
+/// evenly by angle about the axis it runs round — a cylinder one of its
 /// faces is (so a cylinder's top and bottom edges, which project onto one
-/// arc when it stands along up, are cut alike whatever their curves), else
-/// a circle's own — or per span ([`chord_points`]) for any other curve or
-/// an edge along a cylinder's generator.
+/// arc when it stands along up, are cut alike whatever their curves; the
+/// widest such cylinder the edge turns one way round: where a cross hole
+/// meets a bore, round the cross hole), else a circle's own — or per span
+/// ([`chord_points`]) for any other curve or an edge along a cylinder's
+/// generator.
 fn edge_points(
     part: &Part,
     e: EdgeId,
@@ -79,26 +81,27 @@ fn edge_points(
 ) {
     let edge = part.edge(e);
     let circle = match &edge.curve {
-        CurveKind::Circle { frame, radius } => Some((frame, *radius)),
+        CurveKind::Circle { frame, radius } => Some((*frame, *radius)),
         _ => None,
     };
-    let cylinder = part
+    let mut axes: Vec<(Frame, f64)> = part
         .edge_faces(e)
         .iter()
         .filter_map(|&f| match &part.face(f).surface {
-            Surface::Cylinder { frame, radius } => Some((frame, *radius)),
+            Surface::Cylinder { frame, radius } => Some((*frame, *radius)),
             _ => None,
         })
-        .max_by(|a, b| a.1.total_cmp(&b.1));
-    let axis = cylinder.or(circle).map(|(f, r)| (*f, r));
-    let done = axis.is_some_and(|(axis, radius)| {
+        .collect();
+    axes.sort_by(|a, b| b.1.total_cmp(&a.1));
+    axes.extend(circle);
+    let done = axes.iter().any(|(axis, radius)| {
         // A circle coaxial with the axis is evaluated in closed form.
         let coaxial = circle.filter(|(cf, _)| {
             cf.z.dot(&axis.z).abs() > 1.0 - NEAR_PARALLEL_EPS
                 && (cf.origin - axis.origin).cross(&axis.z).norm() <= SAME_LENGTH_MM
         });
         turn_points(
-            (&axis, radius),
+            (axis, *radius),
             coaxial.map(|(cf, r)| (cf.origin, r)),
             c,
             forward,
@@ -140,6 +143,11 @@ fn turn_points(
     let closed = (c.point(t0) - c.point(t1)).norm() <= SAME_LENGTH_MM;
     let still = |x: f64| x <= TURN_EPS || TAU - x <= TURN_EPS;
     if !closed && still(ccw(a0, a1)) && still(ccw(a0, am)) {
+        return false;
+    }
+    if !turns_one_way(c, &angle) {
+        // It turns out and back (a blend's edge on a boss, NIST FTC 10's
+        // #1483): its angle is no parameter along it.
         return false;
     }
     let sweep = if closed {
@@ -230,7 +238,7 @@ fn chords_per_quarter(r: f64) -> usize {
 }
 
 /// How far an arc's outline may stand off the circle, mm.
-const OUTLINE_DEVIATION_MM: f64 = 0.005;
+pub(crate) const OUTLINE_DEVIATION_MM: f64 = 0.005;
 /// Most chords a quarter turn (a circle of 4.5 m at the deviation above).
 const MAX_CHORDS_PER_QUARTER: usize = 1024;
 
@@ -240,6 +248,30 @@ const GRID_END_SHARE: f64 = 1e-3;
 
 /// Turns (radians) under this are no turn: an edge along a generator.
 const TURN_EPS: f64 = 1e-9;
+
+/// Samples along a curve to judge whether it turns one way round an axis.
+const TURN_SAMPLES: usize = 64;
+
+/// Whether curve `c`'s angle about an axis only grows or only shrinks
+/// along it (samples at `TURN_SAMPLES` even parameters, steps within
+/// `TURN_EPS` taken as still).
+fn turns_one_way(c: &thinwall_geom::NurbsCurve, angle: &dyn Fn(&Point3) -> f64) -> bool {
+    use std::f64::consts::{PI, TAU};
+    let (t0, t1) = c.domain();
+    let angles: Vec<f64> = (0..=TURN_SAMPLES)
+        .map(|k| angle(&c.point(t0 + (t1 - t0) * k as f64 / TURN_SAMPLES as f64)))
+        .collect();
+    let steps = angles
+        .windows(2)
+        .map(|w| (w[1] - w[0] + PI).rem_euclid(TAU) - PI)
+        .filter(|d| d.abs() > TURN_EPS);
+    let (mut up, mut down) = (false, false);
+    for d in steps {
+        up |= d > 0.0;
+        down |= d < 0.0;
+    }
+    !(up && down)
+}
 
 /// The parameter where curve `c`, turning by `sweep` about an axis from
 /// angle `a0` (a whole turn when `closed`), reaches angle `theta`, by
