@@ -8,7 +8,8 @@ memory (`/usr/bin/time`), the set-ups, the machining features or operations
 per set-up, and the residue.
 
 usage: python3 scripts/bench_plans.py [SHARED_DATA_DIR] [--panel PANEL.step]
-       [--only plan|operations] [--timeout SECONDS]
+       [--only plan|operations] [--skip NAME]... [--timeout SECONDS]
+(--skip leaves out the NIST parts whose file name holds NAME, e.g. ctc_02)
 Needs cadquery-ocp-novtk (for the OpenCascade column) and a release build.
 """
 import argparse, glob, json, os, subprocess, sys, tempfile
@@ -71,12 +72,14 @@ def main():
     ap.add_argument("data", nargs="?", default=os.path.join(os.path.dirname(__file__), "../../shared/data"))
     ap.add_argument("--panel", action="append", default=[])
     ap.add_argument("--only", choices=["plan", "operations"])
+    ap.add_argument("--skip", action="append", default=[])
     ap.add_argument("--timeout", type=float, default=1800)
     a = ap.parse_args()
     root = os.path.join(os.path.dirname(__file__), "..")
     subprocess.run(["cargo", "build", "--release", "-q", "-p", "thinwall-cli"], cwd=root, check=True)
     exe = os.path.join(root, "target/release/thinwall")
-    files = [f for f in sorted(glob.glob(os.path.join(a.data, "nist/*.stp"))) if "-tg" not in f] + a.panel
+    files = [f for f in sorted(glob.glob(os.path.join(a.data, "nist/*.stp")))
+             if "-tg" not in f and not any(k in os.path.basename(f) for k in a.skip)] + a.panel
     commands = [a.only] if a.only else ["plan", "operations"]
     print("| part | command | s | peak MB | OCC read+adjacency s | set-ups | features / operations per set-up | residue mm³ |")
     print("|---|---|---:|---:|---:|---|---:|---:|")
