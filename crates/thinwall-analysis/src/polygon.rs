@@ -248,21 +248,38 @@ pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
 }
 
 /// Radius of the largest circle inside `region` (approximate: a grid
-/// search refined around the best point), mm.
+/// search refined around the best point of each of its pieces), mm. Piece
+/// by piece: one grid over pieces spread far apart (a rest of slivers
+/// along a 140 mm wall) fell between them all and read 0.
 pub fn inscribed_radius(region: &MultiPolygon<f64>) -> f64 {
-    use geo::{Distance, Euclidean};
-    farthest(region, |p, floor| {
-        let mut d = f64::INFINITY;
-        for poly in &region.0 {
+    use geo::{BoundingRect, Distance, Euclidean};
+    let mut pieces: Vec<(f64, &geo::Polygon<f64>)> = region
+        .0
+        .iter()
+        .filter_map(|p| {
+            p.bounding_rect()
+                .map(|b| (0.5 * b.width().min(b.height()), p))
+        })
+        .collect();
+    pieces.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut best: f64 = 0.0;
+    for (bound, poly) in pieces {
+        if bound <= best {
+            break; // no circle wider than its box's half width
+        }
+        let one = MultiPolygon::new(vec![poly.clone()]);
+        best = best.max(farthest(&one, |p, floor| {
+            let mut d = f64::INFINITY;
             for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
                 d = d.min(Euclidean.distance(p, ring));
                 if d <= floor {
                     return 0.0;
                 }
             }
-        }
-        d
-    })
+            d
+        }));
+    }
+    best
 }
 
 /// Radius of the largest circle centred in `region` that crosses none of
@@ -409,5 +426,21 @@ mod tests {
         assert!(narrow_width(&cross) < 4.1);
         let r = inscribed_radius(&rect(0.0, 0.0, 80.0, 40.0));
         assert!((r - 20.0).abs() < 0.05, "{r}");
+    }
+
+    #[test]
+    fn the_widest_of_pieces_spread_far_apart() {
+        // Slivers 0.4 wide every 11.3 mm along 140 mm, and one 1.2 wide:
+        // a grid over their common box falls between them.
+        let mut pieces: Vec<Polygon<f64>> = (0..12)
+            .map(|k| {
+                rect(11.3 * k as f64, 0.0, 11.3 * k as f64 + 3.0, 0.4)
+                    .0
+                    .remove(0)
+            })
+            .collect();
+        pieces.push(rect(140.0, 0.0, 143.0, 1.2).0.remove(0));
+        let r = inscribed_radius(&MultiPolygon::new(pieces));
+        assert!((r - 0.6).abs() < 0.01, "{r}");
     }
 }

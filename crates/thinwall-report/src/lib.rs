@@ -11,6 +11,7 @@ pub mod operations;
 pub mod palette;
 pub mod plan;
 pub mod recognize;
+pub mod rests;
 mod setups;
 pub mod svg;
 

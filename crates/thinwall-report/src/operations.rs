@@ -187,16 +187,7 @@ impl OperationsReport {
         if small > 0 {
             let _ = writeln!(s, "{small} field(s) narrower than the smallest tool");
         }
-        for x in &r.rest {
-            let _ = writeln!(
-                s,
-                "rest: layer {} field {}: {:.2} mm², {:.2} mm wide, no tool of the library reaches it",
-                x.layer + 1,
-                x.field + 1,
-                x.area_mm2,
-                x.width_mm
-            );
-        }
+        crate::rests::write_rests(&mut s, &r.rest);
         for f in &r.radius_finishes {
             radius_line(&mut s, f);
         }

@@ -1,0 +1,161 @@
+//! Rests a planner reads as places, not as a line per layer: a field that no
+//! tool of the library reaches usually repeats down the layers (a slot
+//! narrower than the smallest end mill, a corner sharper than its radius).
+//! Rests with the same outline (area to 0.01 mm², centroid to 0.01 mm) are
+//! one place, with the layers it repeats on; a summary line counts them.
+
+use std::fmt::Write;
+use thinwall_ops::operations::Rest;
+
+/// One place no tool reaches and the layers (0-based) it repeats on.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RestPlace {
+    pub area_mm2: f64,
+    pub width_mm: f64,
+    /// The outline's centroid in the removal frame, mm.
+    pub at: [f64; 2],
+    pub layers: Vec<usize>,
+}
+
+/// Rests grouped by outline, in the order they first appear.
+pub fn places(rests: &[Rest]) -> Vec<RestPlace> {
+    let mut out: Vec<([i64; 3], RestPlace)> = Vec::new();
+    for r in rests {
+        let at = centroid(&r.outlines);
+        let key = [
+            (r.area_mm2 * 100.0).round() as i64,
+            (at[0] * 100.0).round() as i64,
+            (at[1] * 100.0).round() as i64,
+        ];
+        match out.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, p)) => p.layers.push(r.layer),
+            None => out.push((
+                key,
+                RestPlace {
+                    area_mm2: r.area_mm2,
+                    width_mm: r.width_mm,
+                    at,
+                    layers: vec![r.layer],
+                },
+            )),
+        }
+    }
+    out.into_iter().map(|(_, p)| p).collect()
+}
+
+/// The rest lines of a set-up's text: a summary, then one line per place.
+pub fn write_rests(s: &mut String, rests: &[Rest]) {
+    if rests.is_empty() {
+        return;
+    }
+    let places = places(rests);
+    let layers = {
+        let mut l: Vec<usize> = rests.iter().map(|r| r.layer).collect();
+        l.sort_unstable();
+        l.dedup();
+        l.len()
+    };
+    let _ = writeln!(
+        s,
+        "rest: {} field(s) on {} layer(s) in {} place(s) no tool of the library reaches, {:.2} mm² of layer area",
+        rests.len(),
+        layers,
+        places.len(),
+        rests.iter().map(|r| r.area_mm2).sum::<f64>()
+    );
+    for p in &places {
+        let _ = writeln!(
+            s,
+            "  {:.2} mm², {:.2} mm wide, at ({:.2}, {:.2}): layer(s) {}",
+            p.area_mm2,
+            p.width_mm,
+            p.at[0],
+            p.at[1],
+            ranges(&p.layers)
+        );
+    }
+}
+
+/// Layers 1-based as ranges: `1–3, 5`.
+fn ranges(layers: &[usize]) -> String {
+    let mut sorted = layers.to_vec();
+    sorted.sort_unstable();
+    sorted.dedup();
+    let mut parts: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < sorted.len() {
+        let start = sorted[k];
+        while k + 1 < sorted.len() && sorted[k + 1] == sorted[k] + 1 {
+            k += 1;
+        }
+        parts.push(if sorted[k] == start {
+            format!("{}", start + 1)
+        } else {
+            format!("{}–{}", start + 1, sorted[k] + 1)
+        });
+        k += 1;
+    }
+    parts.join(", ")
+}
+
+/// The area-weighted centroid of outlines (the shoelace over each ring;
+/// the mean of the corners where they enclose no area), mm.
+fn centroid(outlines: &[Vec<[f64; 2]>]) -> [f64; 2] {
+    let (mut a, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    for ring in outlines {
+        for (k, p) in ring.iter().enumerate() {
+            let q = ring[(k + 1) % ring.len()];
+            let cross = p[0] * q[1] - q[0] * p[1];
+            a += cross;
+            cx += (p[0] + q[0]) * cross;
+            cy += (p[1] + q[1]) * cross;
+        }
+    }
+    if a.abs() > 1e-12 {
+        return [cx / (3.0 * a), cy / (3.0 * a)];
+    }
+    let corners: Vec<&[f64; 2]> = outlines.iter().flatten().collect();
+    let n = corners.len().max(1) as f64;
+    [
+        corners.iter().map(|c| c[0]).sum::<f64>() / n,
+        corners.iter().map(|c| c[1]).sum::<f64>() / n,
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(layer: usize, x: f64) -> Rest {
+        Rest {
+            layer,
+            field: 0,
+            area_mm2: 1.0,
+            width_mm: 1.0,
+            outlines: vec![vec![[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]]],
+        }
+    }
+
+    #[test]
+    fn a_rest_repeated_down_the_layers_is_one_place() {
+        let rests = [
+            square(0, 0.0),
+            square(1, 0.0),
+            square(2, 0.0),
+            square(4, 0.0),
+            square(1, 5.0),
+        ];
+        let p = places(&rests);
+        assert_eq!(p.len(), 2);
+        assert_eq!(p[0].layers, vec![0, 1, 2, 4]);
+        assert!((p[0].at[0] - 0.5).abs() < 1e-12 && (p[0].at[1] - 0.5).abs() < 1e-12);
+        assert_eq!(ranges(&p[0].layers), "1–3, 5");
+        let mut s = String::new();
+        write_rests(&mut s, &rests);
+        assert!(
+            s.starts_with("rest: 5 field(s) on 4 layer(s) in 2 place(s)"),
+            "{s}"
+        );
+        assert_eq!(s.lines().count(), 3, "{s}");
+    }
+}
