@@ -9,7 +9,7 @@
 #
 # --prefix: where to install (default /usr/local).
 # --from:   a directory holding libthinwall.so and libthinwall.a already built
-#           (default: `cargo build --release -p thinwall-capi`, then target/release).
+#           (default: `cargo build --release -p thinwall-clib`, then target/release).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 prefix=/usr/local
@@ -22,7 +22,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 if [ -z "$from" ]; then
-  (cd "$root" && cargo build --release -p thinwall-capi)
+  (cd "$root" && cargo build --release -p thinwall-clib)
   from="$root/target/release"
 fi
 for f in libthinwall.so libthinwall.a; do

@@ -26,6 +26,7 @@ fn manifests() -> Vec<PathBuf> {
         .filter(|p| p.exists())
         .collect();
     out.push(root.join("plugin-api/Cargo.toml"));
+    out.push(root.join("plugin-api/clib/Cargo.toml"));
     out.sort();
     out
 }

@@ -6,7 +6,7 @@
 //!     cargo run --release -p thinwall-capi --example capi_json -- PART.step [--access]
 
 use std::ffi::{c_char, CStr, CString};
-use thinwall::*;
+use thinwall_capi::*;
 
 /// One JSON string (or the failure's status and message), owned by Rust.
 unsafe fn text(status: tw_status, json: *mut c_char) -> String {

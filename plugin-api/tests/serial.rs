@@ -3,7 +3,7 @@
 //! would appear in `/proc/self/task` if anything started it).
 
 use std::ptr::null_mut;
-use thinwall::*;
+use thinwall_capi::*;
 
 fn threads() -> usize {
     std::fs::read_dir("/proc/self/task").map_or(0, |d| d.count())

@@ -9,7 +9,7 @@
 
 use std::ffi::CStr;
 use std::ptr::null_mut;
-use thinwall::*;
+use thinwall_capi::*;
 
 /// The generated panel pocketed from both sides of its web, read.
 unsafe fn panel() -> *mut tw_part {

@@ -9,7 +9,7 @@
 use std::ffi::{CStr, CString};
 use std::path::PathBuf;
 use std::process::Command;
-use thinwall::*;
+use thinwall_capi::*;
 
 fn part_path() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/recognition/rib_grid_panel.step")
