@@ -167,7 +167,15 @@ fn recognize(
     let loaded = study::contained("read", &name, || Ok(LoadedPart::new(&name, model, read)))?;
     let graph_seconds = t0.elapsed().as_secs_f64() - read_seconds;
     let s = limits::study(&loaded);
-    let recognized = study::recognize(&s, request)?;
+    let spinner = Spinner::new();
+    spinner.say(if request.reach_tool.is_some() {
+        "recognizing, the reach of every wall side judged (--no-reach skips it)"
+    } else {
+        "recognizing"
+    });
+    let recognized = study::recognize(&s, request);
+    drop(spinner);
+    let recognized = recognized?;
     if verbose {
         eprintln!("{read_seconds:>9.4} s  read");
         eprintln!("{graph_seconds:>9.4} s  adjacency graph");
