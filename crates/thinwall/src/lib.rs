@@ -68,10 +68,37 @@
 //! assert!(text.contains("\"schema\""));
 //! # Ok::<(), thinwall::StudyError>(())
 //! ```
+//!
+//! # Inspect, classify a removal volume, size a wall
+//!
+//! ```
+//! # let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../fixtures/classify/blind_slot");
+//! use thinwall::{ClassifyRequest, LoadedPart, Study};
+//! let part = LoadedPart::read_file(format!("{dir}/part.step"))?;
+//! let study = Study::new(&part);
+//! let faces = thinwall::inspect(&study)?;
+//! assert!(faces.report.bodies.iter().map(|b| b.faces).sum::<usize>() > 0);
+//! let request = ClassifyRequest {
+//!     setup: thinwall::setup_of(Some([0.0, 0.0, 1.0]), thinwall::Machine::ThreeAxis)?,
+//!     volumes: vec![thinwall::read_volume(format!("{dir}/v0.step"))?],
+//!     before: vec![],
+//! };
+//! let classified = thinwall::classify(&study, request)?;
+//! println!("{:?}", classified.report.volumes[0]);
+//! use thinwall::sizing::{Milling, SizingParameters, WallDimensions};
+//! let sizes = thinwall::size_wall(&thinwall::SizeWallRequest {
+//!     wall: WallDimensions { length: 120.0, thickness: 1.5, height: 30.0 },
+//!     parameters: SizingParameters::defaults(Milling::Peripheral),
+//! })?;
+//! println!("{}", thinwall::render(&sizes.into(), thinwall::Format::Text)?);
+//! # Ok::<(), thinwall::StudyError>(())
+//! ```
 
 pub use thinwall_access::reach::Tool as ReachTool;
 pub use thinwall_analysis::{Machine, Setup};
+pub use thinwall_classify::Volume;
 pub use thinwall_ops::ToolLibrary;
+pub use thinwall_plan::sizing;
 pub use thinwall_plan::RuleSet;
 pub use thinwall_study::*;
 
@@ -107,4 +134,16 @@ pub fn operations_request(up: [f64; 3]) -> Result<OperationsRequest, StudyError>
         Some(up),
         Machine::ThreeAxis,
     )?))
+}
+
+/// A removal volume for [`classify`] (a STEP solid, named by its path),
+/// its tool from the set-up's up.
+pub fn read_volume(path: impl AsRef<std::path::Path>) -> Result<Volume, StudyError> {
+    let loaded = LoadedPart::read_file(path.as_ref())?;
+    Ok(Volume {
+        name: path.as_ref().display().to_string(),
+        part: loaded.part,
+        current: None,
+        up: None,
+    })
 }
