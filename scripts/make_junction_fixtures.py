@@ -22,7 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from make_recognition_fixtures import box, cut, fuse, write, _edge  # noqa: E402
-from OCP.BRepAlgoAPI import BRepAlgoAPI_Fuse  # noqa: E402
+from make_hole_fixtures import union  # noqa: E402
 from OCP.BRepFilletAPI import BRepFilletAPI_MakeFillet  # noqa: E402
 from OCP.BRepPrimAPI import BRepPrimAPI_MakeCone, BRepPrimAPI_MakeCylinder  # noqa: E402
 from OCP.TopAbs import TopAbs_EDGE  # noqa: E402
@@ -43,7 +43,7 @@ def boss_and_bar():
     plate = box(0, 0, 0, 80, 40, 4)
     boss = cylinder((20, 20, 0), (0, 0, 1), 8.0, 24.0)
     bar = cylinder((20, 20, 14), (1, 0, 0), 5.0, 40.0)
-    part = BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(plate, boss).Shape(), bar).Shape()
+    part = union(plate, boss, bar)
     blend = BRepFilletAPI_MakeFillet(part)
     explorer = TopExp_Explorer(part, TopAbs_EDGE)
     while explorer.More():

@@ -407,15 +407,7 @@ fn a_chamfer_reaches_its_leg() {
 #[test]
 fn a_cut_out_through_a_flange_takes_a_tool_its_width_across() {
     for name in ["flange_cutouts", "flange_cutouts_turned"] {
-        let dir = common::root().join("fixtures/recognition");
-        let expected: serde_json::Value = serde_json::from_str(
-            &std::fs::read_to_string(dir.join(format!("{name}.expected.json"))).unwrap(),
-        )
-        .unwrap();
-        let up: Vec<f64> = serde_json::from_value(expected["up"].clone()).unwrap();
-        let (part, _) = thinwall_step::read_file(dir.join(format!("{name}.step"))).unwrap();
-        let setup =
-            Setup::new([up[0], up[1], up[2]], thinwall_analysis::Machine::ThreeAxis).unwrap();
+        let (part, setup) = common::recognition_fixture(name);
         let m = recognize(&PartAnalysis::new(&part, setup));
         let cutouts: Vec<&MachiningFeature> = m
             .iter()

@@ -11,15 +11,9 @@ use thinwall_analysis::{Machine, Setup};
 use thinwall_pipeline::{run, Outcome, PipelineError, Request};
 
 fn outcome(name: &str) -> (thinwall_brep::Part, Outcome) {
-    let dir = common::root().join("fixtures/recognition");
-    let fx: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(dir.join(format!("{name}.expected.json"))).unwrap(),
-    )
-    .unwrap();
-    let up: Vec<f64> = serde_json::from_value(fx["up"].clone()).unwrap();
-    let (part, _) = thinwall_step::read_file(dir.join(format!("{name}.step"))).unwrap();
+    let (part, setup) = common::recognition_fixture(name);
     let req = Request {
-        setup: Setup::new([up[0], up[1], up[2]], Machine::ThreeAxis).unwrap(),
+        setup,
         ..Request::default()
     };
     let out = run(&part, None, &req).unwrap();

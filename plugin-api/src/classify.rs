@@ -46,12 +46,7 @@ pub unsafe extern "C" fn tw_classify(
                 if v.is_null() {
                     return Err(null(&format!("volumes[{i}]")));
                 }
-                Ok(thinwall_classify::Volume {
-                    name: (&*v).loaded.name.clone(),
-                    part: (&*v).loaded.part.clone(),
-                    current: None,
-                    up: None,
-                })
+                Ok(thinwall_study::volume_of(&(&*v).loaded))
             })
             .collect::<Result<_, _>>()?;
         let pairs: Vec<(usize, usize)> = (0..n_before)

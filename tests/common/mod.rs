@@ -244,6 +244,22 @@ pub fn tessellated_volume(part: &thinwall_brep::Part) -> f64 {
         .sum()
 }
 
+/// A fixture of `fixtures/recognition` (`NAME.step`) and the three-axis
+/// set-up along the up its `NAME.expected.json` names.
+pub fn recognition_fixture(name: &str) -> (thinwall_brep::Part, thinwall_analysis::Setup) {
+    let dir = root().join("fixtures/recognition");
+    let expected: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join(format!("{name}.expected.json"))).unwrap(),
+    )
+    .unwrap();
+    let up: Vec<f64> = serde_json::from_value(expected["up"].clone()).unwrap();
+    let (part, _) = thinwall_step::read_file(dir.join(format!("{name}.step"))).unwrap();
+    let setup =
+        thinwall_analysis::Setup::new([up[0], up[1], up[2]], thinwall_analysis::Machine::ThreeAxis)
+            .unwrap();
+    (part, setup)
+}
+
 /// In every layer of `ops` the tools' shares, the rest and the drilled
 /// fields make up the section (1e-6).
 pub fn assert_layers_add_up(ops: &thinwall_ops::operations::SetupOperations, what: &str) {

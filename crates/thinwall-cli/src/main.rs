@@ -133,15 +133,11 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
 fn classify(a: args::ClassifyArgs) -> Result<(), Failure> {
     let setup = study::setup_of(a.up, thinwall_analysis::Machine::ThreeAxis)?;
     let loaded = LoadedPart::read_file(&a.part)?;
-    let mut volumes = Vec::new();
-    for v in &a.volume {
-        volumes.push(thinwall_classify::Volume {
-            name: v.display().to_string(),
-            part: thinwall_step::read_file(v)?.0,
-            current: None,
-            up: None,
-        });
-    }
+    let volumes = a
+        .volume
+        .iter()
+        .map(study::read_volume)
+        .collect::<Result<Vec<_>, _>>()?;
     let request = study::ClassifyRequest {
         setup,
         volumes,

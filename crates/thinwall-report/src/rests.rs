@@ -98,28 +98,17 @@ fn ranges(layers: &[usize]) -> String {
     parts.join(", ")
 }
 
-/// The area-weighted centroid of outlines (the shoelace over each ring;
-/// the mean of the corners where they enclose no area), mm.
+/// The centroid of outlines (geo's: by area, by length where they enclose
+/// none), mm.
 fn centroid(outlines: &[Vec<[f64; 2]>]) -> [f64; 2] {
-    let (mut a, mut cx, mut cy) = (0.0, 0.0, 0.0);
-    for ring in outlines {
-        for (k, p) in ring.iter().enumerate() {
-            let q = ring[(k + 1) % ring.len()];
-            let cross = p[0] * q[1] - q[0] * p[1];
-            a += cross;
-            cx += (p[0] + q[0]) * cross;
-            cy += (p[1] + q[1]) * cross;
-        }
-    }
-    if a.abs() > 1e-12 {
-        return [cx / (3.0 * a), cy / (3.0 * a)];
-    }
-    let corners: Vec<&[f64; 2]> = outlines.iter().flatten().collect();
-    let n = corners.len().max(1) as f64;
-    [
-        corners.iter().map(|c| c[0]).sum::<f64>() / n,
-        corners.iter().map(|c| c[1]).sum::<f64>() / n,
-    ]
+    use geo::Centroid;
+    let region = geo::MultiPolygon::new(
+        outlines
+            .iter()
+            .map(|ring| geo::Polygon::new(ring.iter().map(|p| (p[0], p[1])).collect(), vec![]))
+            .collect(),
+    );
+    region.centroid().map_or([0.0, 0.0], |c| [c.x(), c.y()])
 }
 
 #[cfg(test)]

@@ -37,8 +37,8 @@ pub use error::{ErrorKind, StudyError};
 pub use loaded::LoadedPart;
 pub use render::{render, Format, Rendered};
 pub use request::{
-    setup_of, AccessRequest, ClassifyRequest, OperationsRequest, PlanRequest, RecognizeRequest,
-    SizeWallRequest,
+    read_volume, setup_of, volume_of, AccessRequest, ClassifyRequest, OperationsRequest,
+    PlanRequest, RecognizeRequest, SizeWallRequest,
 };
 pub use study::{AtSetup, Study};
 pub use usecase::{

@@ -228,6 +228,34 @@ impl ClassifyRequest {
     }
 }
 
+/// A removal volume of a part already read, its tool from the set-up's
+/// up.
+pub fn volume_of(loaded: &crate::LoadedPart) -> thinwall_classify::Volume {
+    thinwall_classify::Volume {
+        name: loaded.name.clone(),
+        part: loaded.part.clone(),
+        current: None,
+        up: None,
+    }
+}
+
+/// A removal volume from its STEP file (named by its path), its tool
+/// from the set-up's up; no adjacency graph is built for it.
+pub fn read_volume(
+    path: impl AsRef<std::path::Path>,
+) -> Result<thinwall_classify::Volume, StudyError> {
+    let path = path.as_ref();
+    let name = path.display().to_string();
+    crate::contained("read", &name, || {
+        Ok(thinwall_classify::Volume {
+            name: name.clone(),
+            part: thinwall_step::read_file(path)?.0,
+            current: None,
+            up: None,
+        })
+    })
+}
+
 /// `size-wall`: a wall and the step-approach model's parameters (their
 /// rules are the sizing model's own and are checked by it).
 #[derive(Clone, Debug)]

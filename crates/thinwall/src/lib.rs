@@ -135,15 +135,3 @@ pub fn operations_request(up: [f64; 3]) -> Result<OperationsRequest, StudyError>
         Machine::ThreeAxis,
     )?))
 }
-
-/// A removal volume for [`classify`] (a STEP solid, named by its path),
-/// its tool from the set-up's up.
-pub fn read_volume(path: impl AsRef<std::path::Path>) -> Result<Volume, StudyError> {
-    let loaded = LoadedPart::read_file(path.as_ref())?;
-    Ok(Volume {
-        name: path.as_ref().display().to_string(),
-        part: loaded.part,
-        current: None,
-        up: None,
-    })
-}
