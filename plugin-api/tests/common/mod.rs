@@ -4,23 +4,62 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::OnceLock;
 
 pub fn crate_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The directory holding the `libthinwall.so` built with this test: the
-/// test binary's `deps/` (the copy one level up is only refreshed by
-/// `cargo build` and may be stale).
+/// The directory holding `libthinwall.so` and `libthinwall.a`, built (or
+/// found up to date) by the cargo running this test, in the test's own
+/// profile. `cargo test` never builds them itself: `thinwall-clib` is a
+/// cdylib and staticlib only, which no test target can link, so the first
+/// caller in a test binary runs `cargo build -p thinwall-clib` (a no-op
+/// when it is fresh; cargo holds no lock while tests run).
 pub fn lib_dir() -> PathBuf {
+    static BUILT: OnceLock<PathBuf> = OnceLock::new();
+    BUILT.get_or_init(build_library).clone()
+}
+
+fn build_library() -> PathBuf {
     let exe = std::env::current_exe().unwrap();
-    let deps = exe.parent().unwrap().to_path_buf();
-    for dir in [deps.clone(), deps.parent().unwrap().to_path_buf()] {
-        if dir.join("libthinwall.so").exists() {
-            return dir;
-        }
-    }
-    panic!("libthinwall.so not found near {}", deps.display());
+    // target/<profile>/deps/<test binary>
+    let profile_dir = exe.parent().and_then(Path::parent).unwrap().to_path_buf();
+    let profile = profile_dir
+        .file_name()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned();
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let profile_arg = if profile == "debug" {
+        "dev"
+    } else {
+        profile.as_str()
+    };
+    let out = Command::new(cargo)
+        .args([
+            "build",
+            "--quiet",
+            "-p",
+            "thinwall-clib",
+            "--profile",
+            profile_arg,
+        ])
+        .env("CARGO_TARGET_DIR", profile_dir.parent().unwrap())
+        .current_dir(crate_dir())
+        .output()
+        .expect("cargo");
+    assert!(
+        out.status.success(),
+        "cargo build -p thinwall-clib --profile {profile_arg} failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        profile_dir.join("libthinwall.so").exists(),
+        "libthinwall.so not found in {} after building it",
+        profile_dir.display()
+    );
+    profile_dir
 }
 
 /// The host binary, run without cargo's `LD_LIBRARY_PATH` (which may hold a
