@@ -329,7 +329,7 @@ fn operations_page_holds_every_operation_and_its_fields() {
     );
     let lib = thinwall_ops::ToolLibrary::default_tools();
     let holes = common::features_in_setup(&a);
-    let (frame, ops) = thinwall_ops::plan_setup(&a, &holes, &lib, None).unwrap();
+    let (frame, ops) = thinwall_ops::plan_setup(&a, &holes, &lib, None, &[]).unwrap();
     let count = ops.operations.len();
     let report = thinwall_report::operations::OperationsReport::new(
         "plate",

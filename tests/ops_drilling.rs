@@ -33,7 +33,7 @@ fn plan(text: &str, up: [f64; 3]) -> SetupOperations {
     .unwrap();
     let lib = ToolLibrary::default_tools();
     let holes = hole_sites(&common::features_in_setup(&a), &frame, &lib);
-    operations(&r, &lib, None, &holes, Work::serial())
+    operations(&r, &lib, None, &[], &holes, Work::serial())
 }
 
 fn text() -> String {

@@ -59,6 +59,7 @@ fn two_closed_pockets_by_hand() {
     let opts = LayerOptions {
         axial_depth_mm: 4.0,
         smallest_tool_mm: 12.0,
+        ..Default::default()
     };
     let layers = roughing_layers(&r, &opts);
     let z: Vec<f64> = layers.iter().map(|l| l.z_bottom_mm).collect();
@@ -119,6 +120,7 @@ fn every_thin_walled_part_gets_levels_at_its_floors_and_exact_sections() {
         let opts = LayerOptions {
             axial_depth_mm: 6.0,
             smallest_tool_mm: 4.0,
+            ..Default::default()
         };
         let layers = roughing_layers(&r, &opts);
         let what = path.display().to_string();
@@ -226,6 +228,7 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
         &LayerOptions {
             axial_depth_mm: 10.0,
             smallest_tool_mm: 6.0,
+            ..Default::default()
         },
     );
     assert_eq!(layers.len(), 1, "one layer down to the floor at 10");
@@ -246,7 +249,7 @@ fn a_pocket_with_islands_takes_three_tools_by_hand() {
         .filter(|t| [20.0, 12.0, 6.0].contains(&t.diameter_mm))
         .collect();
     assert_eq!(mills.len(), 3);
-    let picked = select(field, &mills, &layers[0].floor_region);
+    let picked = select(field, &mills, &layers[0].floor_region, 0.0);
     let names: Vec<&str> = picked.shares.iter().map(|s| s.tool.as_str()).collect();
     assert_eq!(names, ["EM20", "EM12", "EM6"]);
     let segment = 100.0 * (51f64.sqrt() / 10.0).acos() - 7.0 * 51f64.sqrt();
@@ -301,7 +304,7 @@ fn operations_keep_their_order_and_add_up() {
         let holes =
             thinwall_ops::drilling::hole_sites(&common::features_in_setup(&a), &r.frame, &lib);
         drilled_holes += holes.iter().filter(|h| h.drill.is_some()).count();
-        let plan = operations(&r, &lib, None, &holes, Work::serial());
+        let plan = operations(&r, &lib, None, &[], &holes, Work::serial());
         let what = path.display().to_string();
         for op in &plan.operations {
             assert!(
@@ -445,6 +448,7 @@ fn panel_layers(path: &std::path::Path, seed: Option<u64>) -> (f64, f64, Vec<f64
     let opts = LayerOptions {
         axial_depth_mm: 6.0,
         smallest_tool_mm: 4.0,
+        ..Default::default()
     };
     let below: Vec<f64> = roughing_layers(&r, &opts)
         .iter()
@@ -592,6 +596,7 @@ fn the_opposite_side_cuts_what_the_first_left_in_any_pose() {
             let opts = LayerOptions {
                 axial_depth_mm: 6.0,
                 smallest_tool_mm: 4.0,
+                ..Default::default()
             };
             for l in roughing_layers(&second, &opts) {
                 if l.area_mm2 > 4.0 * 1e-6 * size * size {

@@ -47,7 +47,7 @@ fn operations(text: &str, seed: Option<u64>, up: [f64; 3]) -> Result<SetupOperat
     let (part, up) = posed(text, seed, up);
     let a = PartAnalysis::new(&part, Setup::new(up, Machine::ThreeAxis).unwrap());
     let features = common::features_in_setup(&a);
-    thinwall_ops::plan_setup(&a, &features, &ToolLibrary::default_tools(), None)
+    thinwall_ops::plan_setup(&a, &features, &ToolLibrary::default_tools(), None, &[])
         .map(|(_, ops)| ops)
         .map_err(|e| e.code())
 }

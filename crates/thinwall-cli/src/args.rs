@@ -246,6 +246,13 @@ pub struct OperationsArgs {
     /// Depth of cut between levels, mm (default: the largest end mill's).
     #[arg(long, allow_hyphen_values = true)]
     pub axial_depth: Option<f64>,
+    /// The least area, mm², an end mill must take in a cutter field of a
+    /// layer to run there (default: the library's `min_share_mm2`, 20 in
+    /// the shipped one); a smaller share goes to the next smaller tool or
+    /// is left as rest below the minimum. 0 runs every tool that clears
+    /// anything.
+    #[arg(long, value_name = "MM2", allow_hyphen_values = true)]
+    pub min_share: Option<f64>,
     /// Follow the plan: each machining feature of `thinwall plan`
     /// (step-approach layers, bulk) layered and tooled on its own, in
     /// an order that keeps every relation of the plan. Default: the

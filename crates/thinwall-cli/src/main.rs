@@ -115,6 +115,9 @@ fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
     let setup = study::setup_of(a.up.first().copied(), thinwall_analysis::Machine::ThreeAxis)?;
     let mut request = study::OperationsRequest::new(setup);
     request.tools = tools_of(a.tools.as_deref())?;
+    if let Some(m) = a.min_share {
+        request.tools.min_share_mm2 = m;
+    }
     request.axial_depth = a.axial_depth;
     request.by_feature = a.by_feature;
     request.both_sides = a.both_sides;

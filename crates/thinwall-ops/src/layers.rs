@@ -10,6 +10,7 @@
 use geo::{Area, BoundingRect, Contains, Coord, LineString, MultiPolygon, Point, Polygon, Rect};
 use serde::Serialize;
 use thinwall_analysis::boolean;
+use thinwall_plan::StepLimit;
 use thinwall_removal::pieces::{Facing, Height};
 use thinwall_removal::{outline, slab, Removal};
 
@@ -17,13 +18,17 @@ use thinwall_removal::{outline, slab, Removal};
 pub const FLAT_SLOPE: f64 = 1e-9;
 
 /// What the layers are cut with.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct LayerOptions {
     /// Depth of cut between levels, mm (the roughing tool's a_p).
     pub axial_depth_mm: f64,
     /// The smallest tool's diameter, mm: a field it cannot enter is too
     /// small.
     pub smallest_tool_mm: f64,
+    /// The thin walls standing along up and the deepest layer allowed
+    /// over their heights (the step approach: no layer beside a thin wall
+    /// deeper than its `h_RF`).
+    pub step_limits: Vec<StepLimit>,
 }
 
 /// What a contour edge runs along.
@@ -98,6 +103,10 @@ pub struct RoughingLayer {
     pub floor_region: MultiPolygon<f64>,
     /// The removal region's cross-section at the bottom, mm².
     pub area_mm2: f64,
+    /// The deepest this layer may be, beside the thin walls whose heights
+    /// it crosses (their `h_RF`), mm; none beside no thin wall.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step_limit_mm: Option<f64>,
     pub fields: Vec<CutterField>,
 }
 
@@ -148,16 +157,55 @@ pub fn levels(r: &Removal, axial_depth_mm: f64, tol: f64) -> Vec<(f64, Vec<u64>)
     out
 }
 
+/// The deepest a layer from `top` down to `bottom` may be: the least
+/// `h_RF` of the thin walls whose heights it crosses.
+pub fn step_limit(limits: &[StepLimit], top: f64, bottom: f64, tol: f64) -> Option<f64> {
+    limits
+        .iter()
+        .filter(|l| l.z_mm[0] < top - tol && l.z_mm[1] > bottom + tol)
+        .map(|l| l.depth_mm)
+        .min_by(f64::total_cmp)
+}
+
+/// `levels` (top down, from `top`) with levels put in so that no layer
+/// is deeper than its [`step_limit`]: a layer too deep is cut into equal
+/// ones.
+pub fn stepped(
+    levels: Vec<(f64, Vec<u64>)>,
+    top: f64,
+    limits: &[StepLimit],
+    tol: f64,
+) -> Vec<(f64, Vec<u64>)> {
+    let mut out = Vec::with_capacity(levels.len());
+    let mut above = top;
+    for (z, floors) in levels {
+        if let Some(depth) = step_limit(limits, above, z, tol) {
+            let n = ((above - z - tol) / depth).ceil().max(1.0) as usize;
+            for k in 1..n {
+                out.push((above - k as f64 * (above - z) / n as f64, Vec::new()));
+            }
+        }
+        out.push((z, floors));
+        above = z;
+    }
+    out
+}
+
 /// The roughing layers of the removal `r`.
 pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
     let tol = 1e-6 * r.size.max(1.0);
-    let levels = levels(r, opts.axial_depth_mm, tol);
     let Some(top) = reachable(r)
         .map(|b| r.bound_range(&b.upper)[1])
         .max_by(f64::total_cmp)
     else {
         return Vec::new();
     };
+    let levels = stepped(
+        levels(r, opts.axial_depth_mm, tol),
+        top,
+        &opts.step_limits,
+        tol,
+    );
     let footprint = footprint(r);
     let mut out = Vec::with_capacity(levels.len());
     let mut above = top;
@@ -193,6 +241,7 @@ pub fn roughing_layers(r: &Removal, opts: &LayerOptions) -> Vec<RoughingLayer> {
             ),
             floors,
             area_mm2: fields.iter().map(|f| f.area_mm2).sum(),
+            step_limit_mm: step_limit(&opts.step_limits, above, z, tol),
             fields,
         });
         above = z;

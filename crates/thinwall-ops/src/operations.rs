@@ -231,7 +231,61 @@ fn joined(order: &[usize], passes: Vec<Operation>, preds: &[Vec<usize>]) -> Vec<
     out
 }
 
-/// What no tool of the library reaches, where.
+/// One tool's work in a set-up: its stages, how many operations, the
+/// steps it first and last runs in, what it cuts and its time.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ToolUse {
+    pub tool: String,
+    pub diameter_mm: f64,
+    pub stages: Vec<Stage>,
+    pub operations: usize,
+    pub first_step: usize,
+    pub last_step: usize,
+    /// Spells in the spindle: how often it is loaded.
+    pub loads: usize,
+    pub volume_mm3: f64,
+    pub time_min: f64,
+}
+
+/// The tool sheet of `operations` (in their order): each tool once, in
+/// the order it first runs.
+pub fn tool_sheet(operations: &[Operation]) -> Vec<ToolUse> {
+    let mut out: Vec<ToolUse> = Vec::new();
+    let mut loaded: Option<&str> = None;
+    for o in operations {
+        let k = match out.iter().position(|u| u.tool == o.tool) {
+            Some(k) => k,
+            None => {
+                out.push(ToolUse {
+                    tool: o.tool.clone(),
+                    diameter_mm: o.diameter_mm,
+                    stages: Vec::new(),
+                    operations: 0,
+                    first_step: o.step,
+                    last_step: o.step,
+                    loads: 0,
+                    volume_mm3: 0.0,
+                    time_min: 0.0,
+                });
+                out.len() - 1
+            }
+        };
+        let u = &mut out[k];
+        if !u.stages.contains(&o.stage) {
+            u.stages.push(o.stage);
+        }
+        u.operations += 1;
+        u.last_step = o.step;
+        u.loads += usize::from(loaded != Some(o.tool.as_str()));
+        u.volume_mm3 += o.volume_mm3;
+        u.time_min += o.time_min;
+        loaded = Some(o.tool.as_str());
+    }
+    out
+}
+
+/// What no tool of the library takes, where: what none reaches, and
+/// what one would reach but under the minimum share (`below_minimum`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Rest {
     pub layer: usize,
@@ -239,6 +293,8 @@ pub struct Rest {
     pub area_mm2: f64,
     pub width_mm: f64,
     pub outlines: Vec<Vec<[f64; 2]>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub below_minimum: Option<crate::rest::BelowMinimum>,
 }
 
 /// The operations of one set-up.
@@ -287,6 +343,9 @@ pub struct SetupOperations {
     /// blocks an earlier set-up along another axis reached in part (judged
     /// at points inside them), cut whole here, mm³.
     pub recut_mm3: f64,
+    /// The tools in the order they first run, what each cuts and its
+    /// time: the set-up's tool sheet.
+    pub tool_sheet: Vec<ToolUse>,
     /// Tool changes in the chosen order, and in the plain one.
     pub tool_changes: usize,
     pub plain_tool_changes: usize,
@@ -300,11 +359,13 @@ pub struct SetupOperations {
 
 /// Plan the operations for the removal `r` with the library's end mills,
 /// and its drills for the `holes` they match. `axial_depth_mm` defaults
-/// to the largest end mill's a_p.
+/// to the largest end mill's a_p; no layer over a thin wall's heights is
+/// deeper than its `limits` allow.
 pub fn operations(
     r: &Removal,
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
+    limits: &[thinwall_plan::StepLimit],
     holes: &[HoleSite],
     work: Work<'_>,
 ) -> SetupOperations {
@@ -314,10 +375,11 @@ pub fn operations(
         &LayerOptions {
             axial_depth_mm: a_p,
             smallest_tool_mm: mills.last().map_or(0.0, |t| t.diameter_mm),
+            step_limits: limits.to_vec(),
         },
     );
     let tol = 1e-6 * r.size.max(1.0);
-    let field_tools = tools_for(&layers, &mills, holes, tol, work);
+    let field_tools = tools_for(&layers, &mills, lib.min_share_mm2, holes, tol, work);
     assemble(
         Assembly {
             lib,
@@ -347,6 +409,7 @@ pub(crate) fn mills_and_depth(
 pub(crate) fn tools_for(
     layers: &[RoughingLayer],
     mills: &[&CuttingTool],
+    min_share_mm2: f64,
     holes: &[HoleSite],
     tol: f64,
     work: Work<'_>,
@@ -356,7 +419,7 @@ pub(crate) fn tools_for(
             .iter()
             .map(|f| match drilled_by(f, l, holes, tol) {
                 Some(h) => FieldTools::drilled(&holes[h].id),
-                None => select(f, mills, &l.floor_region),
+                None => select(f, mills, &l.floor_region, min_share_mm2),
             })
             .collect()
     })
@@ -451,6 +514,7 @@ pub(crate) fn assemble(
         holes: holes.to_vec(),
         // (An empty sum is −0.)
         time_min: operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0,
+        tool_sheet: tool_sheet(&operations),
         tool_changes: changes(&order),
         plain_tool_changes: changes(&plain),
         travel_mm: travel(&order),
@@ -483,6 +547,7 @@ fn rests(field_tools: &[Vec<FieldTools>]) -> Vec<Rest> {
                     area_mm2: ft.rest_mm2,
                     width_mm: ft.rest_width_mm,
                     outlines: ft.rest.clone(),
+                    below_minimum: ft.below_minimum.clone(),
                 })
         })
         .collect()
@@ -761,6 +826,7 @@ pub(crate) fn recount(ops: &mut SetupOperations) {
     ops.plain_tool_changes += changes.saturating_sub(ops.tool_changes);
     ops.tool_changes = changes;
     ops.time_min = ops.operations.iter().map(|o| o.time_min).sum::<f64>() + 0.0;
+    ops.tool_sheet = tool_sheet(&ops.operations);
 }
 
 fn is_zero(x: &f64) -> bool {

@@ -175,6 +175,8 @@ pub fn by_feature(
                 floors: Vec::new(),
                 floor_region,
                 area_mm2: fields.iter().map(|f| f.area_mm2).sum(),
+                // The plan's step features are the step approach here.
+                step_limit_mm: None,
                 fields,
             });
             above = z;
@@ -186,7 +188,7 @@ pub fn by_feature(
         .iter()
         .map(|r| (r.before.clone(), r.after.clone()))
         .collect();
-    let field_tools = tools_for(&layers, &mills, holes, tol, work);
+    let field_tools = tools_for(&layers, &mills, lib.min_share_mm2, holes, tol, work);
     let mut ops = assemble(
         Assembly {
             lib,

@@ -95,6 +95,14 @@ impl Adjacency {
     }
 }
 
+/// Part of a field's rest that `tool` would take, left because it is
+/// under the minimum share a tool must take to run there.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BelowMinimum {
+    pub tool: String,
+    pub area_mm2: f64,
+}
+
 /// A field's tools, largest first, and what none of them reaches.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FieldTools {
@@ -107,6 +115,10 @@ pub struct FieldTools {
     pub rest: Vec<Vec<[f64; 2]>>,
     /// The widest piece of the rest, mm (0 when none).
     pub rest_width_mm: f64,
+    /// Of the rest, what a tool would reach but the share it would take
+    /// is under the library's minimum (`min_share_mm2`): that tool.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub below_minimum: Option<BelowMinimum>,
     /// The hole (machining feature id) whose drill takes the whole field
     /// instead of the end mills.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -123,6 +135,7 @@ impl FieldTools {
             rest_mm2: 0.0,
             rest: Vec::new(),
             rest_width_mm: 0.0,
+            below_minimum: None,
             drilled: Some(hole.to_string()),
         }
     }
@@ -269,13 +282,17 @@ pub(crate) fn noise(d: f64) -> f64 {
 
 /// The tools for one field: `mills` largest first; a tool that clears
 /// nothing new is skipped, and the descent stops once nothing is left
-/// (within 1e-9 of the field).
+/// (within 1e-9 of the field). A tool whose share would be under
+/// `min_share_mm2` does not run there: the next smaller tool takes that
+/// share with its own, and what the last such tool would take is left as
+/// rest below the minimum.
 /// `floor` is the part's floors at the layer's bottom (x, y), for the
 /// bottom adjacency and each share's floor area.
 pub fn select(
     field: &CutterField,
     mills: &[&CuttingTool],
     floor: &MultiPolygon<f64>,
+    min_share_mm2: f64,
 ) -> FieldTools {
     let s = shape(field);
     let area = s.region.unsigned_area();
@@ -284,6 +301,7 @@ pub fn select(
     let mut shares = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
+    let mut below: Option<BelowMinimum> = None;
     for t in mills {
         if area - done_area <= tiny {
             break;
@@ -294,26 +312,29 @@ pub fn select(
         let first = shares
             .first()
             .map_or(t.diameter_mm, |s: &ToolShare| s.diameter_mm);
-        if now - done_area > tiny.max(noise(first)) {
-            let cleared_mm2 = now - done_area;
-            let (boundary, full_cut) = regions(&s, &c, &done, t);
-            let full_cut = full_cut.min(cleared_mm2 - boundary).max(0.0);
-            let boundary = boundary.min(cleared_mm2);
-            shares.push(ToolShare {
-                tool: t.name.clone(),
-                diameter_mm: t.diameter_mm,
-                cleared_mm2,
-                boundary_mm2: boundary,
-                full_cut_mm2: full_cut,
-                roughing_mm2: (cleared_mm2 - boundary - full_cut).max(0.0),
-                floor_mm2: (intersection(&c, &floor).unsigned_area()
-                    - intersection(&done, &floor).unsigned_area())
-                .max(0.0),
-                first: shares.is_empty(),
-            });
-            done = c;
-            done_area = now;
+        let cleared_mm2 = now - done_area;
+        if cleared_mm2 <= tiny.max(noise(first)) {
+            continue;
         }
+        if cleared_mm2 < min_share_mm2 {
+            below = Some(BelowMinimum {
+                tool: t.name.clone(),
+                area_mm2: cleared_mm2,
+            });
+            continue;
+        }
+        below = None;
+        shares.push(share(
+            &s,
+            &c,
+            &done,
+            t,
+            cleared_mm2,
+            &floor,
+            shares.is_empty(),
+        ));
+        done = c;
+        done_area = now;
     }
     let side = !s.part.is_empty();
     let bottom = floor.unsigned_area() > tiny;
@@ -352,7 +373,36 @@ pub fn select(
         } else {
             Vec::new()
         },
+        below_minimum: below,
         drilled: None,
+    }
+}
+
+/// Tool `t`'s share of the field `s`: what its opening `c` adds to `done`
+/// (`cleared_mm2`), split into Popma's regions, and its floor.
+fn share(
+    s: &Shape,
+    c: &MultiPolygon<f64>,
+    done: &MultiPolygon<f64>,
+    t: &CuttingTool,
+    cleared_mm2: f64,
+    floor: &MultiPolygon<f64>,
+    first: bool,
+) -> ToolShare {
+    let (boundary, full_cut) = regions(s, c, done, t);
+    let full_cut = full_cut.min(cleared_mm2 - boundary).max(0.0);
+    let boundary = boundary.min(cleared_mm2);
+    ToolShare {
+        tool: t.name.clone(),
+        diameter_mm: t.diameter_mm,
+        cleared_mm2,
+        boundary_mm2: boundary,
+        full_cut_mm2: full_cut,
+        roughing_mm2: (cleared_mm2 - boundary - full_cut).max(0.0),
+        floor_mm2: (intersection(c, floor).unsigned_area()
+            - intersection(done, floor).unsigned_area())
+        .max(0.0),
+        first,
     }
 }
 
@@ -399,7 +449,7 @@ mod tests {
         assert!((em20.finish_radial_depth_mm - 2.0).abs() < 1e-12);
         let none = MultiPolygon::new(vec![]);
         for (width, full_cut, ends) in [(25.0, 4200.0, 2.0 * 104.7), (40.0, 0.0, 0.0)] {
-            let ft = select(&channel(width), &[em20], &none);
+            let ft = select(&channel(width), &[em20], &none, 0.0);
             assert_eq!(ft.shares.len(), 1);
             let s = &ft.shares[0];
             assert!((s.cleared_mm2 - 200.0 * width).abs() < 1e-6, "{s:?}");
@@ -428,7 +478,7 @@ mod tests {
         f.outer.edges = vec![EdgeKind::Part; 4];
         f.area_mm2 = 3600.0;
         let floor = MultiPolygon::new(vec![f.polygon()]);
-        let ft = select(&f, &[em20], &floor);
+        let ft = select(&f, &[em20], &floor, 0.0);
         assert_eq!(ft.adjacency, Adjacency::SideAndBottom);
         assert_eq!(ft.entry, Entry::Ramp);
         let s = &ft.shares[0];

@@ -8,6 +8,7 @@ use crate::ToolLibrary;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::Frame;
 use thinwall_machining::MachiningFeature;
+use thinwall_plan::StepLimit;
 use thinwall_removal::{frame_of, Removal, RemovalError, StockShape};
 use thiserror::Error;
 
@@ -50,7 +51,9 @@ fn frame_for(a: &PartAnalysis, lib: &ToolLibrary) -> Result<(Frame, [f64; 3], [f
 }
 
 /// The operations of `a`'s set-up with `lib` (the stock is the part's
-/// oriented box), and the removal frame their contours are in.
+/// oriented box), and the removal frame their contours are in; no layer
+/// beside a thin wall deeper than its `limits` allow
+/// (`thinwall_plan::step_limits`).
 /// `features` are the part's machining features found in this set-up (its
 /// up the tool axis): the holes among them are drilled. Set-ups after
 /// another: [`plan_in_turn`].
@@ -59,12 +62,13 @@ pub fn plan_setup(
     features: &[MachiningFeature],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
+    limits: &[StepLimit],
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
     let removal =
         Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
-    let (ops, _) = plan_in_turn(a, &removal, features, &[], lib, axial_depth_mm)?;
+    let (ops, _) = plan_in_turn(a, &removal, features, &[], lib, axial_depth_mm, limits)?;
     Ok((frame, ops))
 }
 
@@ -81,12 +85,13 @@ pub fn plan_in_turn(
     drilled_before: &[u64],
     lib: &ToolLibrary,
     axial_depth_mm: Option<f64>,
+    limits: &[StepLimit],
 ) -> Result<(SetupOperations, Vec<u64>), OpsError> {
     frame_for(a, lib)?;
     let frame = removal.frame;
     let here = not_drilled(features, drilled_before);
     let holes = hole_sites(&here, &frame, lib);
-    let mut ops = operations(removal, lib, axial_depth_mm, &holes, a.work());
+    let mut ops = operations(removal, lib, axial_depth_mm, limits, &holes, a.work());
     ops.meshed = removal.meshed.clone();
     ops.out_of_reach_mm3 = crate::layers::out_of_reach_mm3(removal);
     ops.cleared_before_mm3 = removal.cleared_volume();

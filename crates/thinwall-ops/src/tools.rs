@@ -70,8 +70,15 @@ struct RawTool {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawFile {
+    min_share_mm2: Option<f64>,
     tool: Vec<toml::Spanned<RawTool>>,
 }
+
+/// The least area (mm²) a tool must take in a cutter field of a layer to
+/// run there, unless the library says otherwise (`min_share_mm2`): what
+/// a smaller share would take goes to the next smaller tool, or is left
+/// as rest below the minimum.
+pub const DEFAULT_MIN_SHARE_MM2: f64 = 20.0;
 
 /// A checked tool. Lengths in mm.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -143,6 +150,10 @@ impl CuttingTool {
 pub struct ToolLibrary {
     /// Where they came from (a path, or `default`).
     pub source: String,
+    /// The least area a tool must take in a cutter field of a layer to
+    /// run there, mm² ([`DEFAULT_MIN_SHARE_MM2`] unless the file sets
+    /// `min_share_mm2`).
+    pub min_share_mm2: f64,
     pub tools: Vec<CuttingTool>,
 }
 
@@ -184,6 +195,13 @@ impl ToolLibrary {
             file: file.to_string(),
             message: e.to_string().trim_end().to_string(),
         })?;
+        let min_share_mm2 = raw.min_share_mm2.unwrap_or(DEFAULT_MIN_SHARE_MM2);
+        if !(min_share_mm2.is_finite() && min_share_mm2 >= 0.0) {
+            return Err(ToolsError::Toml {
+                file: file.to_string(),
+                message: format!("`min_share_mm2` must be 0 or more, got {min_share_mm2}"),
+            });
+        }
         let mut tools: Vec<CuttingTool> = Vec::new();
         for spanned in raw.tool {
             let line = 1 + text[..spanned.span().start.min(text.len())]
@@ -227,6 +245,7 @@ impl ToolLibrary {
         });
         Ok(Self {
             source: file.to_string(),
+            min_share_mm2,
             tools,
         })
     }

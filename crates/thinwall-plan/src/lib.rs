@@ -9,6 +9,7 @@ pub mod adapt;
 pub mod classified;
 pub mod feature_order;
 pub mod features;
+mod limits;
 pub mod rules;
 pub mod scene;
 pub mod sequence;
@@ -21,6 +22,7 @@ mod types;
 pub mod volumes;
 mod whole;
 
+pub use limits::StepLimit;
 pub use rules::{Relation, Rule, RuleSet, RulesError};
 pub use scene::Scene;
 pub use sequence::{sequence, Constraint, Rejected, Rejection, Sequence};
@@ -123,6 +125,13 @@ impl PlanError {
             PlanError::Sizing { source, .. } => source.code().to_string(),
         }
     }
+}
+
+/// How deep a layer beside each thin wall of `out` standing along its
+/// set-up's up may be cut ([`StepLimit`]): the operations planner's levels
+/// keep to them.
+pub fn step_limits(out: &Outcome) -> Result<Vec<StepLimit>, PlanError> {
+    Ok(limits::step_limits(out, &wall_plans(out)?))
 }
 
 /// Sizes for every thin wall with a length, thickness and height. A wall

@@ -146,6 +146,14 @@ impl OperationsReport {
             self.tools.source,
             self.tools.tools.len()
         );
+        let stepped: Vec<f64> = r.layers.iter().filter_map(|l| l.step_limit_mm).collect();
+        if let Some(least) = stepped.iter().copied().min_by(f64::total_cmp) {
+            let _ = writeln!(
+                s,
+                "step approach: {} layer(s) beside thin walls, none deeper than the walls' h_RF (at least {least:.2} mm); each tool finishes a step's walls before it clears the layer below",
+                stepped.len()
+            );
+        }
         if !r.meshed.is_empty() {
             let _ = writeln!(
                 s,
@@ -172,6 +180,7 @@ impl OperationsReport {
         for o in &r.operations {
             operation_line(&mut s, o);
         }
+        tool_sheet_text(&mut s, &r.tool_sheet);
         let small: usize = r
             .layers
             .iter()
@@ -187,7 +196,7 @@ impl OperationsReport {
         if small > 0 {
             let _ = writeln!(s, "{small} field(s) narrower than the smallest tool");
         }
-        crate::rests::write_rests(&mut s, &r.rest);
+        crate::rests::write_rests(&mut s, &r.rest, self.tools.min_share_mm2);
         for f in &r.radius_finishes {
             radius_line(&mut s, f);
         }
@@ -337,4 +346,29 @@ fn hole_stage_line(s: &mut String, h: &thinwall_ops::hole_stages::HoleStage) {
         "hole {}: {what}{angle} Ø{:.2}{end}, {:.2} deep: {by}",
         h.hole, h.diameter_mm, h.depth_mm
     );
+}
+
+/// The set-up's tools in the order they first run: what each does, its
+/// operations, when it is in the spindle, what it cuts and its time.
+fn tool_sheet_text(s: &mut String, sheet: &[thinwall_ops::operations::ToolUse]) {
+    if sheet.is_empty() {
+        return;
+    }
+    let _ = writeln!(s, "tools in order ({}):", sheet.len());
+    for u in sheet {
+        let stages: Vec<&str> = u.stages.iter().map(|st| st.name()).collect();
+        let _ = writeln!(
+            s,
+            "  {:<8} Ø{:<5.1} {} operation(s), steps {}–{}, loaded {}×: {}; {:.0} mm³, {:.2} min",
+            u.tool,
+            u.diameter_mm,
+            u.operations,
+            u.first_step,
+            u.last_step,
+            u.loads,
+            stages.join(", "),
+            u.volume_mm3,
+            u.time_min
+        );
+    }
 }

@@ -188,6 +188,13 @@ impl OperationsRequest {
                 ));
             }
         }
+        let m = self.tools.min_share_mm2;
+        if !(m.is_finite() && m >= 0.0) {
+            return Err(StudyError::invalid(
+                "min_share",
+                format!("must be an area of 0 mm² or more, got {m}"),
+            ));
+        }
         if self.choose_up && self.setup.placement.is_some() {
             return Err(StudyError::invalid(
                 "choose_up",

@@ -335,7 +335,8 @@ pub fn operations_observed<'p>(
                 req.axial_depth,
             )?
         } else {
-            thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth)?
+            let limits = step_limits(study, &at, &req.setup)?;
+            thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth, &limits)?
         };
         let report =
             OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
@@ -374,6 +375,7 @@ fn in_turn<'p>(
         stage(&setup_stage(k, removals.len(), &setup.up));
         let at = study.at(&setup)?;
         let holes = found_in_setup(study, &at, &setup)?;
+        let limits = step_limits(study, &at, &setup)?;
         let (ops, here) = thinwall_ops::setup::plan_in_turn(
             &at.analysis,
             r,
@@ -381,6 +383,7 @@ fn in_turn<'p>(
             &drilled,
             &req.tools,
             req.axial_depth,
+            &limits,
         )?;
         drilled.extend(here);
         let ops = thinwall_ops::operations::SetupOperations {
@@ -476,6 +479,22 @@ fn along_plans<'p>(
 
 /// The recognition with the machining features found in `setup` (its up
 /// the tool axis): the holes operations drill.
+/// How deep a layer beside each thin wall of the part in `setup` may be
+/// (the step approach of the default operations): from the recognition
+/// `plan` sizes its walls on.
+fn step_limits(
+    study: &Study<'_>,
+    at: &AtSetup<'_>,
+    setup: &Setup,
+) -> Result<Vec<thinwall_plan::StepLimit>, StudyError> {
+    let recognize = RecognizeRequest {
+        setup: setup.clone(),
+        ..Default::default()
+    };
+    let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
+    Ok(thinwall_plan::step_limits(&outcome)?)
+}
+
 fn found_in_setup(
     study: &Study<'_>,
     at: &AtSetup<'_>,
