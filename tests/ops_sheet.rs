@@ -4,8 +4,9 @@
 //!   library's minimum share;
 //! - the step approach of thin walls holds: beside a thin wall standing
 //!   along up (the plan's sizes: its `h_RF`, its step layers' heights) no
-//!   clearing pass is deeper than its `h_RF`, and each tool finishes a
-//!   step's walls before it clears the layer below;
+//!   clearing pass is deeper than its `h_RF`, and each clearing pass there
+//!   finishes its own walls (no wall finish apart, after the layers below
+//!   are gone);
 //! - the tool sheet lists every tool that runs, once, with its operations
 //!   and time adding up to the set-up's.
 //!
@@ -67,9 +68,8 @@ fn overlaps(top: f64, bottom: f64, w: &ThinWall) -> bool {
     top.min(w.z[1]) - bottom.max(w.z[0]) > TOL
 }
 
-/// Every clearing pass beside a thin wall within its `h_RF`, and each
-/// tool's wall finish of a layer beside it before that tool clears the
-/// next layer down. Returns how many passes were checked.
+/// Every clearing pass beside a thin wall within its `h_RF`, and its
+/// walls finished in the same pass. Returns how many passes were checked.
 fn assert_step_approach(ops: &SetupOperations, walls: &[ThinWall], what: &str) -> usize {
     let mut checked = 0;
     for o in &ops.operations {
@@ -98,39 +98,28 @@ fn assert_step_approach(ops: &SetupOperations, walls: &[ThinWall], what: &str) -
             }
         }
     }
-    // (tool, layer) → step of its wall finish and of its clearing there.
-    let step_of = |tool: &str, layer: usize, finish: bool| {
-        ops.operations.iter().find_map(|o| {
-            let is_finish = o.stage == Stage::FinishWalls;
-            let clears = matches!(o.stage, Stage::Rough | Stage::SemiFinish);
-            let kind = if finish { is_finish } else { clears };
-            (o.tool == tool && kind && o.passes.iter().any(|p| p.layer == layer)).then_some(o.step)
-        })
-    };
-    for (k, l) in ops.layers.iter().enumerate() {
-        if !walls.iter().any(|w| overlaps(l.z_top_mm, l.z_bottom_mm, w)) {
-            continue;
-        }
-        for o in ops
-            .operations
-            .iter()
-            .filter(|o| o.stage == Stage::FinishWalls)
-        {
-            if !o.passes.iter().any(|p| p.layer == k) {
+    // No wall finish apart from the clearing beside a thin wall: each
+    // clearing pass there finishes its own boundary region (its walls)
+    // while the layer below still holds them.
+    let mut boundary = 0.0;
+    for o in &ops.operations {
+        for p in &o.passes {
+            if !walls.iter().any(|w| overlaps(p.z_top_mm, p.z_bottom_mm, w)) {
                 continue;
             }
-            if let (Some(f), Some(c)) = (step_of(&o.tool, k, true), step_of(&o.tool, k + 1, false))
-            {
-                assert!(
-                    f < c,
-                    "{what}: {} finishes layer {}'s walls at step {f}, after clearing layer {} at step {c}",
-                    o.tool,
-                    k + 1,
-                    k + 2
-                );
-            }
+            assert!(
+                o.stage != Stage::FinishWalls,
+                "{what}: step {} finishes walls apart in layer {}, beside a thin wall",
+                o.step,
+                p.layer + 1
+            );
+            boundary += p.regions.map_or(0.0, |r| r.boundary_mm2);
         }
     }
+    assert!(
+        checked == 0 || boundary > 0.0,
+        "{what}: no pass beside a thin wall finishes it"
+    );
     checked
 }
 

@@ -635,6 +635,7 @@ fn draft<'a>(
     layer: &RoughingLayer,
     tiny: f64,
 ) -> Option<Draft<'a>> {
+    let stepped = layer.step_limit_mm.is_some();
     let mut d = Draft {
         tool: t,
         layer: k,
@@ -653,11 +654,12 @@ fn draft<'a>(
         let Some(s) = ft.shares.iter().find(|s| s.tool == t.name) else {
             continue;
         };
-        let walls = wall_share(s);
+        // Beside a thin wall each clearing pass finishes its walls too.
+        let walls = if stepped { 0.0 } else { wall_share(s) };
         let works = match stage {
             Stage::Rough => s.first && s.cleared_mm2 - walls > 0.0,
             Stage::SemiFinish => !s.first && s.cleared_mm2 - walls > 0.0,
-            Stage::FinishWalls => walls > tiny,
+            Stage::FinishWalls => !stepped && walls > tiny,
             Stage::Finish => s.floor_mm2 > tiny && !layer.floors.is_empty(),
             Stage::Drill | Stage::FinishRadii => false,
         };
@@ -666,7 +668,7 @@ fn draft<'a>(
         }
         d.fields.push(j);
         d.adjacency = d.adjacency.with(ft.adjacency);
-        add_share(&mut d, s, stage);
+        add_share(&mut d, s, stage, stepped);
     }
     (!d.fields.is_empty()).then_some(d)
 }
@@ -685,10 +687,12 @@ fn wall_share(s: &ToolShare) -> f64 {
 
 /// Add a tool's share of a field to a draft: a floor finish takes its
 /// floor; a wall finish its boundary region; rough and semi-finish the
-/// rest of what it clears. The floor under what it clears goes with each
-/// in proportion (its finishing skin is the floor finish's).
-fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
-    let boundary = wall_share(s);
+/// rest of what it clears, or all of it in a layer beside a thin wall
+/// (`stepped`: the boundary region finished in the same pass, Popma
+/// §4.3.1). The floor under what it clears goes with each in proportion
+/// (its finishing skin is the floor finish's).
+fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage, stepped: bool) {
+    let boundary = if stepped { 0.0 } else { wall_share(s) };
     let on_floor = |area: f64| {
         if s.cleared_mm2 > 0.0 {
             s.floor_mm2 * area / s.cleared_mm2
@@ -712,6 +716,9 @@ fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage) {
             if let Some(r) = &mut d.regions {
                 r.full_cut_mm2 += s.full_cut_mm2;
                 r.roughing_mm2 += s.roughing_mm2;
+                if stepped {
+                    r.boundary_mm2 += s.cleared_mm2 - s.full_cut_mm2 - s.roughing_mm2;
+                }
             }
         }
     }

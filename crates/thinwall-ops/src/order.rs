@@ -61,12 +61,6 @@ pub(crate) fn precedence(
                 }
                 continue;
             }
-            if e.stage == Stage::FinishWalls && supports(e, d, layers) {
-                // The step approach: a thin wall's step is finished while
-                // the material below it still holds it.
-                g.add_edge(nodes[j], nodes[i], ());
-                continue;
-            }
             if matches!(e.stage, Stage::Finish | Stage::FinishWalls) {
                 continue;
             }
@@ -90,17 +84,6 @@ pub(crate) fn precedence(
         }
     }
     g
-}
-
-/// Whether `e` (a wall finish) must come before `d`: `d` clears the next
-/// layer down with the same tool, and `e`'s layer lies beside a thin wall
-/// (it has a step limit).
-fn supports(e: &Draft, d: &Draft, layers: &[RoughingLayer]) -> bool {
-    matches!(d.stage, Stage::Rough | Stage::SemiFinish)
-        && e.layer + 1 == d.layer
-        && e.tool.name == d.tool.name
-        && layers[e.layer].step_limit_mm.is_some()
-        && layers[e.layer].feature == layers[d.layer].feature
 }
 
 /// Every operation of a feature before every operation of a feature

@@ -18,7 +18,9 @@ pub enum Stage {
     SemiFinish,
     /// Along the part's walls: a tool's boundary region (Popma's, within
     /// the finishing stepover of a part contour), down milling at the
-    /// finishing conditions, after that tool's roughing of the layer.
+    /// finishing conditions, after that tool's roughing of the layer. In a
+    /// layer beside a thin wall there is none: the rough and semi-finish
+    /// passes take their boundary region themselves (the step approach).
     FinishWalls,
     /// A floor's finishing layer.
     Finish,

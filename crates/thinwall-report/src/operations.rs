@@ -150,7 +150,7 @@ impl OperationsReport {
         if let Some(least) = stepped.iter().copied().min_by(f64::total_cmp) {
             let _ = writeln!(
                 s,
-                "step approach: {} layer(s) beside thin walls, none deeper than the walls' h_RF (at least {least:.2} mm); each tool finishes a step's walls before it clears the layer below",
+                "step approach: {} layer(s) beside thin walls, none deeper than the walls' h_RF (at least {least:.2} mm), each pass finishing its walls (boundary) while the layer below holds them",
                 stepped.len()
             );
         }
