@@ -481,7 +481,8 @@ fn along_plans<'p>(
 /// the tool axis): the holes operations drill.
 /// How deep a layer beside each thin wall of the part in `setup` may be
 /// (the step approach of the default operations): from the recognition
-/// `plan` sizes its walls on.
+/// `plan` sizes its walls on. An open shell is recognized all the same
+/// (as the holes are): the removal names what is wrong with it.
 fn step_limits(
     study: &Study<'_>,
     at: &AtSetup<'_>,
@@ -489,6 +490,7 @@ fn step_limits(
 ) -> Result<Vec<thinwall_plan::StepLimit>, StudyError> {
     let recognize = RecognizeRequest {
         setup: setup.clone(),
+        allow_open: true,
         ..Default::default()
     };
     let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
