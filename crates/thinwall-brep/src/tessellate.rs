@@ -104,7 +104,7 @@ pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
         .face_ids()
         .map(|f| face_deviation(&part.face(f).surface, deviation))
         .collect();
-    let (first, chords) = tessellate_with(part, &by_surface);
+    let (first, chords) = tessellate_with(part, &by_surface, deviation);
     // Where a face's boundary chords could change its area by more than
     // `BOUNDARY_AREA` of it, the face (and so its edges) gets finer.
     let refined: Vec<f64> = first
@@ -134,13 +134,17 @@ pub fn tessellate(part: &Part, deviation: f64) -> Mesh {
     if refined == by_surface {
         return first;
     }
-    tessellate_with(part, &refined).0
+    tessellate_with(part, &refined, deviation).0
 }
 
 /// Tessellate with a deviation per face (by `FaceId::index()`); an edge is
 /// as fine as the finest face it bounds.
 /// Also, per edge, how far its chords are off its curve.
-fn tessellate_with(part: &Part, face_deviation: &[f64]) -> (Mesh, Vec<ChordsOff>) {
+fn tessellate_with(
+    part: &Part,
+    face_deviation: &[f64],
+    part_deviation: f64,
+) -> (Mesh, Vec<ChordsOff>) {
     let mut edge_deviation = vec![f64::INFINITY; part.edges.len()];
     for f in part.face_ids() {
         for &l in &part.face(f).loops {
@@ -178,7 +182,7 @@ fn tessellate_with(part: &Part, face_deviation: &[f64]) -> (Mesh, Vec<ChordsOff>
     };
     for f in part.face_ids() {
         let d = face_deviation[f.index()];
-        let fm = face_mesh(part, f, &edge_points, d, &mut mesh.points);
+        let fm = face_mesh(part, f, &edge_points, (d, part_deviation), &mut mesh.points);
         mesh.faces.push(fm);
     }
     mesh.edges = edge_points;
@@ -427,7 +431,8 @@ pub fn face_triangles(
         face,
         &chart,
         &edge_points,
-        deviation.max(1e-9),
+        // Rows along a generator as before: no part deviation here.
+        (deviation.max(1e-9), 0.0),
         &mut points,
     )?;
     Ok((points, triangles))
@@ -438,7 +443,7 @@ fn face_mesh(
     part: &Part,
     f: FaceId,
     edge_points: &[Vec<u32>],
-    deviation: f64,
+    deviation: (f64, f64),
     points: &mut Vec<Point3>,
 ) -> FaceMesh {
     let face = part.face(f);
@@ -531,12 +536,15 @@ fn loop_ids(part: &Part, face: &Face, edge_points: &[Vec<u32>]) -> Vec<Vec<u32>>
 /// A polygon of the parameter plane, each corner with its point id.
 type Ring = Vec<([f64; 2], u32)>;
 
+/// `deviation`: the face's, and the part's (rows along a straight
+/// generator are never closer than the part's: the surface is straight
+/// that way, whatever the face's radius).
 fn triangulate(
     part: &Part,
     face: &Face,
     chart: &Chart,
     edge_points: &[Vec<u32>],
-    deviation: f64,
+    (deviation, part_deviation): (f64, f64),
     points: &mut Vec<Point3>,
 ) -> Result<Vec<[u32; 3]>, String> {
     let loops = loop_ids(part, face, edge_points);
@@ -561,7 +569,7 @@ fn triangulate(
     if let Some(period) = chart.periodic_v() {
         align_turns(&mut rings, period, 1);
     }
-    let grid = Grid::of(chart, &rings, deviation);
+    let grid = Grid::of(chart, &rings, deviation, part_deviation);
     if let Some(g) = &grid {
         g.split_poles(&mut rings);
         if let Some((r, k)) = cut {
@@ -1005,7 +1013,7 @@ struct Grid {
 }
 
 impl Grid {
-    fn of(chart: &Chart, rings: &[Ring], deviation: f64) -> Option<Grid> {
+    fn of(chart: &Chart, rings: &[Ring], deviation: f64, part_deviation: f64) -> Option<Grid> {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for c in rings.iter().flatten() {
             for k in 0..2 {
@@ -1025,7 +1033,8 @@ impl Grid {
                 let step = arc_step(deviation, r.max(1e-9)) * scale;
                 (
                     ((hi[0] - lo[0]) / step.max(1e-9)).ceil() as usize,
-                    ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(1e-9)).ceil() as usize,
+                    ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(part_deviation).max(1e-9))
+                        .ceil() as usize,
                 )
             }
             Chart::Torus { major, minor, .. } => {
