@@ -717,7 +717,7 @@ fn add_share(d: &mut Draft, s: &ToolShare, stage: Stage, stepped: bool) {
                 r.full_cut_mm2 += s.full_cut_mm2;
                 r.roughing_mm2 += s.roughing_mm2;
                 if stepped {
-                    r.boundary_mm2 += s.cleared_mm2 - s.full_cut_mm2 - s.roughing_mm2;
+                    r.boundary_mm2 += s.boundary_mm2;
                 }
             }
         }

@@ -37,6 +37,7 @@ use std::collections::{BTreeMap, HashMap};
 use thinwall_analysis::measure::boundary_points;
 use thinwall_analysis::{FeatureId, StiffnessKind};
 use thinwall_brep::{FaceId, Part};
+use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_pipeline::Outcome;
 use thinwall_recognize::{StiffnessFeature, WallGeometry};
@@ -56,6 +57,21 @@ impl Axis {
             height,
             length: along(&ld),
         }
+    }
+}
+
+impl Axis {
+    /// The height along `up` of the wall's axis `from_foot` mm above its
+    /// foot.
+    pub fn height_along(&self, up: &Vector3, from_foot: f64) -> f64 {
+        (self.origin + self.height_dir * (self.foot + from_foot))
+            .coords
+            .dot(up)
+    }
+
+    /// Whether the wall stands along `up` (or hangs along it).
+    pub fn stands_along(&self, up: &Vector3) -> bool {
+        self.height_dir.dot(up).abs() > 1.0 - NEAR_PARALLEL_EPS
     }
 }
 

@@ -9,7 +9,6 @@
 use crate::types::{Axis, WallPlan};
 use serde::Serialize;
 use thinwall_analysis::FeatureId;
-use thinwall_geom::tolerance::NEAR_PARALLEL_EPS;
 use thinwall_pipeline::Outcome;
 
 /// A thin wall standing along up, the heights it spans and the deepest
@@ -43,11 +42,13 @@ pub(crate) fn step_limits(out: &Outcome, walls: &[WallPlan]) -> Vec<StepLimit> {
             continue;
         };
         let axis = Axis::of(g, w.sizes.wall.height);
-        if axis.height_dir.dot(&up).abs() <= 1.0 - NEAR_PARALLEL_EPS {
+        if !axis.stands_along(&up) {
             continue;
         }
-        let z = |h: f64| (axis.origin + axis.height_dir * h).coords.dot(&up);
-        let (a, b) = (z(axis.foot), z(axis.foot + axis.height));
+        let (a, b) = (
+            axis.height_along(&up, 0.0),
+            axis.height_along(&up, axis.height),
+        );
         limits.push(StepLimit {
             wall: w.id,
             z_mm: [a.min(b), a.max(b)],

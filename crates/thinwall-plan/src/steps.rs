@@ -137,7 +137,6 @@ fn wall_layers(
             }
         }
         let zs: Vec<f64> = corners.iter().map(|p| p.coords.dot(up)).collect();
-        let axis_z = |hh: f64| (g.frame.origin + hd * (foot + hh)).coords.dot(up);
         Layer {
             id: VolumeId::default(),
             owner: w.id,
@@ -151,8 +150,8 @@ fn wall_layers(
             ],
             // A wall standing along up is cut at heights on its axis; a
             // web's layer (a slab over it) between its lowest and highest.
-            cut_heights: if hd.dot(up).abs() > 1.0 - NEAR_PARALLEL_EPS {
-                [axis_z(from), axis_z(to)]
+            cut_heights: if axis.stands_along(up) {
+                [axis.height_along(up, from), axis.height_along(up, to)]
             } else {
                 [
                     zs.iter().copied().fold(f64::INFINITY, f64::min),

@@ -335,7 +335,7 @@ pub fn operations_observed<'p>(
                 req.axial_depth,
             )?
         } else {
-            let limits = step_limits(study, &at, &req.setup)?;
+            let limits = thinwall_plan::step_limits(&holes)?;
             thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth, &limits)?
         };
         let report =
@@ -375,7 +375,7 @@ fn in_turn<'p>(
         stage(&setup_stage(k, removals.len(), &setup.up));
         let at = study.at(&setup)?;
         let holes = found_in_setup(study, &at, &setup)?;
-        let limits = step_limits(study, &at, &setup)?;
+        let limits = thinwall_plan::step_limits(&holes)?;
         let (ops, here) = thinwall_ops::setup::plan_in_turn(
             &at.analysis,
             r,
@@ -479,24 +479,6 @@ fn along_plans<'p>(
 
 /// The recognition with the machining features found in `setup` (its up
 /// the tool axis): the holes operations drill.
-/// How deep a layer beside each thin wall of the part in `setup` may be
-/// (the step approach of the default operations): from the recognition
-/// `plan` sizes its walls on. An open shell is recognized all the same
-/// (as the holes are): the removal names what is wrong with it.
-fn step_limits(
-    study: &Study<'_>,
-    at: &AtSetup<'_>,
-    setup: &Setup,
-) -> Result<Vec<thinwall_plan::StepLimit>, StudyError> {
-    let recognize = RecognizeRequest {
-        setup: setup.clone(),
-        allow_open: true,
-        ..Default::default()
-    };
-    let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
-    Ok(thinwall_plan::step_limits(&outcome)?)
-}
-
 fn found_in_setup(
     study: &Study<'_>,
     at: &AtSetup<'_>,
