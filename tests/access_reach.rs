@@ -696,3 +696,61 @@ fn m_has(machining: &[thinwall_machining::MachiningFeature], step: u64) -> bool 
         .iter()
         .any(|m| m.kind == thinwall_analysis::MachiningKind::Pocket && m.side_faces.contains(&step))
 }
+
+/// A face standing along the axis takes the triangles wholly above or
+/// within the cutting length from spans found once (`reach::standing`):
+/// every wall side of the shared thin-walled parts, a turned frame and
+/// NIST FTC 07 (curved blends by the hundred) judged that way gives what
+/// clipping every triangle at every line gives, to 1e-12 of the fraction
+/// and of each blocker's area (the tool's foot is computed once, not per
+/// line: its last bits differ).
+#[test]
+fn a_standing_face_is_judged_as_if_every_triangle_were_clipped() {
+    use thinwall_access::reach::{contact, scenes, side, Ctx};
+    let mut parts: Vec<(Part, [f64; 3])> = common::thin_walled_parts()
+        .iter()
+        .step_by(2)
+        .map(|p| (thinwall_step::read_file(p).unwrap().0, [0.0, 0.0, 1.0]))
+        .collect();
+    let frame = common::shared_data().join("thinwall/frame_02.step");
+    let pose = &poses()[1];
+    let text = std::fs::read_to_string(&frame).unwrap();
+    parts.push((posed_part(&text, pose), pose.up()));
+    let nist = common::shared_data().join("nist/nist_ftc_07_asme1_ap242-e2.stp");
+    parts.push((thinwall_step::read_file(&nist).unwrap().0, [0.0, 0.0, 1.0]));
+    let mut standing = 0;
+    for (part, up) in &parts {
+        let a = PartAnalysis::new(part, Setup::new(*up, Machine::ThreeAxis).unwrap());
+        let mesh = a.mesh();
+        let ctx = Ctx::new(&a, Tool::default());
+        let scene = &scenes(&a, mesh, &[a.up()])[0];
+        for (own, fm) in mesh.faces.iter().enumerate() {
+            let Some((Contact::Side, Some(pf))) = contact(&a, scene, fm.face) else {
+                continue;
+            };
+            let own = own as u32;
+            let (fast, exact) = (
+                side::judge(&ctx, scene, pf, own),
+                side::judge_clipped(&ctx, scene, pf, own),
+            );
+            let same = |x: f64, y: f64| (x - y).abs() <= 1e-12 * x.abs().max(1.0);
+            assert!(same(fast.area, exact.area), "face {own}");
+            assert!(same(fast.reached, exact.reached), "face {own}");
+            assert!(
+                fast.blockers.len() == exact.blockers.len()
+                    && fast
+                        .blockers
+                        .iter()
+                        .zip(&exact.blockers)
+                        .all(|(x, y)| x.0 == y.0 && same(*x.1, *y.1)),
+                "face {own}: {:?} {:?}",
+                fast.blockers,
+                exact.blockers
+            );
+            if pf.normal().dot(&a.up()).abs() < 1e-9 {
+                standing += 1;
+            }
+        }
+    }
+    assert!(standing > 100, "{standing} standing faces");
+}

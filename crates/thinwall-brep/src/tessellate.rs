@@ -68,6 +68,9 @@ const APEX_GAP: f64 = 1e-5;
 /// apart: the surface is straight that way.
 const GENERATOR_STRETCH: f64 = 4.0;
 const MAX_GRID: usize = 200;
+/// A cylinder's or cone's triangle may span this many columns across its
+/// generator (√2: the chord's sagitta at most twice the column's).
+const ONE_COLUMN: f64 = std::f64::consts::SQRT_2;
 /// Most cells of one face's grid (columns × rows), and of one direction:
 /// a thin blend around a large circle needs many columns and few rows.
 const MAX_CELLS: usize = 250_000;
@@ -77,7 +80,7 @@ const MAX_LINES: usize = 4096;
 const NARROW_FACE: f64 = 0.002;
 /// Where the area between a face's boundary curves and their chords is
 /// more than this part of the face's area, the face is made finer.
-const BOUNDARY_AREA: f64 = 0.001;
+const BOUNDARY_AREA: f64 = 0.004;
 
 /// The chordal deviation of `part_mesh`, relative to the part's diagonal.
 pub const RELATIVE_DEVIATION: f64 = 1e-3;
@@ -570,34 +573,70 @@ fn triangulate(
         align_turns(&mut rings, period, 1);
     }
     let grid = Grid::of(chart, &rings, deviation, part_deviation);
-    if let Some(g) = &grid {
+    // A cylinder or cone is straight along its generator: columns alone
+    // where their strips come out one column wide, rows where not.
+    let fresh = points.len();
+    if let Some(g) = grid.as_ref().and_then(|g| g.columns_only(chart)) {
+        let (tris, steiner) = grid_cdt(chart, rings.clone(), cut, Some(&g), points)?;
+        if g.one_column(&tris) {
+            return Ok(finish(face, chart, &tris, &steiner, points));
+        }
+        points.truncate(fresh);
+    }
+    let (tris, steiner) = grid_cdt(chart, rings, cut, grid.as_ref(), points)?;
+    Ok(finish(face, chart, &tris, &steiner, points))
+}
+
+/// The rings cut and split for `grid`, and their constrained Delaunay
+/// triangles with the grid's interior points.
+fn grid_cdt(
+    chart: &Chart,
+    mut rings: Vec<Ring>,
+    cut: Option<(usize, usize)>,
+    grid: Option<&Grid>,
+    points: &mut Vec<Point3>,
+) -> Result<(Vec<PlaneTri>, Vec<[f64; 2]>), String> {
+    if let Some(g) = grid {
         g.split_poles(&mut rings);
         if let Some((r, k)) = cut {
             g.split_cut(chart, &mut rings[r], k, points);
         }
     }
     snap(&mut rings);
-    let steiner = grid.as_ref().map_or_else(Vec::new, |g| g.points(&rings));
-    let stretch = grid.as_ref().map_or(1.0, Grid::stretch);
+    let steiner = grid.map_or_else(Vec::new, |g| g.points(&rings));
+    let stretch = grid.map_or(1.0, Grid::stretch);
     let tris = cdt(&rings, &steiner, stretch)?;
+    Ok((tris, steiner))
+}
+
+/// The triangles as point ids, the interior points added to `points`,
+/// turned to face out of the material.
+fn finish(
+    face: &Face,
+    chart: &Chart,
+    tris: &[PlaneTri],
+    steiner: &[[f64; 2]],
+    points: &mut Vec<Point3>,
+) -> Vec<[u32; 3]> {
     // Interior points become points of the mesh.
     let mut ids: Vec<u32> = Vec::with_capacity(steiner.len());
-    for uv in &steiner {
+    for uv in steiner {
         ids.push(points.len() as u32);
         points.push(lift(chart, *uv));
     }
-    let mut out: Vec<[u32; 3]> = tris
+    let (mut out, centres): (Vec<[u32; 3]>, Vec<[f64; 2]>) = tris
         .iter()
         .map(|t| {
-            t.map(|c| match c {
+            let ids = t.corners.map(|c| match c {
                 Corner::Boundary(i) => i,
                 Corner::Steiner(j) => ids[j],
-            })
+            });
+            (ids, t.centre)
         })
-        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
-        .collect();
-    orient_outward(face, points, &mut out);
-    Ok(out)
+        .filter(|(t, _)| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+        .unzip();
+    orient_outward(face, chart, points, &mut out, &centres);
+    out
 }
 
 /// The loops that wrap around the surface closed into one ring pushed on
@@ -661,15 +700,39 @@ fn close_wrapping(
 /// of the material is decided once for the face, by their 3-D normals
 /// against the face's weighted by area (a sliver at a pole has no reliable
 /// normal of its own).
-fn orient_outward(face: &Face, points: &[Point3], out: &mut [[u32; 3]]) {
+///
+/// A free-form face's normal is taken at each triangle's centre in its
+/// parameter plane (`centres`), where the chart is the surface's own
+/// parameters: no point to invert.
+fn orient_outward(
+    face: &Face,
+    chart: &Chart,
+    points: &[Point3],
+    out: &mut [[u32; 3]],
+    centres: &[[f64; 2]],
+) {
     let agreement: f64 = out
         .iter()
-        .map(|t| {
+        .zip(centres)
+        .map(|(t, uv)| {
             let [a, b, c] = t.map(|i| points[i as usize]);
             let n = (b - a).cross(&(c - a));
-            let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
-            face.outward_normal(&centre, &mut None)
-                .map_or(0.0, |o| n.dot(&o))
+            let outward = match chart {
+                Chart::Freeform { nurbs } => {
+                    thinwall_geom::surface::nurbs_normal(nurbs, uv[0], uv[1]).map(|o| {
+                        if face.same_sense {
+                            o
+                        } else {
+                            -o
+                        }
+                    })
+                }
+                _ => {
+                    let centre = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+                    face.outward_normal(&centre, &mut None)
+                }
+            };
+            outward.map_or(0.0, |o| n.dot(&o))
         })
         .sum();
     if agreement < 0.0 {
@@ -1065,6 +1128,19 @@ impl Grid {
         })
     }
 
+    /// The same columns without rows, on a cylinder or cone: its strips
+    /// between two generator lines are flat, however long.
+    fn columns_only(&self, chart: &Chart) -> Option<Grid> {
+        (matches!(chart, Chart::Revolved { .. }) && self.nv > 1).then(|| Grid { nv: 1, ..*self })
+    }
+
+    /// Whether no triangle spans more than `ONE_COLUMN` columns across
+    /// the generator (its chord then stays within twice the deviation).
+    fn one_column(&self, tris: &[PlaneTri]) -> bool {
+        let du = (self.hi[0] - self.lo[0]) / self.nu.max(1) as f64;
+        tris.iter().all(|t| t.u_span <= ONE_COLUMN * du)
+    }
+
     /// Rows over columns apart: the triangulation shortens v by this, so
     /// the grid is square there and Delaunay triangles join neighbours
     /// (rows along a cylinder are several columns apart; a torus's tube
@@ -1205,9 +1281,18 @@ enum Corner {
     Steiner(usize),
 }
 
+/// A triangle of the parameter plane: its corners and how far it spans
+/// along u.
+struct PlaneTri {
+    corners: [Corner; 3],
+    u_span: f64,
+    /// The middle of its corners' parameters.
+    centre: [f64; 2],
+}
+
 /// Constrained Delaunay triangles of the rings (and interior points)
 /// whose centres lie inside.
-fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<[Corner; 3]>, String> {
+fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<PlaneTri>, String> {
     // Triangulated with v shortened `stretch` times (`Grid::stretch`).
     let at = |uv: &[f64; 2]| crate::param_mesh::spade_point(uv[0], uv[1] / stretch);
     let mut t: ConstrainedDelaunayTriangulation<Point2<f64>> = Default::default();
@@ -1256,7 +1341,12 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<[Corner
             .map(|v| corner_of.get(&v.fix()).copied())
             .collect();
         if let Some(cs) = corners {
-            out.push([cs[0], cs[1], cs[2]]);
+            let us = c.map(|p| p[0]);
+            out.push(PlaneTri {
+                corners: [cs[0], cs[1], cs[2]],
+                u_span: us[0].max(us[1]).max(us[2]) - us[0].min(us[1]).min(us[2]),
+                centre,
+            });
         }
     }
     Ok(out)

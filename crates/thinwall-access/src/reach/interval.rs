@@ -124,7 +124,8 @@ fn meet(x: Option<Span>, y: Option<Span>) -> Option<Span> {
 /// Sorted, disjoint spans from any.
 pub fn merge(mut spans: Vec<Span>) -> Vec<Span> {
     spans.retain(|s| s.1 > s.0);
-    spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // The union is the same whichever of equal starts comes first.
+    spans.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<Span> = Vec::with_capacity(spans.len());
     for s in spans {
         match out.last_mut() {
@@ -172,6 +173,23 @@ pub fn intersect(a: &[Span], b: &[Span]) -> Vec<Span> {
     merge(out)
 }
 
+/// The length of `a ∩ b` (both sorted, disjoint).
+pub fn overlap(a: &[Span], b: &[Span]) -> f64 {
+    let (mut i, mut j, mut sum) = (0, 0, 0.0);
+    while i < a.len() && j < b.len() {
+        let (x, y) = (a[i].0.max(b[j].0), a[i].1.min(b[j].1));
+        if y > x {
+            sum += y - x;
+        }
+        if a[i].1 < b[j].1 {
+            i += 1;
+        } else {
+            j += 1;
+        }
+    }
+    sum
+}
+
 pub fn length(a: &[Span]) -> f64 {
     a.iter().map(|s| s.1 - s.0).sum()
 }
@@ -207,6 +225,9 @@ mod tests {
         assert_eq!(d, vec![(0.0, 1.0), (2.0, 3.0), (5.0, 5.5)]);
         assert_eq!(length(&d), 2.5);
         assert_eq!(intersect(&a, &[(2.0, 5.5)]), vec![(2.0, 3.0), (5.0, 5.5)]);
+        assert_eq!(overlap(&a, &[(2.0, 5.5)]), 1.5);
+        assert_eq!(overlap(&[(0.0, 10.0)], &a), 4.0);
+        assert_eq!(overlap(&a, &[]), 0.0);
     }
 
     /// The point test agrees with the line's span at the point (lo < 0 <

@@ -29,6 +29,7 @@ pub mod obstacle;
 pub mod sampled;
 pub mod scene;
 pub mod side;
+pub mod standing;
 pub mod walls;
 
 pub use largest::{largest_tool, SMALLEST_TOOL, TOOL_PRECISION};

@@ -183,6 +183,11 @@ impl Scene {
         self.tris[k as usize].hi[2]
     }
 
+    /// The height of triangle `k`'s lowest corner.
+    pub fn bottom(&self, k: u32) -> f64 {
+        self.tris[k as usize].lo[2]
+    }
+
     /// Heights of the corners of `tris`.
     pub fn heights<'a>(&'a self, tris: &'a [u32]) -> impl Iterator<Item = f64> + 'a {
         tris.iter()
@@ -197,6 +202,73 @@ pub struct Block {
     pub span: Span,
     pub tri: u32,
     pub holder: bool,
+}
+
+/// The spans a triangle blocks along a line whose tip's foot stays put
+/// while its height changes (a face standing along the axis): wholly above
+/// the cutting length only the holder meets it, wholly within it only the
+/// cutter, and either way the same span at every such height ([`blocked`]
+/// for a triangle that is whole there).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Whole {
+    pub holder: Option<Span>,
+    pub cutter: Option<Span>,
+}
+
+/// [`Whole`] of each of `cands` along `q0 + s·e` (its height unused).
+pub fn whole_spans(
+    scene: &Scene,
+    cands: &[u32],
+    q0: [f64; 3],
+    e: [f64; 2],
+    tool: &Tool,
+    touches: (f64, f64),
+) -> Vec<Whole> {
+    let (r, big) = (0.5 * tool.diameter, 0.5 * tool.holder_diameter);
+    let q = [q0[0], q0[1]];
+    cands
+        .iter()
+        .map(|&k| {
+            let t = &scene.tris[k as usize];
+            let touch = t.touch(touches);
+            let farther = beside(t, q, e);
+            if farther(big) {
+                return Whole::default();
+            }
+            let xy = t.p.map(|p| [p[0], p[1]]);
+            let rho = r - touch;
+            Whole {
+                holder: line_near_convex(q, e, &xy, big - touch),
+                cutter: (!farther(rho))
+                    .then(|| line_near_convex(q, e, &xy, rho))
+                    .flatten(),
+            }
+        })
+        .collect()
+}
+
+/// Whether triangle `t` lies wholly to one side of the line through `q`
+/// along `e`, at least the given distance away.
+fn beside(t: &Tri, q: [f64; 2], e: [f64; 2]) -> impl Fn(f64) -> bool {
+    let off = t.p.map(|p| e[0] * (p[1] - q[1]) - e[1] * (p[0] - q[0]));
+    let (least, most) = (
+        off[0].min(off[1]).min(off[2]),
+        off[0].max(off[1]).max(off[2]),
+    );
+    move |d: f64| least >= d || most <= -d
+}
+
+impl Tri {
+    /// Material within this of the tool's surface touches it: `exact` for
+    /// a planar face's triangle, `tessellated` for one that only
+    /// approximates its face.
+    pub fn touch(&self, (exact, tessellated): (f64, f64)) -> f64 {
+        if self.tessellated {
+            tessellated
+        } else {
+            exact
+        }
+    }
 }
 
 /// Where a tool whose tip centre runs along `q0 + s·e` (`q0[2]` its height,
@@ -220,21 +292,12 @@ pub fn blocked(
     let q = [q0[0], q0[1]];
     for &k in cands {
         let t = &scene.tris[k as usize];
-        let touch = if t.tessellated {
-            touch_tessellated
-        } else {
-            exact
-        };
+        let touch = t.touch((exact, touch_tessellated));
         if t.hi[2] <= h + touch {
             continue;
         }
         // Wholly to one side of the line, farther than the holder's radius.
-        let off = t.p.map(|p| e[0] * (p[1] - q[1]) - e[1] * (p[0] - q[0]));
-        let (least, most) = (
-            off[0].min(off[1]).min(off[2]),
-            off[0].max(off[1]).max(off[2]),
-        );
-        let farther = |d: f64| least >= d || most <= -d;
+        let farther = beside(t, q, e);
         if farther(big) {
             continue;
         }

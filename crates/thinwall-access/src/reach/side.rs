@@ -9,8 +9,9 @@
 //! reached length is smooth, and three Gauss–Legendre lines integrate it (a
 //! constant or linear length exactly).
 
-use super::interval::{intersect, length, merge, subtract, Span};
+use super::interval::{intersect, length, merge, overlap, subtract, Span};
 use super::scene::{blocked, Block};
+use super::standing::{by_key, merge_sorted, Key, Standing};
 use super::{xy_bounds, Ctx, Judged};
 use geo::{Area, BoundingRect, MultiPolygon};
 use thinwall_analysis::PlanarFace;
@@ -40,6 +41,23 @@ pub fn judge_within(
     own: u32,
     lost_share: f64,
 ) -> Judged {
+    judge_lines(ctx, scene, pf, own, lost_share, true)
+}
+
+/// As [`judge`], every obstacle clipped at every line, a standing face's
+/// too ([`Standing`] not used): the reference its shortcut must equal.
+pub fn judge_clipped(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, own: u32) -> Judged {
+    judge_lines(ctx, scene, pf, own, f64::INFINITY, false)
+}
+
+fn judge_lines(
+    ctx: &Ctx,
+    scene: &super::scene::Scene,
+    pf: &PlanarFace,
+    own: u32,
+    lost_share: f64,
+    shortcut: bool,
+) -> Judged {
     let side = SideFrame::new(ctx, scene, pf);
     let region = pf.polygon_in(&side.frame);
     let mut out = Judged::default();
@@ -49,6 +67,13 @@ pub fn judge_within(
     let budget = lost_share * region.unsigned_area();
     let (v0, v1) = (rect.min().y, rect.max().y);
     let cands = side.candidates(ctx, scene, own, &rect);
+    let standing = shortcut
+        .then(|| side.standing(ctx, scene, &cands, (v0, v1)))
+        .flatten();
+    let obstacles = Obstacles {
+        cands: &cands,
+        standing: standing.as_ref(),
+    };
     let bands = bands(
         &region,
         scene,
@@ -78,7 +103,7 @@ pub fn judge_within(
                 v,
                 weight: wt * half,
             };
-            let stop = side.integrate(ctx, scene, &cands, &line, &mut blocks, &mut out);
+            let stop = side.integrate(ctx, scene, &obstacles, &line, &mut blocks, &mut out);
             if k == 1 {
                 for (ua, ub) in intersect(&face, &stop) {
                     out.unreachable.push(
@@ -107,6 +132,13 @@ struct SideFrame {
     r: f64,
     /// The frame's origin's height in the scene, mm.
     z0: f64,
+}
+
+/// The triangles that may stop the tool on a face, highest first, and
+/// where the face stands along the axis, the spans each blocks whole.
+struct Obstacles<'a> {
+    cands: &'a [u32],
+    standing: Option<&'a Standing>,
 }
 
 /// One level line of the face: its spans, its `v` and its quadrature weight.
@@ -190,41 +222,69 @@ impl SideFrame {
         cands
     }
 
+    /// Where the face stands along the axis (the tool's foot stays put
+    /// from its lowest line to its highest): its candidates' whole spans.
+    fn standing(
+        &self,
+        ctx: &Ctx,
+        scene: &super::scene::Scene,
+        cands: &[u32],
+        (v0, v1): (f64, f64),
+    ) -> Option<Standing> {
+        let (a, b) = (self.tip(scene, 0.0, v0), self.tip(scene, 0.0, v1));
+        if (a[0] - b[0]).hypot(a[1] - b[1]) > ctx.touch {
+            return None;
+        }
+        Some(Standing::new(ctx, scene, cands, a, self.e2))
+    }
+
     /// Add one level line's area, reached area and blockers to `out`;
     /// returns where the tool is stopped along it.
     fn integrate(
         &self,
         ctx: &Ctx,
         scene: &super::scene::Scene,
-        cands: &[u32],
+        obstacles: &Obstacles,
         line: &Line,
         blocks: &mut Vec<Block>,
         out: &mut Judged,
     ) -> Vec<Span> {
         let p = self.tip(scene, 0.0, line.v);
+        let cands = obstacles.cands;
         // Only the triangles reaching above the tip (highest first).
         let above = cands.partition_point(|&k| scene.top(k) > p[2] + ctx.touch);
+        let touches = (ctx.touch, ctx.touch_tessellated());
+        let mut clipped = Vec::new();
+        let whole = match obstacles.standing {
+            Some(s) => s.at(scene, cands, above, p[2], ctx, &mut clipped),
+            None => {
+                clipped.extend_from_slice(&cands[..above]);
+                Vec::new()
+            }
+        };
         blocks.clear();
-        blocked(
-            scene,
-            &cands[..above],
-            p,
-            self.e2,
-            &ctx.tool,
-            (ctx.touch, ctx.touch_tessellated()),
-            blocks,
-        );
-        let stop = merge(blocks.iter().map(|b| b.span).collect());
+        blocked(scene, &clipped, p, self.e2, &ctx.tool, touches, blocks);
+        // Each face's blocks by the cutter or the holder as one set of
+        // spans: what it leaves of the line, counted once however finely
+        // it is tessellated.
+        let mut exact: Vec<(Key, Span)> = blocks
+            .iter()
+            .map(|b| ((b.tri_face(scene), b.holder), b.span))
+            .collect();
+        exact.sort_unstable_by(by_key);
+        let keyed = merge_sorted(whole, exact);
+        let mut all: Vec<Span> = Vec::new();
+        for group in keyed.chunk_by(|x, y| x.0 == y.0) {
+            let spans = merge(group.iter().map(|g| g.1).collect());
+            let lost = overlap(line.face, &spans);
+            if lost > 0.0 {
+                *out.blockers.entry(group[0].0).or_default() += line.weight * lost;
+            }
+            all.extend(spans);
+        }
+        let stop = merge(all);
         out.area += line.weight * length(line.face);
         out.reached += line.weight * length(&subtract(line.face, &stop));
-        for b in blocks.iter() {
-            let lost = length(&intersect(line.face, &[b.span]));
-            if lost > 0.0 {
-                *out.blockers
-                    .entry((b.tri_face(scene), b.holder))
-                    .or_default() += line.weight * lost;
-            }
-        }
         stop
     }
 }
