@@ -1131,7 +1131,7 @@ impl Grid {
     /// The same columns without rows, on a cylinder or cone: its strips
     /// between two generator lines are flat, however long.
     fn columns_only(&self, chart: &Chart) -> Option<Grid> {
-        (matches!(chart, Chart::Revolved { .. }) && self.nv > 1).then(|| Grid { nv: 1, ..*self })
+        (matches!(chart, Chart::Revolved { .. }) && self.nv > 1).then_some(Grid { nv: 1, ..*self })
     }
 
     /// Whether no triangle spans more than `ONE_COLUMN` columns across
@@ -1221,18 +1221,29 @@ impl Grid {
     }
 
     /// Interior points, strictly inside the rings and clear of them.
+    /// Each row's crossings and nearby ring sides are found once, so a
+    /// point is tested against those only (the even–odd crossings and
+    /// [`side_clear`] on the row's share of the rings, the same
+    /// arithmetic as against every side).
     fn points(&self, rings: &[Ring]) -> Vec<[f64; 2]> {
         let (lo, hi, nu, nv) = (self.lo, self.hi, self.nu, self.nv);
+        let gap = 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]);
+        let rows: Vec<Row> = (0..=nv)
+            .map(|j| {
+                Row::of(
+                    rings,
+                    lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64,
+                    gap,
+                )
+            })
+            .collect();
         let mut out = Vec::new();
         for i in 1..nu {
-            for j in 0..=nv {
+            for row in &rows {
                 let u = self.u(i);
-                let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64;
                 // Strictly inside, away from the boundary.
-                if inside(rings, [u, v])
-                    && clear_of(rings, [u, v], 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]))
-                {
-                    out.push([u, v]);
+                if row.inside(u) && row.clear_of([u, row.v], gap) {
+                    out.push([u, row.v]);
                 }
             }
         }
@@ -1240,39 +1251,143 @@ impl Grid {
     }
 }
 
-fn inside(rings: &[Ring], p: [f64; 2]) -> bool {
-    let mut odd = false;
-    for r in rings {
-        let n = r.len();
-        for i in 0..n {
-            let (a, b) = (r[i].0, r[(i + 1) % n].0);
-            if (a[1] > p[1]) != (b[1] > p[1]) {
-                let x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
-                if x > p[0] {
-                    odd = !odd;
+/// One row of a grid against the rings: where their sides cross it, and
+/// the sides that come within the gap of it.
+struct Row {
+    v: f64,
+    crossings: Vec<f64>,
+    near: Vec<([f64; 2], [f64; 2])>,
+}
+
+impl Row {
+    fn of(rings: &[Ring], v: f64, gap: f64) -> Row {
+        let mut row = Row {
+            v,
+            crossings: Vec::new(),
+            near: Vec::new(),
+        };
+        for r in rings {
+            let n = r.len();
+            for i in 0..n {
+                let (a, b) = (r[i].0, r[(i + 1) % n].0);
+                if (a[1] > v) != (b[1] > v) {
+                    row.crossings
+                        .push(a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]));
                 }
+                if a[1].min(b[1]) - gap <= v && v <= a[1].max(b[1]) + gap {
+                    row.near.push((a, b));
+                }
+            }
+        }
+        row.crossings.sort_by(f64::total_cmp);
+        row
+    }
+
+    /// Even–odd: the crossings past `u`.
+    fn inside(&self, u: f64) -> bool {
+        let past = self.crossings.len() - self.crossings.partition_point(|&x| x <= u);
+        past % 2 == 1
+    }
+
+    /// Farther than `gap` from every side of the rings ([`side_clear`]):
+    /// the sides not near the row are.
+    fn clear_of(&self, p: [f64; 2], gap: f64) -> bool {
+        self.near.iter().all(|&(a, b)| side_clear(a, b, p, gap))
+    }
+}
+
+/// Even–odd: whether `p` lies inside the rings.
+#[cfg(test)]
+fn inside(rings: &[Ring], p: [f64; 2]) -> bool {
+    let sides = rings
+        .iter()
+        .flat_map(|r| (0..r.len()).map(move |i| (r[i].0, r[(i + 1) % r.len()].0)));
+    odd_crossings(sides, p)
+}
+
+/// Even–odd over `sides`: an odd number of them cross the level of `p`
+/// past it.
+fn odd_crossings(sides: impl Iterator<Item = ([f64; 2], [f64; 2])>, p: [f64; 2]) -> bool {
+    let mut odd = false;
+    for (a, b) in sides {
+        if (a[1] > p[1]) != (b[1] > p[1]) {
+            let x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+            if x > p[0] {
+                odd = !odd;
             }
         }
     }
     odd
 }
 
-fn clear_of(rings: &[Ring], p: [f64; 2], gap: f64) -> bool {
-    rings.iter().all(|r| {
-        let n = r.len();
-        (0..n).all(|i| {
-            let (a, b) = (r[i].0, r[(i + 1) % n].0);
-            let d = [b[0] - a[0], b[1] - a[1]];
-            let l2 = d[0] * d[0] + d[1] * d[1];
-            let t = if l2 > 0.0 {
-                (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            let q = [a[0] + d[0] * t - p[0], a[1] + d[1] * t - p[1]];
-            q[0].hypot(q[1]) > gap
-        })
-    })
+/// The rings' sides filed in bands of v, so [`Bands::inside`] tests a
+/// point against the sides spanning its band only: the same decisions as
+/// testing every side (one that does not span the band cannot cross the
+/// point's level).
+struct Bands {
+    lo: f64,
+    step: f64,
+    sides: Vec<Vec<([f64; 2], [f64; 2])>>,
+}
+
+impl Bands {
+    fn of(rings: &[Ring]) -> Bands {
+        let all: Vec<([f64; 2], [f64; 2])> = rings
+            .iter()
+            .flat_map(|r| (0..r.len()).map(move |i| (r[i].0, r[(i + 1) % r.len()].0)))
+            .collect();
+        let (lo, hi) = all
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), s| {
+                (l.min(s.0[1]).min(s.1[1]), h.max(s.0[1]).max(s.1[1]))
+            });
+        let n = ((all.len() as f64).sqrt().ceil() as usize).max(1);
+        let step = ((hi - lo) / n as f64).max(f64::MIN_POSITIVE);
+        let mut bands = Bands {
+            lo,
+            step,
+            sides: vec![Vec::new(); n],
+        };
+        for s in all {
+            let (a, b) = (
+                bands.band(s.0[1].min(s.1[1])),
+                bands.band(s.0[1].max(s.1[1])),
+            );
+            for band in &mut bands.sides[a..=b] {
+                band.push(s);
+            }
+        }
+        bands
+    }
+
+    fn band(&self, v: f64) -> usize {
+        let k = ((v - self.lo) / self.step).floor();
+        if k.is_finite() && k > 0.0 {
+            (k as usize).min(self.sides.len() - 1)
+        } else {
+            0
+        }
+    }
+
+    fn inside(&self, p: [f64; 2]) -> bool {
+        if self.sides.is_empty() || p[1].is_nan() {
+            return false;
+        }
+        odd_crossings(self.sides[self.band(p[1])].iter().copied(), p)
+    }
+}
+
+/// Whether `p` lies farther than `gap` from the side `a`–`b`.
+fn side_clear(a: [f64; 2], b: [f64; 2], p: [f64; 2], gap: f64) -> bool {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let q = [a[0] + d[0] * t - p[0], a[1] + d[1] * t - p[1]];
+    q[0].hypot(q[1]) > gap
 }
 
 #[derive(Clone, Copy)]
@@ -1322,6 +1437,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<PlaneTr
             .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
         corner_of.entry(h).or_insert(Corner::Steiner(j));
     }
+    let bands = Bands::of(rings);
     let mut out = Vec::new();
     for f in t.inner_faces() {
         let vs = f.vertices();
@@ -1333,7 +1449,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<PlaneTr
             (c[0][0] + c[1][0] + c[2][0]) / 3.0,
             (c[0][1] + c[1][1] + c[2][1]) / 3.0,
         ];
-        if !inside(rings, centre) {
+        if !bands.inside(centre) {
             continue;
         }
         let corners: Option<Vec<Corner>> = vs
@@ -1383,5 +1499,56 @@ fn lift(chart: &Chart, uv: [f64; 2]) -> Point3 {
                 radius * b.sin(),
             ))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Random rings: a star-shaped outline with a hole.
+    fn rings(seed: &mut u64) -> Vec<Ring> {
+        let mut rnd = || {
+            *seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (*seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut ring = |n: usize, r: f64| -> Ring {
+            (0..n)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * i as f64 / n as f64;
+                    let rr = r * (0.6 + 0.4 * rnd());
+                    ([rr * a.cos(), rr * a.sin()], i as u32)
+                })
+                .collect()
+        };
+        vec![ring(60, 10.0), ring(12, 2.0)]
+    }
+
+    #[test]
+    fn bands_and_rows_decide_as_every_side_does() {
+        let mut seed = 11u64;
+        let mut checked = 0;
+        for _ in 0..20 {
+            let rs = rings(&mut seed);
+            let bands = Bands::of(&rs);
+            for j in 0..=40 {
+                let v = -10.0 + 0.5 * j as f64;
+                let row = Row::of(&rs, v, 1e-6);
+                for i in 0..=80 {
+                    let p = [-10.0 + 0.25 * i as f64, v + 0.013];
+                    assert_eq!(bands.inside(p), inside(&rs, p), "{p:?}");
+                    let q = [p[0], v];
+                    assert_eq!(row.inside(q[0]), inside(&rs, q), "{q:?}");
+                    let every = rs.iter().all(|r| {
+                        (0..r.len()).all(|k| side_clear(r[k].0, r[(k + 1) % r.len()].0, q, 1e-6))
+                    });
+                    assert_eq!(row.clear_of(q, 1e-6), every, "{q:?}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 60_000);
     }
 }

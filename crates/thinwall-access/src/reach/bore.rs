@@ -10,10 +10,10 @@
 //! four deviations over the bore through (NIST CTC 05's Ø19.05 holes came
 //! out Ø20.8). The surface knows the radius; this layer asks it first.
 
+use super::sampled::Samples;
 use super::scene::Scene;
 use super::{Ctx, Judged};
 use thinwall_analysis::PartAnalysis;
-use thinwall_brep::tessellate::Mesh;
 use thinwall_brep::FaceId;
 use thinwall_geom::tolerance::PARALLEL_ANGLE_RAD;
 
@@ -32,15 +32,19 @@ pub fn too_wide(ctx: &Ctx, limit: f64) -> bool {
     ctx.tool.diameter > limit + 2.0 * ctx.touch
 }
 
-/// Face `own` (mesh index) not reached anywhere: every triangle lost, the
+/// Face `own` (mesh index) not reached anywhere: every sample lost, the
 /// face's own arc in the cutter's way.
-pub fn none_reached(mesh: &Mesh, own: u32) -> Judged {
-    let face = &mesh.faces[own as usize];
-    let area = mesh.face_area(face);
+pub fn none_reached(samples: &Samples, own: u32) -> Judged {
+    let area: f64 = samples
+        .tris
+        .iter()
+        .map(|[a, b, c]| 0.5 * (b - a).cross(&(c - a)).norm())
+        .sum();
+    let all = 0..samples.len() as u32;
     let mut j = Judged {
         area,
-        lost: (0..face.triangles.len() as u32).collect(),
-        unreachable: super::sampled_outline(mesh, own),
+        lost: all.clone().collect(),
+        unreachable: samples.outlines(all),
         ..Judged::default()
     };
     if area > 0.0 {

@@ -8,11 +8,11 @@
 //! allowance is lost, and below a size that failed, a curved face is
 //! judged again only at the triangles that size left.
 
+use super::sampled::Samples;
 use super::scene::Scene;
 use super::{bore, contact, floor, sampled, side, Contact, Ctx, Judged, WHOLE_SHARE};
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::tessellate::Mesh;
-use thinwall_geom::Vector3;
 
 /// Smallest tool the largest-tool search tries, mm.
 pub const SMALLEST_TOOL: f64 = 0.5;
@@ -37,11 +37,11 @@ pub fn largest_tool(
     ctx: &Ctx,
     scene: &Scene,
     own: u32,
-    normals: &[Vector3],
+    samples: &Samples,
     given: &Judged,
 ) -> Option<f64> {
     let f = mesh.faces[own as usize].face;
-    let mut judge = WholeJudge::new(a, mesh, ctx, scene, own, normals);
+    let mut judge = WholeJudge::new(a, mesh, ctx, scene, own, samples);
     let mut limit = 2.0 * a.props(f).bbox.diagonal().max(SMALLEST_TOOL);
     if let Some(b) = judge.bound {
         if b < SMALLEST_TOOL {
@@ -114,12 +114,12 @@ struct WholeJudge<'a> {
     ctx: &'a Ctx,
     scene: &'a Scene,
     own: u32,
-    /// A curved face: its triangles' directions.
-    normals: &'a [Vector3],
-    /// A curved face: the smallest size found to fail, and every triangle
+    /// A curved face: where it is judged.
+    samples: &'a Samples,
+    /// A curved face: the smallest size found to fail, and every sample
     /// it left.
     failed: Option<(f64, Vec<u32>)>,
-    /// A curved face: triangles that stopped some size.
+    /// A curved face: samples that stopped some size.
     hints: Vec<u32>,
     /// A curved face: its triangles' area, mm².
     area: f64,
@@ -136,7 +136,7 @@ impl<'a> WholeJudge<'a> {
         ctx: &'a Ctx,
         scene: &'a Scene,
         own: u32,
-        normals: &'a [Vector3],
+        samples: &'a Samples,
     ) -> Self {
         Self {
             a,
@@ -144,7 +144,7 @@ impl<'a> WholeJudge<'a> {
             ctx,
             scene,
             own,
-            normals,
+            samples,
             failed: None,
             hints: Vec::new(),
             area: mesh.face_area(&mesh.faces[own as usize]),
@@ -189,7 +189,7 @@ impl<'a> WholeJudge<'a> {
     /// are judged first, and the judgement stops once the allowance is
     /// lost.
     fn curved_whole(&mut self, ctx: &Ctx, d: f64) -> bool {
-        let tris = self.mesh.faces[self.own as usize].triangles.len();
+        let tris = self.samples.len();
         let mut order: Vec<u32> = match &self.failed {
             Some((size, left)) if d <= *size => left.clone(),
             _ => (0..tris as u32).collect(),
@@ -201,15 +201,7 @@ impl<'a> WholeJudge<'a> {
         // Stable: hinted first, each part in its own order.
         order.sort_by_key(|&k| !hinted[k as usize]);
         let budget = WHOLE_SHARE * self.area;
-        let j = sampled::judge_some(
-            ctx,
-            self.scene,
-            self.mesh,
-            self.normals,
-            self.own,
-            order.into_iter(),
-            budget,
-        );
+        let j = sampled::judge_some(ctx, self.scene, self.samples, order.into_iter(), budget);
         for &k in &j.lost {
             if !hinted[k as usize] {
                 self.hints.push(k);

@@ -52,6 +52,11 @@ pub const WHOLE_SHARE: f64 = 1e-4;
 /// Material within this share of the part's size of the tool's surface
 /// touches it rather than cuts (planar faces: exact geometry).
 const TOUCH: f64 = 1e-9;
+/// A curved face is judged at pieces of its triangles at most this share
+/// of the given tool's diameter long (3 mm for the Ø12 tool), unless no
+/// longer than four times their width ([`sampled::Samples`]): what stops
+/// the tool changes over about its radius.
+const SAMPLE_SPACING: f64 = 0.25;
 /// Ways round of the five-axis axes.
 const AZIMUTHS: usize = 12;
 
@@ -452,15 +457,15 @@ pub fn contact<'p>(
     }
 }
 
-/// How face `own` (mesh index) is judged on one scene; `normals`: its
-/// triangles' directions when curved ([`sampled::normals`]).
+/// How face `own` (mesh index) is judged on one scene; `samples`: where
+/// it is judged when curved ([`sampled::Samples`]).
 pub fn judge(
     a: &PartAnalysis,
     mesh: &Mesh,
     ctx: &Ctx,
     scene: &Scene,
     own: u32,
-    normals: &[Vector3],
+    samples: &sampled::Samples,
 ) -> (Contact, Judged) {
     let f: FaceId = mesh.faces[own as usize].face;
     match contact(a, scene, f) {
@@ -479,11 +484,10 @@ pub fn judge(
         }
         Some((Contact::Side, Some(pf))) => (Contact::Side, side::judge(ctx, scene, pf, own)),
         Some(_) => match bore::limit(a, scene, f) {
-            Some(d) if bore::too_wide(ctx, d) => (Contact::Curved, bore::none_reached(mesh, own)),
-            _ => (
-                Contact::Curved,
-                sampled::judge(ctx, scene, mesh, normals, own),
-            ),
+            Some(d) if bore::too_wide(ctx, d) => {
+                (Contact::Curved, bore::none_reached(samples, own))
+            }
+            _ => (Contact::Curved, sampled::judge(ctx, scene, samples)),
         },
     }
 }
@@ -537,16 +541,16 @@ fn face_reach(
     let part = a.part();
     let f = mesh.faces[own as usize].face;
     let face = part.face(f);
-    let normals = if a.planar(f).is_none() {
-        sampled::normals(face, mesh, own)
+    let samples = if a.planar(f).is_none() {
+        sampled::Samples::of(face, mesh, own, SAMPLE_SPACING * ctx.tool.diameter)
     } else {
-        Vec::new()
+        sampled::Samples::none()
     };
     let judged: Vec<(Contact, Judged)> = scenes
         .iter()
         .map(|s| {
             a.work().check();
-            judge(a, mesh, ctx, s, own, &normals)
+            judge(a, mesh, ctx, s, own, &samples)
         })
         .collect();
     let mut best = 0;
@@ -586,7 +590,7 @@ fn face_reach(
     // Not for a face turned away from up: no tool reaches it.
     let facing = judged[0].1.away <= 0.5 * judged[0].1.area;
     let largest_tool_mm = (largest && facing)
-        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, &normals, &judged[0].1))
+        .then(|| largest_tool(a, mesh, ctx, &scenes[0], own, &samples, &judged[0].1))
         .flatten();
     FaceReach {
         face: face.step_id,

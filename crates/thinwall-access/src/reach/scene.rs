@@ -109,6 +109,15 @@ impl Scene {
                 }
             }
         }
+        // Highest first: a query stops at the first triangle below it.
+        let tris = &scene.tris;
+        for cell in &mut scene.cells {
+            cell.sort_by(|&x, &y| {
+                tris[y as usize].hi[2]
+                    .total_cmp(&tris[x as usize].hi[2])
+                    .then(x.cmp(&y))
+            });
+        }
         scene
     }
 
@@ -151,7 +160,8 @@ impl Scene {
     /// top is above `zmin`, told to `f` once, in no order and without
     /// gathering them: in the first cell of the rectangle it is filed in
     /// (its lower corner's and the rectangle's, whichever is later). Cells
-    /// with nothing above `zmin` are skipped whole.
+    /// with nothing above `zmin` are skipped whole, and a cell's triangles
+    /// (highest first) only down to `zmin`.
     pub fn for_near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64, mut f: impl FnMut(u32)) {
         let (a, b) = self.range([lo[0], lo[1], 0.0], [hi[0], hi[1], 0.0]);
         for j in a[1]..=b[1] {
@@ -162,11 +172,10 @@ impl Scene {
                 }
                 for &k in &self.cells[cell] {
                     let t = &self.tris[k as usize];
-                    if t.hi[2] > zmin
-                        && t.hi[0] >= lo[0]
-                        && t.lo[0] <= hi[0]
-                        && t.hi[1] >= lo[1]
-                        && t.lo[1] <= hi[1]
+                    if t.hi[2] <= zmin {
+                        break;
+                    }
+                    if t.hi[0] >= lo[0] && t.lo[0] <= hi[0] && t.hi[1] >= lo[1] && t.lo[1] <= hi[1]
                     {
                         let (first, _) = self.range(t.lo, t.hi);
                         if first[0].max(a[0]) == i && first[1].max(a[1]) == j {
