@@ -574,9 +574,15 @@ fn triangulate(
     }
     let grid = Grid::of(chart, &rings, deviation, part_deviation);
     // A cylinder or cone is straight along its generator: columns alone
-    // where their strips come out one column wide, rows where not.
+    // where their strips come out one column wide, rows where not. Only in
+    // the part's mesh: a caller's own faces (the removal's facets, no part
+    // deviation) keep their rows.
     let fresh = points.len();
-    if let Some(g) = grid.as_ref().and_then(|g| g.columns_only(chart)) {
+    let columns = grid
+        .as_ref()
+        .filter(|_| part_deviation > 0.0)
+        .and_then(|g| g.columns_only(chart));
+    if let Some(g) = columns {
         let (tris, steiner) = grid_cdt(chart, rings.clone(), cut, Some(&g), points)?;
         if g.one_column(&tris) {
             return Ok(finish(face, chart, &tris, &steiner, points));
