@@ -747,9 +747,7 @@ fn a_standing_face_is_judged_as_if_every_triangle_were_clipped() {
                 fast.blockers,
                 exact.blockers
             );
-            if pf.normal().dot(&a.up()).abs() < 1e-9 {
-                standing += 1;
-            }
+            standing += usize::from(side::stands(&ctx, scene, pf));
         }
     }
     assert!(standing > 100, "{standing} standing faces");

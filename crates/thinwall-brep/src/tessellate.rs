@@ -185,7 +185,13 @@ fn tessellate_with(
     };
     for f in part.face_ids() {
         let d = face_deviation[f.index()];
-        let fm = face_mesh(part, f, &edge_points, (d, part_deviation), &mut mesh.points);
+        let fm = face_mesh(
+            part,
+            f,
+            &edge_points,
+            (d, Some(part_deviation)),
+            &mut mesh.points,
+        );
         mesh.faces.push(fm);
     }
     mesh.edges = edge_points;
@@ -434,8 +440,8 @@ pub fn face_triangles(
         face,
         &chart,
         &edge_points,
-        // Rows along a generator as before: no part deviation here.
-        (deviation.max(1e-9), 0.0),
+        // A caller's own face (the removal's facets): rows as they were.
+        (deviation.max(1e-9), None),
         &mut points,
     )?;
     Ok((points, triangles))
@@ -446,7 +452,7 @@ fn face_mesh(
     part: &Part,
     f: FaceId,
     edge_points: &[Vec<u32>],
-    deviation: (f64, f64),
+    deviation: (f64, Option<f64>),
     points: &mut Vec<Point3>,
 ) -> FaceMesh {
     let face = part.face(f);
@@ -539,15 +545,16 @@ fn loop_ids(part: &Part, face: &Face, edge_points: &[Vec<u32>]) -> Vec<Vec<u32>>
 /// A polygon of the parameter plane, each corner with its point id.
 type Ring = Vec<([f64; 2], u32)>;
 
-/// `deviation`: the face's, and the part's (rows along a straight
-/// generator are never closer than the part's: the surface is straight
-/// that way, whatever the face's radius).
+/// `deviation`: the face's, and the part mesh's (none for a caller's own
+/// face: the removal's facets). In the part's mesh a cylinder or cone is
+/// in columns only where it can be, and rows along its straight generator
+/// are never closer than the part's deviation, whatever its radius.
 fn triangulate(
     part: &Part,
     face: &Face,
     chart: &Chart,
     edge_points: &[Vec<u32>],
-    (deviation, part_deviation): (f64, f64),
+    (deviation, part_deviation): (f64, Option<f64>),
     points: &mut Vec<Point3>,
 ) -> Result<Vec<[u32; 3]>, String> {
     let loops = loop_ids(part, face, edge_points);
@@ -580,7 +587,7 @@ fn triangulate(
     let fresh = points.len();
     let columns = grid
         .as_ref()
-        .filter(|_| part_deviation > 0.0)
+        .filter(|_| part_deviation.is_some())
         .and_then(|g| g.columns_only(chart));
     if let Some(g) = columns {
         let (tris, steiner) = grid_cdt(chart, rings.clone(), cut, Some(&g), points)?;
@@ -1082,7 +1089,14 @@ struct Grid {
 }
 
 impl Grid {
-    fn of(chart: &Chart, rings: &[Ring], deviation: f64, part_deviation: f64) -> Option<Grid> {
+    /// `part_deviation`: the part mesh's, which rows along a straight
+    /// generator never come closer than (none for a caller's own face).
+    fn of(
+        chart: &Chart,
+        rings: &[Ring],
+        deviation: f64,
+        part_deviation: Option<f64>,
+    ) -> Option<Grid> {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for c in rings.iter().flatten() {
             for k in 0..2 {
@@ -1102,8 +1116,11 @@ impl Grid {
                 let step = arc_step(deviation, r.max(1e-9)) * scale;
                 (
                     ((hi[0] - lo[0]) / step.max(1e-9)).ceil() as usize,
-                    ((hi[1] - lo[1]) / (GENERATOR_STRETCH * step).max(part_deviation).max(1e-9))
-                        .ceil() as usize,
+                    ((hi[1] - lo[1])
+                        / (GENERATOR_STRETCH * step)
+                            .max(part_deviation.unwrap_or(0.0))
+                            .max(1e-9))
+                    .ceil() as usize,
                 )
             }
             Chart::Torus { major, minor, .. } => {
@@ -1226,30 +1243,19 @@ impl Grid {
         ring.splice(k + 1..k + 1, along);
     }
 
-    /// Interior points, strictly inside the rings and clear of them.
-    /// Each row's crossings and nearby ring sides are found once, so a
-    /// point is tested against those only (the even–odd crossings and
-    /// [`side_clear`] on the row's share of the rings, the same
-    /// arithmetic as against every side).
+    /// Interior points, strictly inside the rings and clear of them
+    /// ([`Bands`]: the sides near each point only).
     fn points(&self, rings: &[Ring]) -> Vec<[f64; 2]> {
         let (lo, hi, nu, nv) = (self.lo, self.hi, self.nu, self.nv);
-        let gap = 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]);
-        let rows: Vec<Row> = (0..=nv)
-            .map(|j| {
-                Row::of(
-                    rings,
-                    lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64,
-                    gap,
-                )
-            })
-            .collect();
+        let bands = Bands::of(rings, 1e-6 * (hi[1] - lo[1] + hi[0] - lo[0]));
         let mut out = Vec::new();
         for i in 1..nu {
-            for row in &rows {
+            for j in 0..=nv {
                 let u = self.u(i);
+                let v = lo[1] + (hi[1] - lo[1]) * j as f64 / nv.max(1) as f64;
                 // Strictly inside, away from the boundary.
-                if row.inside(u) && row.clear_of([u, row.v], gap) {
-                    out.push([u, row.v]);
+                if bands.inside([u, v]) && bands.clear_of([u, v]) {
+                    out.push([u, v]);
                 }
             }
         }
@@ -1257,58 +1263,17 @@ impl Grid {
     }
 }
 
-/// One row of a grid against the rings: where their sides cross it, and
-/// the sides that come within the gap of it.
-struct Row {
-    v: f64,
-    crossings: Vec<f64>,
-    near: Vec<([f64; 2], [f64; 2])>,
-}
-
-impl Row {
-    fn of(rings: &[Ring], v: f64, gap: f64) -> Row {
-        let mut row = Row {
-            v,
-            crossings: Vec::new(),
-            near: Vec::new(),
-        };
-        for r in rings {
-            let n = r.len();
-            for i in 0..n {
-                let (a, b) = (r[i].0, r[(i + 1) % n].0);
-                if (a[1] > v) != (b[1] > v) {
-                    row.crossings
-                        .push(a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]));
-                }
-                if a[1].min(b[1]) - gap <= v && v <= a[1].max(b[1]) + gap {
-                    row.near.push((a, b));
-                }
-            }
-        }
-        row.crossings.sort_by(f64::total_cmp);
-        row
-    }
-
-    /// Even–odd: the crossings past `u`.
-    fn inside(&self, u: f64) -> bool {
-        let past = self.crossings.len() - self.crossings.partition_point(|&x| x <= u);
-        past % 2 == 1
-    }
-
-    /// Farther than `gap` from every side of the rings ([`side_clear`]):
-    /// the sides not near the row are.
-    fn clear_of(&self, p: [f64; 2], gap: f64) -> bool {
-        self.near.iter().all(|&(a, b)| side_clear(a, b, p, gap))
-    }
+/// The sides of the rings, each corner to the next.
+fn sides(rings: &[Ring]) -> impl Iterator<Item = ([f64; 2], [f64; 2])> + '_ {
+    rings
+        .iter()
+        .flat_map(|r| (0..r.len()).map(move |i| (r[i].0, r[(i + 1) % r.len()].0)))
 }
 
 /// Even–odd: whether `p` lies inside the rings.
 #[cfg(test)]
 fn inside(rings: &[Ring], p: [f64; 2]) -> bool {
-    let sides = rings
-        .iter()
-        .flat_map(|r| (0..r.len()).map(move |i| (r[i].0, r[(i + 1) % r.len()].0)));
-    odd_crossings(sides, p)
+    odd_crossings(sides(rings), p)
 }
 
 /// Even–odd over `sides`: an odd number of them cross the level of `p`
@@ -1326,22 +1291,20 @@ fn odd_crossings(sides: impl Iterator<Item = ([f64; 2], [f64; 2])>, p: [f64; 2])
     odd
 }
 
-/// The rings' sides filed in bands of v, so [`Bands::inside`] tests a
-/// point against the sides spanning its band only: the same decisions as
-/// testing every side (one that does not span the band cannot cross the
-/// point's level).
+/// The rings' sides filed in bands of v (each where it comes within
+/// `gap` of the band), so a point is tested against the sides of its band
+/// only: the same decisions as against every side (a side outside the
+/// band can neither cross the point's level nor come within `gap`).
 struct Bands {
     lo: f64,
     step: f64,
+    gap: f64,
     sides: Vec<Vec<([f64; 2], [f64; 2])>>,
 }
 
 impl Bands {
-    fn of(rings: &[Ring]) -> Bands {
-        let all: Vec<([f64; 2], [f64; 2])> = rings
-            .iter()
-            .flat_map(|r| (0..r.len()).map(move |i| (r[i].0, r[(i + 1) % r.len()].0)))
-            .collect();
+    fn of(rings: &[Ring], gap: f64) -> Bands {
+        let all: Vec<([f64; 2], [f64; 2])> = sides(rings).collect();
         let (lo, hi) = all
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), s| {
@@ -1352,12 +1315,13 @@ impl Bands {
         let mut bands = Bands {
             lo,
             step,
+            gap,
             sides: vec![Vec::new(); n],
         };
         for s in all {
             let (a, b) = (
-                bands.band(s.0[1].min(s.1[1])),
-                bands.band(s.0[1].max(s.1[1])),
+                bands.band(s.0[1].min(s.1[1]) - gap),
+                bands.band(s.0[1].max(s.1[1]) + gap),
             );
             for band in &mut bands.sides[a..=b] {
                 band.push(s);
@@ -1375,11 +1339,22 @@ impl Bands {
         }
     }
 
-    fn inside(&self, p: [f64; 2]) -> bool {
+    fn near(&self, p: [f64; 2]) -> &[([f64; 2], [f64; 2])] {
         if self.sides.is_empty() || p[1].is_nan() {
-            return false;
+            return &[];
         }
-        odd_crossings(self.sides[self.band(p[1])].iter().copied(), p)
+        &self.sides[self.band(p[1])]
+    }
+
+    fn inside(&self, p: [f64; 2]) -> bool {
+        odd_crossings(self.near(p).iter().copied(), p)
+    }
+
+    /// Farther than the gap from every side ([`side_clear`]).
+    fn clear_of(&self, p: [f64; 2]) -> bool {
+        self.near(p)
+            .iter()
+            .all(|&(a, b)| side_clear(a, b, p, self.gap))
     }
 }
 
@@ -1443,7 +1418,7 @@ fn cdt(rings: &[Ring], steiner: &[[f64; 2]], stretch: f64) -> Result<Vec<PlaneTr
             .map_err(|e| format!("triangulation refused a point: {e:?}"))?;
         corner_of.entry(h).or_insert(Corner::Steiner(j));
     }
-    let bands = Bands::of(rings);
+    let bands = Bands::of(rings, 0.0);
     let mut out = Vec::new();
     for f in t.inner_faces() {
         let vs = f.vertices();
@@ -1533,28 +1508,27 @@ mod tests {
     }
 
     #[test]
-    fn bands_and_rows_decide_as_every_side_does() {
+    fn bands_decide_as_every_side_does() {
         let mut seed = 11u64;
-        let mut checked = 0;
+        let (mut checked, mut near) = (0, 0);
         for _ in 0..20 {
             let rs = rings(&mut seed);
-            let bands = Bands::of(&rs);
+            let gap = 0.3;
+            let bands = Bands::of(&rs, gap);
             for j in 0..=40 {
-                let v = -10.0 + 0.5 * j as f64;
-                let row = Row::of(&rs, v, 1e-6);
                 for i in 0..=80 {
-                    let p = [-10.0 + 0.25 * i as f64, v + 0.013];
+                    let p = [-10.0 + 0.25 * i as f64, -10.0 + 0.5 * j as f64 + 0.013];
                     assert_eq!(bands.inside(p), inside(&rs, p), "{p:?}");
-                    let q = [p[0], v];
-                    assert_eq!(row.inside(q[0]), inside(&rs, q), "{q:?}");
-                    let every = rs.iter().all(|r| {
-                        (0..r.len()).all(|k| side_clear(r[k].0, r[(k + 1) % r.len()].0, q, 1e-6))
-                    });
-                    assert_eq!(row.clear_of(q, 1e-6), every, "{q:?}");
+                    let every = sides(&rs).all(|(a, b)| side_clear(a, b, p, gap));
+                    assert_eq!(bands.clear_of(p), every, "{p:?}");
+                    near += usize::from(!every);
                     checked += 1;
                 }
             }
         }
-        assert!(checked > 60_000);
+        assert!(
+            checked > 60_000 && near > 1000,
+            "{checked} points, {near} near a side"
+        );
     }
 }

@@ -35,12 +35,8 @@ pub fn too_wide(ctx: &Ctx, limit: f64) -> bool {
 /// Face `own` (mesh index) not reached anywhere: every sample lost, the
 /// face's own arc in the cutter's way.
 pub fn none_reached(samples: &Samples, own: u32) -> Judged {
-    let area: f64 = samples
-        .tris
-        .iter()
-        .map(|[a, b, c]| 0.5 * (b - a).cross(&(c - a)).norm())
-        .sum();
     let all = 0..samples.len() as u32;
+    let area: f64 = all.clone().map(|k| samples.area(k)).sum();
     let mut j = Judged {
         area,
         lost: all.clone().collect(),

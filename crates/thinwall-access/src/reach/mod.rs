@@ -544,7 +544,7 @@ fn face_reach(
     let samples = if a.planar(f).is_none() {
         sampled::Samples::of(face, mesh, own, SAMPLE_SPACING * ctx.tool.diameter)
     } else {
-        sampled::Samples::none()
+        sampled::Samples::default()
     };
     let judged: Vec<(Contact, Judged)> = scenes
         .iter()

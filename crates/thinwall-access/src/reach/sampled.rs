@@ -1,5 +1,6 @@
 //! Reach of a curved face, judged at the middle of each of its triangles,
-//! long ones in pieces ([`Samples`]; weighted by the piece's area): the tool touches the point with its
+//! long ones in pieces ([`Samples`]; weighted by the piece's area): the
+//! tool touches the point with its
 //! end where the face is square to the axis, with the corner of its end
 //! elsewhere (its axis one radius out along the level normal), and must not
 //! cut into any material, the face's own included (a flat end mill cannot
@@ -16,29 +17,24 @@ use thinwall_brep::Face;
 use thinwall_geom::{Point3, Vector3};
 
 /// Where a curved face is judged: its triangles, a long one cut into
-/// pieces at most `spacing` long (a sliver's slices, [`split`]), each with the surface's outward
+/// pieces at most `spacing` long (a sliver's slices, [`split`]), each
+/// with the surface's outward
 /// direction (world, unit) at its middle, where the surface has one, else
 /// the piece's own. Found once per face: every axis and every tool size
 /// judges the same pieces. A cylinder's triangles run the whole length of
 /// the face (the strips between generator lines are flat): judged at their
 /// middles only, a 143 mm blend would be judged at one point per column.
+#[derive(Default)]
 pub struct Samples {
     pub tris: Vec<[Point3; 3]>,
     pub normals: Vec<Vector3>,
 }
 
-/// A piece longer than this many times its width is halved (down to the
+/// A piece longer than this many times its width is sliced (down to the
 /// spacing).
 const ASPECT: f64 = 4.0;
 
 impl Samples {
-    pub fn none() -> Self {
-        Self {
-            tris: Vec::new(),
-            normals: Vec::new(),
-        }
-    }
-
     /// Face `own` (mesh index, B-rep face `face`), pieces at most
     /// `spacing` mm long unless no longer than `ASPECT` widths.
     pub fn of(face: &Face, mesh: &Mesh, own: u32, spacing: f64) -> Self {
@@ -60,6 +56,12 @@ impl Samples {
             })
             .collect();
         Self { tris, normals }
+    }
+
+    /// Piece `k`'s area, mm².
+    pub fn area(&self, k: u32) -> f64 {
+        let [a, b, c] = self.tris[k as usize];
+        0.5 * (b - a).cross(&(c - a)).norm()
     }
 
     pub fn len(&self) -> usize {
@@ -141,8 +143,7 @@ pub fn judge_some(
             return out;
         }
         let [a, b, c] = samples.tris[k as usize];
-        let n = (b - a).cross(&(c - a));
-        let area = 0.5 * n.norm();
+        let area = samples.area(k);
         if area <= 0.0 {
             continue;
         }

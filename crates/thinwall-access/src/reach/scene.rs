@@ -192,11 +192,6 @@ impl Scene {
         self.tris[k as usize].hi[2]
     }
 
-    /// The height of triangle `k`'s lowest corner.
-    pub fn bottom(&self, k: u32) -> f64 {
-        self.tris[k as usize].lo[2]
-    }
-
     /// Heights of the corners of `tris`.
     pub fn heights<'a>(&'a self, tris: &'a [u32]) -> impl Iterator<Item = f64> + 'a {
         tris.iter()
@@ -267,7 +262,31 @@ fn beside(t: &Tri, q: [f64; 2], e: [f64; 2]) -> impl Fn(f64) -> bool {
     move |d: f64| least >= d || most <= -d
 }
 
+/// How a triangle meets a tool whose tip is at some height: wholly above
+/// the cutting length (only the holder, on the whole triangle), wholly
+/// within it (only the cutter, on the whole triangle), or cut by a level
+/// ([`blocked`] clips it there; in the first two cases its clip keeps the
+/// triangle whole).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Meets {
+    Holder,
+    Cutter,
+    Clipped,
+}
+
 impl Tri {
+    /// [`Meets`] at tip height `h`, `touch` this triangle's tolerance.
+    pub fn meets(&self, h: f64, cutting_length: f64, touch: f64) -> Meets {
+        let top = h + cutting_length;
+        if self.lo[2] > top + touch {
+            Meets::Holder
+        } else if self.lo[2] > h + touch && self.hi[2] <= top {
+            Meets::Cutter
+        } else {
+            Meets::Clipped
+        }
+    }
+
     /// Material within this of the tool's surface touches it: `exact` for
     /// a planar face's triangle, `tessellated` for one that only
     /// approximates its face.

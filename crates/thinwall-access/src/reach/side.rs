@@ -50,6 +50,15 @@ pub fn judge_clipped(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace, ow
     judge_lines(ctx, scene, pf, own, f64::INFINITY, false)
 }
 
+/// Whether the face stands along the scene's axis, so [`judge`] takes its
+/// obstacles' whole spans from [`Standing`].
+pub fn stands(ctx: &Ctx, scene: &super::scene::Scene, pf: &PlanarFace) -> bool {
+    let side = SideFrame::new(ctx, scene, pf);
+    pf.polygon_in(&side.frame)
+        .bounding_rect()
+        .is_some_and(|r| side.stands(ctx, scene, (r.min().y, r.max().y)))
+}
+
 fn judge_lines(
     ctx: &Ctx,
     scene: &super::scene::Scene,
@@ -231,11 +240,16 @@ impl SideFrame {
         cands: &[u32],
         (v0, v1): (f64, f64),
     ) -> Option<Standing> {
+        let a = self.tip(scene, 0.0, v0);
+        self.stands(ctx, scene, (v0, v1))
+            .then(|| Standing::new(ctx, scene, cands, a, self.e2))
+    }
+
+    /// Whether the tool's foot stays within the touching tolerance from
+    /// the face's lowest line to its highest.
+    fn stands(&self, ctx: &Ctx, scene: &super::scene::Scene, (v0, v1): (f64, f64)) -> bool {
         let (a, b) = (self.tip(scene, 0.0, v0), self.tip(scene, 0.0, v1));
-        if (a[0] - b[0]).hypot(a[1] - b[1]) > ctx.touch {
-            return None;
-        }
-        Some(Standing::new(ctx, scene, cands, a, self.e2))
+        (a[0] - b[0]).hypot(a[1] - b[1]) <= ctx.touch
     }
 
     /// Add one level line's area, reached area and blockers to `out`;
@@ -256,7 +270,7 @@ impl SideFrame {
         let touches = (ctx.touch, ctx.touch_tessellated());
         let mut clipped = Vec::new();
         let whole = match obstacles.standing {
-            Some(s) => s.at(scene, cands, above, p[2], ctx, &mut clipped),
+            Some(s) => s.at(scene, &cands[..above], p[2], ctx, &mut clipped),
             None => {
                 clipped.extend_from_slice(&cands[..above]);
                 Vec::new()

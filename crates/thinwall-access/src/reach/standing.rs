@@ -8,7 +8,7 @@
 //! without sorting and only the triangles its two levels cut are clipped.
 
 use super::interval::Span;
-use super::scene::{whole_spans, Scene, Whole};
+use super::scene::{whole_spans, Meets, Scene, Whole};
 use super::Ctx;
 
 /// A blocker's key: the mesh face and whether the holder meets it.
@@ -21,20 +21,11 @@ pub fn by_key(x: &(Key, Span), y: &(Key, Span)) -> std::cmp::Ordering {
 
 /// The whole spans of a standing face's candidate triangles.
 pub struct Standing {
-    wholes: Vec<Whole>,
-    /// (key, span, position in the candidates), by key and start: the
-    /// holder's spans.
+    /// (key, span, triangle), by key, start and triangle: the holder's
+    /// spans.
     holders: Vec<(Key, Span, u32)>,
     /// The cutter's, the same way.
     cutters: Vec<(Key, Span, u32)>,
-}
-
-/// Which part of the tool meets a triangle whole at a tip height.
-#[derive(PartialEq)]
-enum Meets {
-    Holder,
-    Cutter,
-    Clipped,
 }
 
 impl Standing {
@@ -46,57 +37,39 @@ impl Standing {
             let mut v: Vec<(Key, Span, u32)> = cands
                 .iter()
                 .zip(&wholes)
-                .enumerate()
-                .filter_map(|(i, (&k, w))| {
-                    pick(w).map(|s| ((scene.tris[k as usize].face, holder), s, i as u32))
+                .filter_map(|(&k, w)| {
+                    pick(w).map(|s| ((scene.tris[k as usize].face, holder), s, k))
                 })
                 .collect();
             v.sort_by(|x, y| by_key(&(x.0, x.1), &(y.0, y.1)).then(x.2.cmp(&y.2)));
             v
         };
-        let holders = sorted(|w| w.holder, true);
-        let cutters = sorted(|w| w.cutter, false);
         Self {
-            wholes,
-            holders,
-            cutters,
+            holders: sorted(|w| w.holder, true),
+            cutters: sorted(|w| w.cutter, false),
         }
     }
 
-    fn part(scene: &Scene, k: u32, h: f64, ctx: &Ctx) -> Meets {
-        let touch = scene.tris[k as usize].touch((ctx.touch, ctx.touch_tessellated()));
-        let top = h + ctx.tool.cutting_length;
-        let (lo, hi) = (scene.bottom(k), scene.top(k));
-        if lo > top + touch {
-            Meets::Holder
-        } else if lo > h + touch && hi <= top {
-            Meets::Cutter
-        } else {
-            Meets::Clipped
-        }
-    }
-
-    /// At tip height `h`: the whole spans of `cands` (the candidates these
-    /// were made of), by key and start; the triangles among `cands[..above]`
-    /// that are not whole there go to `clipped`.
+    /// At tip height `h`: the whole spans, by key and start; the triangles
+    /// among `above` (candidates reaching above the tip) that a level cuts
+    /// go to `clipped`.
     pub fn at(
         &self,
         scene: &Scene,
-        cands: &[u32],
-        above: usize,
+        above: &[u32],
         h: f64,
         ctx: &Ctx,
         clipped: &mut Vec<u32>,
     ) -> Vec<(Key, Span)> {
-        debug_assert_eq!(cands.len(), self.wholes.len());
-        clipped.extend(
-            cands[..above]
-                .iter()
-                .filter(|&&k| Self::part(scene, k, h, ctx) == Meets::Clipped),
-        );
+        let touches = (ctx.touch, ctx.touch_tessellated());
+        let meets = |k: u32| {
+            let t = &scene.tris[k as usize];
+            t.meets(h, ctx.tool.cutting_length, t.touch(touches))
+        };
+        clipped.extend(above.iter().filter(|&&k| meets(k) == Meets::Clipped));
         let pick = |list: &[(Key, Span, u32)], want: Meets| -> Vec<(Key, Span)> {
             list.iter()
-                .filter(|x| Self::part(scene, cands[x.2 as usize], h, ctx) == want)
+                .filter(|x| meets(x.2) == want)
                 .map(|x| (x.0, x.1))
                 .collect()
         };
