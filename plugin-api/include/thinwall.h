@@ -495,6 +495,16 @@ enum tw_status tw_part_load_memory(const uint8_t *data, size_t len, struct tw_pa
 // Number of faces of the part's solid bodies (0 for NULL).
 size_t tw_part_face_count(const struct tw_part *part);
 
+// The ordinal of face (`body`, `step_id`) — as every result names a face —
+// in the order OpenCascade numbers the faces of the shape it reads from
+// the same file (`TopExp::MapShapes(shape, TopAbs_FACE, map)`, from 0:
+// `map.FindKey(*ordinal + 1)`; FreeCAD's `Shape.Faces[*ordinal]`).
+// `TW_ERR_OUT_OF_RANGE` when the part has no such face.
+enum tw_status tw_part_face_occ_index(const struct tw_part *part,
+                                      uint32_t body,
+                                      uint64_t step_id,
+                                      uint32_t *ordinal);
+
 // Free a part. NULL is allowed.
 void tw_part_free(struct tw_part *part);
 

@@ -234,9 +234,15 @@ fn classify_status(e: &thinwall_classify::ClassifyError) -> tw_status {
 /// The status and message of a use case's error (the CLI prints the same
 /// message and exits by the same error's kind).
 pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
+    (study_status(&e), e.to_string())
+}
+
+/// The status of a use case's error (also the Python package's
+/// exceptions' `status`).
+pub fn study_status(e: &thinwall_study::StudyError) -> tw_status {
     use thinwall_ops::OpsError as O;
     use thinwall_study::StudyError as S;
-    let status = match &e {
+    match e {
         S::Invalid { .. } | S::Reach(_) | S::Sizing(_) => tw_status::TW_ERR_INVALID_ARGUMENT,
         S::Io { .. } => tw_status::TW_ERR_IO,
         S::Read(r) => read_status(r),
@@ -248,6 +254,5 @@ pub(crate) fn study_failure(e: thinwall_study::StudyError) -> Failure {
         S::Classify(c) => classify_status(c),
         S::Panic { .. } => tw_status::TW_ERR_PANIC,
         S::BudgetExceeded { .. } => tw_status::TW_ERR_BUDGET_EXCEEDED,
-    };
-    (status, e.to_string())
+    }
 }

@@ -20,7 +20,7 @@ mod result;
 
 pub use access::*;
 pub use classify::*;
-pub use error::{tw_last_error_message, tw_status};
+pub use error::{study_status, tw_last_error_message, tw_status};
 pub use machining::*;
 pub use operations::*;
 pub use options::*;

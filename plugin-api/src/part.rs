@@ -1,6 +1,6 @@
 //! `tw_part`: a STEP part read into memory with its adjacency graph.
 
-use crate::error::{construct, count, free, null, study_failure, tw_status, Failure};
+use crate::error::{construct, count, free, guard, null, study_failure, tw_status, Failure};
 use std::ffi::{c_char, CStr};
 
 /// A part read from STEP (opaque). Immutable; safe to share between threads.
@@ -90,6 +90,41 @@ pub unsafe extern "C" fn tw_part_load_memory(
 #[no_mangle]
 pub unsafe extern "C" fn tw_part_face_count(part: *const tw_part) -> usize {
     count(part, |p| p.loaded.part.faces.len())
+}
+
+/// The ordinal of face (`body`, `step_id`) — as every result names a face —
+/// in the order OpenCascade numbers the faces of the shape it reads from
+/// the same file (`TopExp::MapShapes(shape, TopAbs_FACE, map)`, from 0:
+/// `map.FindKey(*ordinal + 1)`; FreeCAD's `Shape.Faces[*ordinal]`).
+/// `TW_ERR_OUT_OF_RANGE` when the part has no such face.
+#[no_mangle]
+pub unsafe extern "C" fn tw_part_face_occ_index(
+    part: *const tw_part,
+    body: u32,
+    step_id: u64,
+    ordinal: *mut u32,
+) -> tw_status {
+    guard("tw_part_face_occ_index", || {
+        let p = &part_ref(part)?.loaded.part;
+        if ordinal.is_null() {
+            return Err(null("ordinal"));
+        }
+        let found = p
+            .faces
+            .iter()
+            .position(|f| f.body.0 == body && f.step_id == step_id)
+            .and_then(|i| p.occ_ordinals.get(i));
+        match found {
+            Some(&o) => {
+                *ordinal = o;
+                Ok(())
+            }
+            None => Err((
+                tw_status::TW_ERR_OUT_OF_RANGE,
+                format!("no face #{step_id} in body {body}"),
+            )),
+        }
+    })
 }
 
 /// Free a part. NULL is allowed.

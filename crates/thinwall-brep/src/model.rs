@@ -162,6 +162,14 @@ pub struct Supplemental {
 /// Samples per knot span of a curved edge for the part's bounding box.
 const BOX_SAMPLES_PER_SPAN: usize = 32;
 
+/// A face as every result names it: its body's index and its STEP id (a
+/// body placed twice has the same ids in both).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct FaceKey {
+    pub body: u32,
+    pub step_id: u64,
+}
+
 /// A part: everything read from one STEP file.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Part {
@@ -172,6 +180,14 @@ pub struct Part {
     pub edges: Vec<Edge>,
     pub vertices: Vec<Vertex>,
     pub supplemental: Supplemental,
+    /// Per face (by [`FaceId`]), its ordinal in the order OpenCascade
+    /// numbers the faces of the shape it reads from the same file
+    /// (`TopExp::MapShapes(shape, TopAbs_FACE)`, from 0: FreeCAD's
+    /// `Shape.Faces`, CadQuery's and pythonOCC's face order). Empty for a
+    /// part not read from STEP. Supplemental surface models' faces hold
+    /// ordinals too, so an ordinal may be no face's here.
+    #[serde(default)]
+    pub occ_ordinals: Vec<u32>,
     /// The faces each edge bounds, built on first use ([`Part::edge_faces`]).
     #[serde(skip)]
     pub edge_faces_cache: EdgeFaces,
@@ -189,6 +205,33 @@ impl PartialEq for EdgeFaces {
 }
 
 impl Part {
+    /// Face `f`'s ordinal in OpenCascade's order ([`Part::occ_ordinals`]),
+    /// when the part was read from STEP.
+    pub fn occ_ordinal(&self, f: FaceId) -> Option<u32> {
+        self.occ_ordinals.get(f.index()).copied()
+    }
+
+    /// The part's faces in OpenCascade's order: entry `i` names the face
+    /// OpenCascade numbers `i` by its body and STEP id, or is `None` for one
+    /// Thinwall does not read as part of a body (a supplemental surface
+    /// model's). Empty for a part not read from STEP.
+    pub fn occ_faces(&self) -> Vec<Option<FaceKey>> {
+        if self.occ_ordinals.is_empty() {
+            return Vec::new();
+        }
+        let n = self.faces.len() + self.supplemental.face_count;
+        let mut out = vec![None; n];
+        for (f, &o) in self.faces.iter().zip(&self.occ_ordinals) {
+            if let Some(slot) = out.get_mut(o as usize) {
+                *slot = Some(FaceKey {
+                    body: f.body.0,
+                    step_id: f.step_id,
+                });
+            }
+        }
+        out
+    }
+
     /// The faces whose loops use edge `e` (two on a closed shell; a seam
     /// edge's face once), in face order. Built once per part.
     pub fn edge_faces(&self, e: EdgeId) -> &[FaceId] {

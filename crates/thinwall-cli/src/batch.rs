@@ -2,7 +2,7 @@
 //! summary. A bad file (unreadable, tessellated only, or one that makes
 //! Thinwall fail) is a line of the summary, never the end of the batch.
 
-use crate::failure::Failure;
+use thinwall_cli::failure::Failure;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;

@@ -1,6 +1,6 @@
 //! `thinwall check`: a part's recognition against a stored one.
 
-use crate::failure::Failure;
+use thinwall_cli::failure::Failure;
 use std::path::Path;
 use thinwall_report::expect::{compare, CheckTolerance};
 

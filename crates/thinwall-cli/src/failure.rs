@@ -12,6 +12,14 @@ pub enum Failure {
     Input(String),
     /// Exit 3: a defect of Thinwall.
     Internal(String),
+    /// A use case's error (exit by its kind), with the message printed
+    /// (naming the flag a bad value came from): a front end that reports
+    /// more than the kind (the Python package's code and C status) reads
+    /// them from `error`.
+    Study {
+        error: thinwall_study::StudyError,
+        message: String,
+    },
 }
 
 impl Failure {
@@ -26,6 +34,7 @@ impl Failure {
             Failure::Usage(_) => ErrorKind::Usage,
             Failure::Input(_) => ErrorKind::Input,
             Failure::Internal(_) => ErrorKind::Internal,
+            Failure::Study { error, .. } => error.kind(),
         }
     }
 
@@ -41,23 +50,37 @@ impl Failure {
     pub fn message(&self) -> &str {
         match self {
             Failure::Usage(m) | Failure::Input(m) | Failure::Internal(m) => m,
+            Failure::Study { message, .. } => message,
+        }
+    }
+
+    /// A stable machine-readable code: the use case's error's
+    /// (`invalid.threshold`, `read.syntax`), or the kind's name for a
+    /// failure of the command line itself.
+    pub fn code(&self) -> String {
+        match self {
+            Failure::Study { error, .. } => error.code(),
+            _ => self.kind().to_string(),
+        }
+    }
+
+    /// The use case's error this failure is, if it is one.
+    pub fn study_error(&self) -> Option<&thinwall_study::StudyError> {
+        match self {
+            Failure::Study { error, .. } => Some(error),
+            _ => None,
         }
     }
 }
 
 impl From<thinwall_study::StudyError> for Failure {
     fn from(e: thinwall_study::StudyError) -> Self {
-        use thinwall_study::ErrorKind;
         // Name the flag a bad value came from.
-        let m = match e.field() {
+        let message = match e.field() {
             Some(field) => format!("--{}: {e}", field.replace('_', "-")),
             None => e.to_string(),
         };
-        match e.kind() {
-            ErrorKind::Usage => Failure::Usage(m),
-            ErrorKind::Input => Failure::Input(m),
-            ErrorKind::Internal => Failure::Internal(m),
-        }
+        Failure::Study { error: e, message }
     }
 }
 

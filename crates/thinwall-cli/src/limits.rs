@@ -2,7 +2,7 @@
 //! the time a command may work on one part, and how many parts `batch` may
 //! run at once.
 
-use crate::failure::Failure;
+use thinwall_cli::failure::Failure;
 use std::sync::OnceLock;
 use std::time::Duration;
 use thinwall_study::{LoadedPart, Study};

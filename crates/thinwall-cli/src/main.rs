@@ -7,13 +7,12 @@ use std::path::Path;
 use std::process::ExitCode;
 use thinwall_study::{self as study, Format, LoadedPart, Rendered};
 
-mod args;
 mod batch;
 mod check;
-mod failure;
 mod limits;
-use args::{Cli, Command};
-use failure::Failure;
+use thinwall_cli::args::{Cli, Command};
+use thinwall_cli::failure::{self, Failure};
+use thinwall_cli::jobs::{self, Progress};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -35,23 +34,10 @@ fn main() -> ExitCode {
 
 fn run(command: Command) -> Result<(), Failure> {
     match command {
-        Command::Inspect { part, format } => {
-            let loaded = LoadedPart::read_file(&part)?;
-            emit(
-                study::inspect(&limits::study(&loaded))?.into(),
-                format,
-                None,
-            )
-        }
         Command::Recognize(a) => {
             let request = a.flags.request()?;
             recognize(&a.part, &request, a.verbose, a.format, a.output.as_deref())
         }
-        Command::Plan(a) => plan(a),
-        Command::Access(a) => access(a),
-        Command::Operations(a) => operations(a),
-        Command::SizeWall(a) => emit(study::size_wall(&a.request())?.into(), a.format, None),
-        Command::Classify(a) => classify(a),
         Command::Batch(a) => {
             let mut request = a.flags.request()?;
             // The parts run in parallel; each runs alone.
@@ -72,82 +58,39 @@ fn run(command: Command) -> Result<(), Failure> {
             };
             check::command(&a.part, &a.expect, a.update, tol, a.flags.request()?)
         }
+        command => one_job(jobs::asked(command)?),
     }
 }
 
-fn plan(a: args::PlanArgs) -> Result<(), Failure> {
-    let (recognize, later_ups) = a.flags.in_turn()?;
-    // Without an up (flag or settings) the set-ups are proposed.
-    let propose = !recognize.machining.in_setup;
-    let mut request = study::PlanRequest::new(recognize, rules_of(a.rules.as_deref())?);
-    request.later_ups = later_ups;
-    request.propose = propose;
-    let loaded = LoadedPart::read_file(&a.part)?;
-    let s = limits::study(&loaded);
-    let spinner = Spinner::new();
-    let planned = study::plan_observed(&s, &request, &|m| spinner.say(m))?;
+/// A one-part command: read the part, run its job with progress on a
+/// terminal, write the result (and a plan's volumes).
+fn one_job(asked: jobs::Asked) -> Result<(), Failure> {
+    let loaded = match &asked.part {
+        Some(path) => Some(LoadedPart::read_file(path)?),
+        None => None,
+    };
+    let s = loaded.as_ref().map(limits::study);
+    // Access counts faces on a bar; plan and operations say their stage.
+    let by_face = matches!(asked.job, jobs::Job::Access(_));
+    let spinner = (!by_face).then(Spinner::new);
+    let bar = by_face.then(|| Bar::new(loaded.as_ref().map_or(0, |l| l.part.faces.len())));
+    let say = |m: &str| spinner.iter().for_each(|s| s.say(m));
+    let face = |_: usize, _: usize| bar.iter().for_each(Bar::inc);
+    let progress = Progress {
+        stage: &say,
+        face: &face,
+    };
+    let rendered = jobs::run(&asked.job, s.as_ref(), &progress);
+    drop(bar);
     drop(spinner);
-    if let Some(dir) = &a.volumes_dir {
+    let rendered = rendered?;
+    if let (Some(dir), Rendered::Planned(planned)) = (&asked.volumes_dir, &rendered) {
         let skipped = study::write_volumes(&planned.plan, dir)?;
         if skipped > 0 {
             eprintln!("note: {skipped} solid(s) bounded by a cylinder or cone are not written yet (their volumes are in the plan)");
         }
     }
-    emit(planned.into(), a.format, a.output.as_deref())
-}
-
-fn access(a: args::AccessArgs) -> Result<(), Failure> {
-    let setup = study::setup_of(a.up, a.machine.machine(a.tilt_limit))?;
-    let mut request = study::AccessRequest::new(setup);
-    request.tool = args::tool(a.tool_diameter, a.cutting_length, a.holder_diameter);
-    request.tool_radius = a.tool_radius;
-    request.threshold = a.threshold;
-    request.check()?;
-    let loaded = LoadedPart::read_file(&a.part)?;
-    let s = limits::study(&loaded);
-    let bar = Bar::new(loaded.part.faces.len());
-    let accessed = study::access_observed(&s, &request, |_, _| bar.inc())?;
-    drop(bar);
-    emit(accessed.into(), a.format, a.output.as_deref())
-}
-
-fn operations(a: args::OperationsArgs) -> Result<(), Failure> {
-    let setup = study::setup_of(a.up.first().copied(), thinwall_analysis::Machine::ThreeAxis)?;
-    let mut request = study::OperationsRequest::new(setup);
-    request.tools = tools_of(a.tools.as_deref())?;
-    if let Some(m) = a.min_share {
-        request.tools.min_share_mm2 = m;
-    }
-    request.axial_depth = a.axial_depth;
-    request.by_feature = a.by_feature;
-    request.both_sides = a.both_sides;
-    request.later_ups = a.up.iter().skip(1).copied().collect();
-    // Without an up the set-ups are proposed.
-    request.choose_up = a.choose_up || (a.up.is_empty() && !a.both_sides);
-    request.check()?;
-    let loaded = LoadedPart::read_file(&a.part)?;
-    let spinner = Spinner::new();
-    let operated =
-        study::operations_observed(&limits::study(&loaded), &request, &|m| spinner.say(m))?;
-    drop(spinner);
-    emit(operated.into(), a.format, a.output.as_deref())
-}
-
-fn classify(a: args::ClassifyArgs) -> Result<(), Failure> {
-    let setup = study::setup_of(a.up, thinwall_analysis::Machine::ThreeAxis)?;
-    let loaded = LoadedPart::read_file(&a.part)?;
-    let volumes = a
-        .volume
-        .iter()
-        .map(study::read_volume)
-        .collect::<Result<Vec<_>, _>>()?;
-    let request = study::ClassifyRequest {
-        setup,
-        volumes,
-        before: a.before,
-    };
-    let classified = study::classify(&limits::study(&loaded), request)?;
-    emit(classified.into(), a.format, a.output.as_deref())
+    emit(rendered, asked.format, asked.output.as_deref())
 }
 
 /// `recognize`: the report, with the time of every stage on stderr when
@@ -186,37 +129,6 @@ fn recognize(
         }
     }
     emit(recognized.into(), format, output)
-}
-
-/// The sequence rules of `--rules`, or the shipped ones. An unreadable
-/// file is an input failure.
-fn rules_of(path: Option<&Path>) -> Result<thinwall_plan::RuleSet, Failure> {
-    match path {
-        None => Ok(thinwall_plan::RuleSet::default_rules()),
-        Some(p) => Ok(thinwall_plan::RuleSet::from_toml(
-            &text_of(p, Failure::Input)?,
-            &p.display().to_string(),
-        )
-        .map_err(study::StudyError::from)?),
-    }
-}
-
-/// The tool library of `--tools`, or the shipped one. An unreadable file
-/// is a usage failure (as it always was).
-fn tools_of(path: Option<&Path>) -> Result<thinwall_ops::ToolLibrary, Failure> {
-    match path {
-        None => Ok(thinwall_ops::ToolLibrary::default_tools()),
-        Some(p) => Ok(thinwall_ops::ToolLibrary::from_toml(
-            &text_of(p, Failure::Usage)?,
-            &p.display().to_string(),
-        )
-        .map_err(study::StudyError::from)?),
-    }
-}
-
-/// The text of a settings file, or `failure` naming it.
-fn text_of(path: &Path, failure: fn(String) -> Failure) -> Result<String, Failure> {
-    std::fs::read_to_string(path).map_err(|e| failure(format!("{}: {e}", path.display())))
 }
 
 /// A progress bar on a terminal's stderr (nothing otherwise).

@@ -251,6 +251,11 @@ pub fn plan_in_turn(
         then: Vec::new(),
         residue: None,
         proposal: None,
+        opencascade_faces: if earlier.is_empty() {
+            analysis.part().occ_faces()
+        } else {
+            Vec::new()
+        },
         queries: seq,
     })
 }

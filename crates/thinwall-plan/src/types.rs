@@ -295,6 +295,13 @@ pub struct Plan {
     /// The set-ups proposed and why (when they were not given).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub proposal: Option<thinwall_setups::Proposal>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP and
+    /// in a later set-up's plan (`then`: the first one's holds).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
     /// The in-memory sequence, for queries.
     #[serde(skip)]
     pub queries: Sequence,

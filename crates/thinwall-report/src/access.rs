@@ -69,6 +69,12 @@ pub struct AccessReport {
     pub features: Vec<FeatureTool>,
     /// What this report does not cover yet.
     pub not_yet: Vec<String>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
 }
 
 impl AccessReport {
@@ -95,6 +101,7 @@ impl AccessReport {
                 "five axes: up and 24 tilted axes are tried, not every axis within the limit"
                     .into(),
             ],
+            opencascade_faces: Vec::new(),
         }
     }
 

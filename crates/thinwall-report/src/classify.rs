@@ -19,6 +19,12 @@ pub struct ClassificationReport {
     pub before: Vec<[usize; 2]>,
     /// In the order given.
     pub volumes: Vec<Classification>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
 }
 
 impl ClassificationReport {
@@ -35,6 +41,7 @@ impl ClassificationReport {
             up,
             before: before.iter().map(|&(a, b)| [a, b]).collect(),
             volumes,
+            opencascade_faces: Vec::new(),
         }
     }
 

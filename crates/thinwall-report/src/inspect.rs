@@ -48,6 +48,9 @@ pub struct FaceEntry {
     pub radius: Option<f64>,
     pub outer_loops: usize,
     pub inner_loops: usize,
+    /// Its ordinal in OpenCascade's face order (`opencascade_faces`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub occ_index: Option<u32>,
 }
 
 /// One edge with its faces and how they meet.
@@ -101,6 +104,12 @@ pub struct InspectReport {
     /// Every warning, in full: the reader's drops and repairs, approximate
     /// figures, open, non-manifold or unjudged edges.
     pub warnings: Vec<thinwall_analysis::Warning>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
 }
 
 /// Build the report of a part read from `file`, from its analysis (any
@@ -136,6 +145,7 @@ pub fn inspect(file: &str, analysis: &PartAnalysis, read: &ReadReport) -> Inspec
             radius: props.radius,
             outer_loops: outer,
             inner_loops: f.loops.len() - outer,
+            occ_index: part.occ_ordinal(id),
         });
     }
     let mut edge_convexity_counts = BTreeMap::new();
@@ -178,6 +188,7 @@ pub fn inspect(file: &str, analysis: &PartAnalysis, read: &ReadReport) -> Inspec
         edge_convexity_counts,
         supplemental_faces: part.supplemental.face_count,
         supplemental_surface_models: part.supplemental.surface_models.clone(),
+        opencascade_faces: part.occ_faces(),
         faces,
         edges,
         adjacencies: graph.graph.edge_count(),

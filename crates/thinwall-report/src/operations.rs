@@ -34,6 +34,12 @@ pub struct OperationsReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub proposal: Option<thinwall_setups::proposal::Proposal>,
     pub not_yet: Vec<String>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
 }
 
 /// A set-up after the first: its stock is what the set-ups before it
@@ -83,6 +89,7 @@ impl OperationsReport {
             then: Vec::new(),
             residue: None,
             proposal: None,
+            opencascade_faces: Vec::new(),
             not_yet: vec![
                 "holes wider than twice the largest end mill are pocketed with the layers (no boring subtype)".into(),
                 "the plan's relations bind the order with --by-feature only; the default keeps the geometric precedences".into(),

@@ -46,6 +46,9 @@ pub struct FaceSummary {
     pub surface: String,
     /// mm².
     pub area: f64,
+    /// Its ordinal in OpenCascade's face order (`opencascade_faces`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub occ_index: Option<u32>,
 }
 
 /// A stiffness feature with, for walls, the accessibility of its sides.
@@ -94,6 +97,12 @@ pub struct RecognitionReport {
     /// What the reader dropped or repaired and what the analysis found
     /// questionable, in full.
     pub warnings: Vec<Warning>,
+    /// The part's faces in OpenCascade's order (`TopExp::MapShapes` over
+    /// the shape it reads from the same file): entry `i` names the face a
+    /// host built on OpenCascade numbers `i`, `null` for one of a
+    /// supplemental surface model. Absent for a part not read from STEP.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub opencascade_faces: Vec<Option<thinwall_brep::FaceKey>>,
 }
 
 /// The reader's drops and repairs as warnings.
@@ -130,6 +139,7 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
                 name: face.name.clone(),
                 surface: face.surface.kind_name().to_string(),
                 area: out.face_props[f.index()].area,
+                occ_index: part.occ_ordinal(f),
             }
         })
         .collect();
@@ -196,6 +206,7 @@ pub fn recognition_report(file: &str, part: &Part, out: &Outcome) -> Recognition
         machining_features,
         hole_patterns: out.hole_patterns.clone(),
         warnings: out.warnings.clone(),
+        opencascade_faces: part.occ_faces(),
     }
 }
 

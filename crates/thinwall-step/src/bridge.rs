@@ -67,7 +67,8 @@ pub fn read(
     let scene = model.scene();
     let mut builder = Builder::new(&scene, &ids, file, &mut out, limits);
     builder.collect_bodies()?;
-    let part = builder.part;
+    let mut part = builder.part;
+    part.occ_ordinals = crate::occ_order::ordinals(&refs, &builder.groups, part.faces.len());
     for w in scene.warnings() {
         out.repaired.push(ReadIssue {
             entity: None,
@@ -288,6 +289,10 @@ struct Builder<'s, 'm> {
     units: (f64, f64),
     placed: HashSet<(EntityKey, [u64; 12])>,
     limits: &'s ReadLimits,
+    /// The solids and surface models placed, for OpenCascade's face order.
+    groups: Vec<crate::occ_order::Group>,
+    /// Product definitions visited so far (then one per later phase).
+    visit: usize,
 }
 
 /// The state of an assembly walk: the definitions above the current one,
@@ -350,6 +355,8 @@ impl<'s, 'm> Builder<'s, 'm> {
             units: (mm, rad),
             placed: HashSet::new(),
             limits,
+            groups: Vec::new(),
+            visit: 0,
         }
     }
 
@@ -376,6 +383,7 @@ impl<'s, 'm> Builder<'s, 'm> {
         for def in roots {
             self.visit_definition(def, IDENTITY, def.id().to_string(), &mut walk)?;
         }
+        self.visit += 1;
         let mapped: Vec<_> = self.scene.all_mapped_instances().collect();
         for mi in mapped {
             let matrix = match mi.transform().and_then(|t| t.matrix()) {
@@ -393,6 +401,7 @@ impl<'s, 'm> Builder<'s, 'm> {
                 self.add_surface_model(sm, matrix, Some(format!("mapped item {}", mi.name())))?;
             }
         }
+        self.visit += 1;
         let solids: Vec<_> = self.scene.all_solids().collect();
         for solid in solids {
             if !self.placed.iter().any(|(k, _)| *k == solid.key()) {
@@ -428,6 +437,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             });
         }
         walk.instances += 1;
+        self.visit += 1;
         if walk.instances > self.limits.max_instances {
             return Err(StepError::TooManyInstances {
                 file: self.file.to_string(),
@@ -534,9 +544,15 @@ impl<'s, 'm> Builder<'s, 'm> {
             let shells = shells.into_iter().map(|(s, o)| (s, o, false)).collect();
             self.add_body(body, shells, self.place(matrix))
         } else {
+            let count = shells.iter().map(|(s, _)| s.faces().count()).sum::<usize>();
             self.part.supplemental.surface_models.push(step_id);
-            self.part.supplemental.face_count +=
-                shells.iter().map(|(s, _)| s.faces().count()).sum::<usize>();
+            self.part.supplemental.face_count += count;
+            self.groups.push(crate::occ_order::Group {
+                visit: self.visit,
+                item: step_id,
+                first: None,
+                count,
+            });
             Ok(())
         }
     }
@@ -556,6 +572,7 @@ impl<'s, 'm> Builder<'s, 'm> {
             });
         }
         let body_id = BodyId(self.part.bodies.len() as u32);
+        let first = self.part.faces.len();
         let mut edges: HashMap<EntityKey, EdgeId> = HashMap::new();
         let mut vertices: HashMap<EntityKey, VertexId> = HashMap::new();
         let mut seen: HashSet<EntityKey> = HashSet::new();
@@ -580,6 +597,12 @@ impl<'s, 'm> Builder<'s, 'm> {
                 faces,
             });
         }
+        self.groups.push(crate::occ_order::Group {
+            visit: self.visit,
+            item: body.step_id,
+            first: Some(first),
+            count: self.part.faces.len() - first,
+        });
         self.part.bodies.push(body);
         Ok(())
     }

@@ -14,6 +14,7 @@
 mod bridge;
 mod error;
 pub mod id_scan;
+mod occ_order;
 mod references;
 pub mod sanity;
 mod seam;

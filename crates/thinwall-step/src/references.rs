@@ -99,6 +99,12 @@ impl References {
         self.ids.last().copied()
     }
 
+    /// Every statement in file order: its position, id, entity names and
+    /// references.
+    pub fn statements(&self) -> impl Iterator<Item = (usize, u64, &[String], &[u64])> + '_ {
+        (0..self.ids.len()).map(|i| (i, self.ids[i], &self.keywords[i][..], self.refs_of(i)))
+    }
+
     fn refs_of(&self, i: usize) -> &[u64] {
         &self.refs[self.starts[i]..self.starts[i + 1]]
     }

@@ -285,7 +285,7 @@ pub fn access_observed<'p>(
             tool: req.tool.clone(),
             machine: req.setup().machine,
         };
-        let report = AccessReport::new(
+        let mut report = AccessReport::new(
             study.name(),
             req.setup().up,
             req.flank(),
@@ -293,6 +293,7 @@ pub fn access_observed<'p>(
             settings,
             reach,
         );
+        report.opencascade_faces = study.loaded().part.occ_faces();
         Ok(Accessed { at, report })
     })
 }
@@ -338,8 +339,9 @@ pub fn operations_observed<'p>(
             let limits = thinwall_plan::step_limits(&holes)?;
             thinwall_ops::plan_setup(a, &holes.machining, &req.tools, req.axial_depth, &limits)?
         };
-        let report =
+        let mut report =
             OperationsReport::new(study.name(), req.setup.up, &frame, req.tools.clone(), ops);
+        report.opencascade_faces = study.loaded().part.occ_faces();
         Ok(Operated { at, report })
     })
 }
@@ -422,6 +424,7 @@ fn report_of(
         .collect();
     report.residue = residue;
     report.proposal = proposal;
+    report.opencascade_faces = study.loaded().part.occ_faces();
     report
 }
 
@@ -507,7 +510,9 @@ pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classifie
             together: &[],
             priority: vec![],
         })?;
-        let report = ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
+        let mut report =
+            ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
+        report.opencascade_faces = study.loaded().part.occ_faces();
         Ok(Classified {
             at,
             report,
