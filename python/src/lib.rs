@@ -74,6 +74,13 @@ impl Part {
     fn face_count(&self) -> usize {
         self.loaded.part.faces.len()
     }
+
+    /// Number of faces OpenCascade numbers in the shape it reads from the
+    /// same text (the solids' and the supplemental surface models').
+    #[getter]
+    fn occ_face_count(&self) -> usize {
+        self.loaded.part.occ_faces().len()
+    }
 }
 
 /// Run the command `argv` (as after `thinwall` on the command line) and
@@ -137,6 +144,13 @@ fn raise(py: Python<'_>, failure: &Failure) -> PyErr {
     err
 }
 
+/// The colours of Thinwall's pictures by name (`stiffness.web`,
+/// `machining.hole`, `plan.large`, …), as `#rrggbb`: a host colours alike.
+#[pyfunction]
+fn palette() -> std::collections::BTreeMap<String, String> {
+    thinwall_report::palette::table()
+}
+
 /// The Thinwall version of the library.
 #[pyfunction]
 fn version() -> &'static str {
@@ -149,6 +163,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Part>()?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(version, m)?)?;
+    m.add_function(wrap_pyfunction!(palette, m)?)?;
     m.add("ThinwallError", py.get_type::<ThinwallError>())?;
     m.add("UsageError", py.get_type::<UsageError>())?;
     m.add("InputError", py.get_type::<InputError>())?;

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Iterable, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, Optional, Sequence, Tuple, Union
 
 from . import _native
 from ._native import InputError, InternalError, Part, ThinwallError, UsageError
@@ -42,10 +42,16 @@ __all__ = [
     "Access", "Classification", "Face", "FaceReach", "Feature", "InputError", "Inspection",
     "InternalError", "Operations", "Part", "Plan", "Recognition", "Record", "Result",
     "ThinwallError", "UsageError", "WallSizing", "access", "classify", "inspect", "operations",
-    "plan", "read", "recognize", "size_wall", "__version__",
+    "palette", "plan", "read", "recognize", "size_wall", "__version__",
 ]
 
 __version__ = _native.version()
+
+
+def palette() -> Dict[str, str]:
+    """The colours of Thinwall's pictures by name (``stiffness.web``,
+    ``machining.hole``, …) as ``#rrggbb``, for a host to colour alike."""
+    return _native.palette()
 
 #: What a command takes as its part.
 PartLike = Union[Part, str, "os.PathLike[str]", bytes]
