@@ -17,7 +17,7 @@ fn read(p: &Path) -> String {
     std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
 }
 
-/// Every crate's manifest: `crates/*`, `plugin-api`.
+/// Every crate's manifest: `crates/*`, `plugin-api`, `python`.
 fn manifests() -> Vec<PathBuf> {
     let root = common::root();
     let mut out: Vec<PathBuf> = std::fs::read_dir(root.join("crates"))
@@ -27,6 +27,7 @@ fn manifests() -> Vec<PathBuf> {
         .collect();
     out.push(root.join("plugin-api/Cargo.toml"));
     out.push(root.join("plugin-api/clib/Cargo.toml"));
+    out.push(root.join("python/Cargo.toml"));
     out.sort();
     out
 }

@@ -93,7 +93,28 @@ fn check(path: &Path) -> usize {
         "{}: solid faces differ from the file's shells",
         path.display()
     );
+    check_ordinals(&part, path);
     part.faces.len()
+}
+
+/// The faces' ordinals in OpenCascade's order are distinct and leave
+/// exactly the supplemental surface models' faces unnamed (which face each
+/// ordinal is, OpenCascade itself checks: `python/tests/test_ordinals.py`).
+fn check_ordinals(part: &thinwall_brep::Part, path: &Path) {
+    let order = part.occ_faces();
+    assert_eq!(part.occ_ordinals.len(), part.faces.len(), "{}", path.display());
+    assert_eq!(
+        order.len(),
+        part.faces.len() + part.supplemental.face_count,
+        "{}",
+        path.display()
+    );
+    let named = order.iter().flatten().count();
+    assert_eq!(named, part.faces.len(), "{}: an ordinal given twice", path.display());
+    for (i, f) in part.faces.iter().enumerate() {
+        let key = order[part.occ_ordinals[i] as usize].expect("named");
+        assert_eq!((key.body, key.step_id), (f.body.0, f.step_id));
+    }
 }
 
 #[test]
@@ -147,6 +168,15 @@ fn supplemental_surface_geometry_is_kept_apart() {
     assert_eq!(in_bodies, part.faces.len());
     let (ctc1, _) = thinwall_step::read_file(nist.join("nist_ctc_01_asme1_ap242-e1.stp")).unwrap();
     assert_eq!(ctc1.supplemental.face_count, 0);
+    // OpenCascade numbers supplemental faces where the statement linking
+    // their representation stands: after the solid's in FTC 10, before it
+    // in STC 07 (its surface model's representation is linked first).
+    let after = part.occ_faces();
+    assert!(after[..part.faces.len()].iter().all(Option::is_some));
+    let (stc7, _) = thinwall_step::read_file(nist.join("nist_stc_07_asme1_ap242-e3.stp")).unwrap();
+    let before = stc7.occ_faces();
+    assert_eq!(stc7.supplemental.face_count, 2);
+    assert!(before[..2].iter().all(Option::is_none) && before[2..].iter().all(Option::is_some));
 }
 
 #[test]

@@ -132,3 +132,39 @@ pub unsafe extern "C" fn tw_part_face_occ_index(
 pub unsafe extern "C" fn tw_part_free(part: *mut tw_part) {
     free(part)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_face_of_each_placed_instance_has_its_own_opencascade_ordinal() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../fixtures/bracket_assembly.step\0");
+        let mut part: *mut tw_part = std::ptr::null_mut();
+        unsafe {
+            assert_eq!(
+                tw_part_load_file(path.as_ptr().cast(), &mut part),
+                tw_status::TW_OK
+            );
+            let mut ordinal = u32::MAX;
+            // Two instances of one 18-face bracket: the second's faces follow.
+            assert_eq!(tw_part_face_occ_index(part, 0, 39, &mut ordinal), tw_status::TW_OK);
+            assert_eq!(ordinal, 0);
+            assert_eq!(tw_part_face_occ_index(part, 1, 39, &mut ordinal), tw_status::TW_OK);
+            assert_eq!(ordinal, 18);
+            assert_eq!(
+                tw_part_face_occ_index(part, 2, 39, &mut ordinal),
+                tw_status::TW_ERR_OUT_OF_RANGE
+            );
+            assert_eq!(
+                tw_part_face_occ_index(part, 0, 39, std::ptr::null_mut()),
+                tw_status::TW_ERR_NULL_ARGUMENT
+            );
+            assert_eq!(
+                tw_part_face_occ_index(std::ptr::null(), 0, 39, &mut ordinal),
+                tw_status::TW_ERR_NULL_ARGUMENT
+            );
+            tw_part_free(part);
+        }
+    }
+}

@@ -91,8 +91,10 @@ impl Part {
 fn run(py: Python<'_>, argv: Vec<String>, part: Option<PyRef<'_, Part>>) -> PyResult<String> {
     let loaded = part.map(|p| p.loaded.clone());
     py.detach(|| {
-        thinwall_study::contained("the Python package", "thinwall", || Ok(run_words(argv, loaded)))
-            .unwrap_or_else(|e| Err(e.into()))
+        thinwall_study::contained("the Python package", "thinwall", || {
+            Ok(run_words(argv, loaded))
+        })
+        .unwrap_or_else(|e| Err(e.into()))
     })
     .map_err(|f| raise(py, &f))
 }

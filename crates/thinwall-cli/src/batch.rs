@@ -2,7 +2,6 @@
 //! summary. A bad file (unreadable, tessellated only, or one that makes
 //! Thinwall fail) is a line of the summary, never the end of the batch.
 
-use thinwall_cli::failure::Failure;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -13,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
+use thinwall_cli::failure::Failure;
 use thinwall_report::expect::{compare, CheckTolerance};
 
 /// One line of the summary (`summary.jsonl`, in the order the parts

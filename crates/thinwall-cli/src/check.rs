@@ -1,7 +1,7 @@
 //! `thinwall check`: a part's recognition against a stored one.
 
-use thinwall_cli::failure::Failure;
 use std::path::Path;
+use thinwall_cli::failure::Failure;
 use thinwall_report::expect::{compare, CheckTolerance};
 
 /// The part's recognition report as JSON text.

@@ -84,7 +84,12 @@ pub fn asked(command: Command) -> Result<Asked, Failure> {
         Command::Operations(a) => {
             let format = a.format;
             let (part, output) = (a.part.clone(), a.output.clone());
-            asked(Job::Operations(operations_request(a)?), Some(part), format, output)
+            asked(
+                Job::Operations(operations_request(a)?),
+                Some(part),
+                format,
+                output,
+            )
         }
         Command::SizeWall(a) => asked(Job::SizeWall(a.request()), None, a.format, None),
         Command::Classify(a) => asked(

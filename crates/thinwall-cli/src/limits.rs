@@ -2,9 +2,9 @@
 //! the time a command may work on one part, and how many parts `batch` may
 //! run at once.
 
-use thinwall_cli::failure::Failure;
 use std::sync::OnceLock;
 use std::time::Duration;
+use thinwall_cli::failure::Failure;
 use thinwall_study::{LoadedPart, Study};
 
 static TIME_LIMIT: OnceLock<Option<Duration>> = OnceLock::new();

@@ -61,9 +61,9 @@ fn is_representation(keywords: &[String]) -> bool {
 
 /// Whether a statement links a representation into a part's shape.
 fn is_link(keywords: &[String]) -> bool {
-    keywords
-        .iter()
-        .any(|k| k == "SHAPE_DEFINITION_REPRESENTATION" || k.ends_with("REPRESENTATION_RELATIONSHIP"))
+    keywords.iter().any(|k| {
+        k == "SHAPE_DEFINITION_REPRESENTATION" || k.ends_with("REPRESENTATION_RELATIONSHIP")
+    })
 }
 
 /// Per item, the file position of the earliest statement that links a
@@ -120,16 +120,41 @@ mod tests {
             #7=SHAPE_REPRESENTATION_RELATIONSHIP('','',#4,#6);\n#8=SHAPE_REPRESENTATION_RELATIONSHIP('','',#4,#2);\nENDSEC;";
         let refs = References::scan(text.as_bytes());
         let groups = [
-            Group { visit: 0, item: 1, first: Some(0), count: 3 },
-            Group { visit: 0, item: 5, first: None, count: 2 },
+            Group {
+                visit: 0,
+                item: 1,
+                first: Some(0),
+                count: 3,
+            },
+            Group {
+                visit: 0,
+                item: 5,
+                first: None,
+                count: 2,
+            },
         ];
         assert_eq!(ordinals(&refs, &groups, 3), vec![2, 3, 4]);
         // A later visit (an assembly's next instance) comes after, whatever
         // its rank.
         let groups = [
-            Group { visit: 1, item: 5, first: None, count: 2 },
-            Group { visit: 0, item: 1, first: Some(0), count: 3 },
-            Group { visit: 2, item: 1, first: Some(3), count: 3 },
+            Group {
+                visit: 1,
+                item: 5,
+                first: None,
+                count: 2,
+            },
+            Group {
+                visit: 0,
+                item: 1,
+                first: Some(0),
+                count: 3,
+            },
+            Group {
+                visit: 2,
+                item: 1,
+                first: Some(3),
+                count: 3,
+            },
         ];
         assert_eq!(ordinals(&refs, &groups, 6), vec![0, 1, 2, 5, 6, 7]);
     }

@@ -510,8 +510,7 @@ pub fn classify<'p>(study: &Study<'p>, req: ClassifyRequest) -> Result<Classifie
             together: &[],
             priority: vec![],
         })?;
-        let mut report =
-            ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
+        let mut report = ClassificationReport::new(study.name(), req.setup.up, &req.before, result);
         report.opencascade_faces = study.loaded().part.occ_faces();
         Ok(Classified {
             at,
