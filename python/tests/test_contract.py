@@ -142,3 +142,31 @@ def test_bad_values_raise_usage_errors_with_the_cli_exit_code():
     with pytest.raises(thinwall.InputError) as missing:
         thinwall.recognize("no/such/part.step")
     assert missing.value.code == "read.io" and missing.value.status_name == "TW_ERR_IO"
+
+
+def test_work_runs_with_the_gil_released():
+    """Another Python thread runs while a part is recognized: with the GIL
+    held through the call it would stand still for the whole call."""
+    import threading
+    import time
+
+    large = next(p for p in SHARED if "ftc_07" in p.name)
+    part = thinwall.read(str(large))
+    done = threading.Event()
+    took = []
+
+    def work():
+        t0 = time.perf_counter()
+        thinwall._native.run(["recognize", str(large)], part)
+        took.append(time.perf_counter() - t0)
+        done.set()
+
+    t = threading.Thread(target=work)
+    longest, last = 0.0, time.perf_counter()
+    t.start()
+    while not done.is_set():
+        now = time.perf_counter()
+        longest, last = max(longest, now - last), now
+    t.join()
+    assert took[0] > 0.1, "the call is long enough to tell"
+    assert longest < 0.25 * took[0], (longest, took[0])
