@@ -102,7 +102,12 @@ fn check(path: &Path) -> usize {
 /// ordinal is, OpenCascade itself checks: `python/tests/test_ordinals.py`).
 fn check_ordinals(part: &thinwall_brep::Part, path: &Path) {
     let order = part.occ_faces();
-    assert_eq!(part.occ_ordinals.len(), part.faces.len(), "{}", path.display());
+    assert_eq!(
+        part.occ_ordinals.len(),
+        part.faces.len(),
+        "{}",
+        path.display()
+    );
     assert_eq!(
         order.len(),
         part.faces.len() + part.supplemental.face_count,
@@ -110,7 +115,12 @@ fn check_ordinals(part: &thinwall_brep::Part, path: &Path) {
         path.display()
     );
     let named = order.iter().flatten().count();
-    assert_eq!(named, part.faces.len(), "{}: an ordinal given twice", path.display());
+    assert_eq!(
+        named,
+        part.faces.len(),
+        "{}: an ordinal given twice",
+        path.display()
+    );
     for (i, f) in part.faces.iter().enumerate() {
         let key = order[part.occ_ordinals[i] as usize].expect("named");
         assert_eq!((key.body, key.step_id), (f.body.0, f.step_id));

@@ -139,7 +139,10 @@ mod tests {
 
     #[test]
     fn a_face_of_each_placed_instance_has_its_own_opencascade_ordinal() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../fixtures/bracket_assembly.step\0");
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../fixtures/bracket_assembly.step\0"
+        );
         let mut part: *mut tw_part = std::ptr::null_mut();
         unsafe {
             assert_eq!(
@@ -148,9 +151,15 @@ mod tests {
             );
             let mut ordinal = u32::MAX;
             // Two instances of one 18-face bracket: the second's faces follow.
-            assert_eq!(tw_part_face_occ_index(part, 0, 39, &mut ordinal), tw_status::TW_OK);
+            assert_eq!(
+                tw_part_face_occ_index(part, 0, 39, &mut ordinal),
+                tw_status::TW_OK
+            );
             assert_eq!(ordinal, 0);
-            assert_eq!(tw_part_face_occ_index(part, 1, 39, &mut ordinal), tw_status::TW_OK);
+            assert_eq!(
+                tw_part_face_occ_index(part, 1, 39, &mut ordinal),
+                tw_status::TW_OK
+            );
             assert_eq!(ordinal, 18);
             assert_eq!(
                 tw_part_face_occ_index(part, 2, 39, &mut ordinal),

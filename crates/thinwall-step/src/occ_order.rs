@@ -119,43 +119,17 @@ mod tests {
             #5=SHELL_BASED_SURFACE_MODEL('',(#10));\n#6=MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(#5),#3);\n\
             #7=SHAPE_REPRESENTATION_RELATIONSHIP('','',#4,#6);\n#8=SHAPE_REPRESENTATION_RELATIONSHIP('','',#4,#2);\nENDSEC;";
         let refs = References::scan(text.as_bytes());
-        let groups = [
-            Group {
-                visit: 0,
-                item: 1,
-                first: Some(0),
-                count: 3,
-            },
-            Group {
-                visit: 0,
-                item: 5,
-                first: None,
-                count: 2,
-            },
-        ];
+        let g = |visit, item, first, count| Group {
+            visit,
+            item,
+            first,
+            count,
+        };
+        let groups = [g(0, 1, Some(0), 3), g(0, 5, None, 2)];
         assert_eq!(ordinals(&refs, &groups, 3), vec![2, 3, 4]);
         // A later visit (an assembly's next instance) comes after, whatever
         // its rank.
-        let groups = [
-            Group {
-                visit: 1,
-                item: 5,
-                first: None,
-                count: 2,
-            },
-            Group {
-                visit: 0,
-                item: 1,
-                first: Some(0),
-                count: 3,
-            },
-            Group {
-                visit: 2,
-                item: 1,
-                first: Some(3),
-                count: 3,
-            },
-        ];
+        let groups = [g(1, 5, None, 2), g(0, 1, Some(0), 3), g(2, 1, Some(3), 3)];
         assert_eq!(ordinals(&refs, &groups, 6), vec![0, 1, 2, 5, 6, 7]);
     }
 }
