@@ -155,9 +155,14 @@ pub fn overlaps(vol_faces: &[Vec<FaceGeom>], up: &Vector3, tol: &Tol) -> Result<
         let (a, b) = (&boxes[i], &boxes[j]);
         (0..3).any(|k| a.min[k] >= b.max[k] - tol.lin || b.min[k] >= a.max[k] - tol.lin)
     };
+    // Pairs by an index of the boxes: all pairs of a plan's thousands of
+    // volumes were a quadratic pass.
+    let index = crate::index::BoxIndex::new(&boxes, 0.0);
     for (i, a) in prisms.iter().enumerate() {
-        for (j, b) in prisms.iter().enumerate().skip(i + 1) {
-            let (Some(a), Some(b)) = (a, b) else { continue };
+        for j in index.near(&boxes[i]).into_iter().filter(|&j| j > i) {
+            let (Some(a), Some(b)) = (a, &prisms[j]) else {
+                continue;
+            };
             if a.high.min(b.high) - a.low.max(b.low) <= tol.lin || apart(i, j) {
                 continue;
             }

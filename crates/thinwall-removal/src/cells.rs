@@ -5,7 +5,7 @@
 
 use super::flux::area;
 use crate::halving::{corners, halves};
-use geo::{BooleanOps, BoundingRect, MultiPolygon, Polygon, Rect};
+use geo::{BooleanOps, BoundingRect, LineString, MultiPolygon, Polygon, Rect};
 
 /// A region that covers part of the plane.
 pub struct Cover<'a> {
@@ -53,7 +53,12 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
                 next.push(cl);
                 continue;
             }
-            let me = MultiPolygon::new(vec![cl.poly.clone()]);
+            // A cell with many holes (a rib grid's top) meets a cover
+            // through the holes by it only: the others lie outside the
+            // cover's box, so they change neither part, and go back into
+            // the piece around them after.
+            let (near, far) = by_the_box(&cl.poly, &c.bbox);
+            let me = MultiPolygon::new(vec![near]);
             let local;
             let region = match &tiles {
                 Some(t) => {
@@ -75,6 +80,18 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
                 true => thinwall_analysis::boolean::difference(&me, region),
                 false => me.difference(region),
             };
+            let outside = match with_holes(outside, &far) {
+                Some(o) => o,
+                // A hole found no piece around it (a boolean's noise):
+                // the whole cell, as without the shortcut.
+                None => {
+                    let whole = MultiPolygon::new(vec![cl.poly.clone()]);
+                    match c.robust {
+                        true => thinwall_analysis::boolean::difference(&whole, region),
+                        false => whole.difference(region),
+                    }
+                }
+            };
             let mut covered = cl.covers.clone();
             covered.push(ci);
             for p in inside.0 {
@@ -91,6 +108,44 @@ pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell
         cells = next;
     }
     cells
+}
+
+/// A cell with more holes than this meets a cover through the holes by the
+/// cover's box only ([`by_the_box`]).
+const NEAR_HOLES: usize = 16;
+
+/// `poly` with only the holes whose boxes meet `b` (all of them when it
+/// has few), and the others.
+fn by_the_box(poly: &Polygon<f64>, b: &Rect<f64>) -> (Polygon<f64>, Vec<LineString<f64>>) {
+    if poly.interiors().len() <= NEAR_HOLES {
+        return (poly.clone(), Vec::new());
+    }
+    let (near, far): (Vec<_>, Vec<_>) = poly
+        .interiors()
+        .iter()
+        .cloned()
+        .partition(|h| h.bounding_rect().is_some_and(|r| overlaps(&r, b)));
+    (Polygon::new(poly.exterior().clone(), near), far)
+}
+
+/// `pieces` with each of `far` (holes clear of what cut them) back in the
+/// piece whose outline surrounds it; `None` when one has no such piece.
+fn with_holes(mut pieces: MultiPolygon<f64>, far: &[LineString<f64>]) -> Option<MultiPolygon<f64>> {
+    use geo::Contains;
+    if far.is_empty() {
+        return Some(pieces);
+    }
+    let outlines: Vec<Polygon<f64>> = pieces
+        .0
+        .iter()
+        .map(|q| Polygon::new(q.exterior().clone(), vec![]))
+        .collect();
+    for hole in far {
+        let at = geo::Point::from(*hole.0.first()?);
+        let home = outlines.iter().position(|o| o.contains(&at))?;
+        pieces.0[home].interiors_push(hole.clone());
+    }
+    Some(pieces)
 }
 
 /// A region with more corners than this is cut into tiles before cells
