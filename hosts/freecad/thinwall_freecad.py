@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, List, Optional, Sequence, Tuple
 
 import thinwall
 
@@ -106,12 +106,3 @@ def recognize_object(obj: Any, up: Optional[Sequence[float]] = None, **options: 
     result = recognize_shape(obj.Shape, **options)
     colour_object(obj, result)
     return result
-
-
-def summary(result: "thinwall.Recognition") -> Dict[str, List[str]]:
-    """The panel's lines: features (with their kinds and sizes) and
-    connections."""
-    return {
-        "features": [repr(f) for f in result],
-        "connections": [str(c) for c in result.connections],
-    }

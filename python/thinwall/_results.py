@@ -32,16 +32,13 @@ class Faces:
     def __init__(self, doc: Dict[str, Any]):
         self._by_key: Dict[Tuple[int, int], Face] = {}
         self._by_id: Dict[int, Face] = {}
+        self.ordered: List[Optional[Face]] = []
         for i, key in enumerate(doc.get("opencascade_faces") or []):
-            if key is None:
-                continue
-            face = Face(key["step_id"], key["body"], i)
-            self._by_key[(face.body, face.step_id)] = face
-            self._by_id.setdefault(face.step_id, face)
-        self.ordered: List[Optional[Face]] = [
-            None if k is None else self._by_key[(k["body"], k["step_id"])]
-            for k in doc.get("opencascade_faces") or []
-        ]
+            face = None if key is None else Face(key["step_id"], key["body"], i)
+            self.ordered.append(face)
+            if face is not None:
+                self._by_key[(face.body, face.step_id)] = face
+                self._by_id.setdefault(face.step_id, face)
 
     def get(self, step_id: int, body: Optional[int] = None) -> Face:
         """The face ``step_id`` of ``body`` (the first body holding it when

@@ -189,30 +189,40 @@ pub fn run<'p>(
 /// The sequence rules of `--rules`, or the shipped ones. An unreadable
 /// file is an input failure.
 fn rules_of(path: Option<&Path>) -> Result<thinwall_plan::RuleSet, Failure> {
-    match path {
-        None => Ok(thinwall_plan::RuleSet::default_rules()),
-        Some(p) => Ok(thinwall_plan::RuleSet::from_toml(
-            &text_of(p, Failure::Input)?,
-            &p.display().to_string(),
-        )
-        .map_err(study::StudyError::from)?),
-    }
+    settings_of(
+        path,
+        thinwall_plan::RuleSet::default_rules,
+        thinwall_plan::RuleSet::from_toml,
+        Failure::Input,
+    )
 }
 
 /// The tool library of `--tools`, or the shipped one. An unreadable file
 /// is a usage failure (as it always was).
 fn tools_of(path: Option<&Path>) -> Result<thinwall_ops::ToolLibrary, Failure> {
-    match path {
-        None => Ok(thinwall_ops::ToolLibrary::default_tools()),
-        Some(p) => Ok(thinwall_ops::ToolLibrary::from_toml(
-            &text_of(p, Failure::Usage)?,
-            &p.display().to_string(),
-        )
-        .map_err(study::StudyError::from)?),
-    }
+    settings_of(
+        path,
+        thinwall_ops::ToolLibrary::default_tools,
+        thinwall_ops::ToolLibrary::from_toml,
+        Failure::Usage,
+    )
 }
 
-/// The text of a settings file, or `failure` naming it.
-fn text_of(path: &Path, failure: fn(String) -> Failure) -> Result<String, Failure> {
-    std::fs::read_to_string(path).map_err(|e| failure(format!("{}: {e}", path.display())))
+/// A settings file parsed by `parse` (its text, its name), or the shipped
+/// settings without one; a file that cannot be read fails as `unreadable`.
+fn settings_of<T, E>(
+    path: Option<&Path>,
+    shipped: fn() -> T,
+    parse: fn(&str, &str) -> Result<T, E>,
+    unreadable: fn(String) -> Failure,
+) -> Result<T, Failure>
+where
+    study::StudyError: From<E>,
+{
+    let Some(p) = path else {
+        return Ok(shipped());
+    };
+    let text =
+        std::fs::read_to_string(p).map_err(|e| unreadable(format!("{}: {e}", p.display())))?;
+    Ok(parse(&text, &p.display().to_string()).map_err(study::StudyError::from)?)
 }

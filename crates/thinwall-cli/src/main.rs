@@ -72,7 +72,8 @@ fn one_job(asked: jobs::Asked) -> Result<(), Failure> {
     let s = loaded.as_ref().map(limits::study);
     // Access counts faces on a bar; plan and operations say their stage.
     let by_face = matches!(asked.job, jobs::Job::Access(_));
-    let spinner = (!by_face).then(Spinner::new);
+    let staged = matches!(asked.job, jobs::Job::Plan(_) | jobs::Job::Operations(_));
+    let spinner = staged.then(Spinner::new);
     let bar = by_face.then(|| Bar::new(loaded.as_ref().map_or(0, |l| l.part.faces.len())));
     let say = |m: &str| spinner.iter().for_each(|s| s.say(m));
     let face = |_: usize, _: usize| bar.iter().for_each(Bar::inc);
