@@ -291,12 +291,14 @@ impl<'a> PartAnalysis<'a> {
         })[f.index()]
     }
 
-    /// A face that may be a blend: a cylinder, torus, sphere or free-form
-    /// face tangent to two or more faces.
+    /// A face that may be a blend: a cylinder, cone (a drafted pocket's
+    /// corner radius), torus, sphere or free-form face tangent to two or
+    /// more faces.
     pub fn is_blend_candidate(&self, f: FaceId) -> bool {
         let curved = matches!(
             self.part.face(f).surface,
             Surface::Cylinder { .. }
+                | Surface::Cone { .. }
                 | Surface::Torus { .. }
                 | Surface::Sphere { .. }
                 | Surface::Freeform { .. }
@@ -358,13 +360,13 @@ impl<'a> PartAnalysis<'a> {
         self.cylinder(f).filter(|c| !c.convex)
     }
 
-    /// A cylinder or torus whose outward normal points towards its axis (a
-    /// concave blend between walls).
+    /// A cylinder, cone or torus whose outward normal points towards its
+    /// axis (a concave blend between walls; a cone where they are drafted).
     pub fn is_concave_blend(&self, f: FaceId) -> bool {
         let face = self.part.face(f);
         matches!(
             face.surface,
-            Surface::Cylinder { .. } | Surface::Torus { .. }
+            Surface::Cylinder { .. } | Surface::Cone { .. } | Surface::Torus { .. }
         ) && !face.same_sense
     }
 

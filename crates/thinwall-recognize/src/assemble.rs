@@ -83,7 +83,7 @@ fn wall_feature(
     f.thin = Some(s.thin);
     f.thickness = Some(wall.thickness_range.0);
     if wall.drafted() {
-        let (foot, top) = foot_and_top(wall, &s.height_dir, a.tol().feature);
+        let (foot, top) = foot_and_top(wall, s, a.tol().feature);
         f.thickness_foot = Some(foot);
         f.thickness_top = Some(top);
     }
@@ -112,18 +112,20 @@ fn wall_feature(
     f
 }
 
-/// A drafted wall's thickness at its lowest and highest region vertices
-/// along its height direction, mm: where several are level (within
-/// `tol`), the thinnest of them, so that which corner of a level edge the
-/// region's outline lists first does not decide.
-fn foot_and_top(wall: &Wall, up: &Vector3, tol: f64) -> (f64, f64) {
+/// A drafted wall's thickness at its foot and at its top, mm. The top is
+/// at the region's highest vertices along the height direction; the foot
+/// where the side meets its base's side (through any fillet between them:
+/// the side's plane carried down to the base's), or at the region's lowest
+/// vertices for a wall without a base. Where several vertices are level
+/// (within `tol`), the thinnest of them, so that which corner of a level
+/// edge the region's outline lists first does not decide.
+fn foot_and_top(wall: &Wall, s: &WallSize, tol: f64) -> (f64, f64) {
     let pts = crate::walls::region_outline(&wall.frame, &wall.region, 0.0);
+    let up = &s.height_dir;
     let level = |p: &Point3| p.coords.dot(up);
-    let thinnest_at = |h: f64| {
-        pts.iter()
-            .filter(|p| (level(p) - h).abs() <= tol)
-            .map(|p| wall.thickness_at(p))
-            .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))))
+    let at_level = |h: f64| pts.iter().filter(move |p| (level(p) - h).abs() <= tol);
+    let thinnest = |it: &mut dyn Iterator<Item = f64>| {
+        it.fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))))
             .unwrap_or(wall.thickness)
     };
     let (lo, hi) = pts
@@ -131,7 +133,29 @@ fn foot_and_top(wall: &Wall, up: &Vector3, tol: f64) -> (f64, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
             (lo.min(level(p)), hi.max(level(p)))
         });
-    (thinnest_at(lo), thinnest_at(hi))
+    let top = thinnest(&mut at_level(hi).map(|p| wall.thickness_at(p)));
+    let foot = thinnest(&mut at_level(lo).map(|p| match s.foot_plane {
+        Some(plane) => wall.thickness_at(&down_to(wall, p, plane)),
+        None => wall.thickness_at(p),
+    }));
+    (foot, top)
+}
+
+/// A point of side 0's plane carried down that plane, across the wall's
+/// ridge, to the base's side plane `(origin, normal)`; the point itself
+/// where the side runs parallel to the base.
+fn down_to(wall: &Wall, p: &Point3, (origin, n): (Point3, Vector3)) -> Point3 {
+    // Within side 0's plane, the direction in which the thickness changes.
+    let n0 = wall.normals[0];
+    let ridge = n0.cross(&wall.normals[1]);
+    let Some(across) = n0.cross(&ridge).try_normalize(1e-12) else {
+        return *p;
+    };
+    let rate = across.dot(&n);
+    if rate.abs() < 1e-9 {
+        return *p;
+    }
+    p - across * ((p - origin).dot(&n) / rate)
 }
 
 /// The wall's region, side polygons and foot line.

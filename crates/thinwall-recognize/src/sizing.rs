@@ -218,12 +218,20 @@ fn without_base(
             .map(|p| p.polygon_in(&wall.frame))
             .collect()
     };
+    // The widest cell; among cells as wide (a 30 x 30 and a 30 x 40
+    // pocket), the shortest, which deflects most: never the face order's
+    // or the pose's rounding.
+    let tie = a.tol().feature;
     let (mut h, mut l) = (0.0, 0.0);
     for c in &cells {
         let r = inscribed_radius(c);
-        if r > h {
-            h = r;
-            l = long_side(c);
+        if r > h + tie {
+            (h, l) = (r, long_side(c));
+        } else if r >= h - tie {
+            let side = long_side(c);
+            if side < l {
+                (h, l) = (h.max(r), side);
+            }
         }
     }
     let up = a.up();

@@ -337,11 +337,12 @@ impl<'p> Pairing<'p> {
             .filter(|(d, _)| *d > self.lin)
             .filter(|&(d, p)| self.plane_normal[p].dot(&n) < -self.cos_tol || d <= drafted_reach)
             .collect();
-        // Parallel planes first, nearest first; drafted ones only for a
-        // face parallel planes leave mostly unbounded (a drafted wall's
-        // sides have no parallel partner).
+        // Nearest first, parallel or drafted: a flange's outer face has the
+        // block's far side parallel behind it and its drafted inner side
+        // 2 mm away. Drafted ones only while parallel planes leave the face
+        // mostly unbounded (a drafted wall's sides have no parallel partner).
         let drafted = |p: usize| self.plane_normal[p].dot(&n) >= -self.cos_tol;
-        behind.sort_by(|a, b| drafted(a.1).cmp(&drafted(b.1)).then(a.0.total_cmp(&b.0)));
+        behind.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let mut covered: MultiPolygon<f64> = MultiPolygon::new(vec![]);
         let mut covered_area = 0.0;
         for (d, p) in behind {
