@@ -463,6 +463,93 @@ def panel_depression_truth(t, plan, p):
                          wall, depth=round(depth, 9))
 
 
+# ---------------------------------------------------------------- skins
+
+def about_x(degrees):
+    t = gp_Trsf()
+    t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), math.radians(degrees))
+    return t
+
+
+def turned_dir(t, v):
+    d = gp_Dir(*v).Transformed(t)
+    return (d.X(), d.Y(), d.Z())
+
+
+def moved(shape, t):
+    return BRepBuilderAPI_Transform(shape, t, True).Shape()
+
+
+def skin(rnd):
+    """A cylindrical skin about the x axis (radius `radius` to `radius` +
+    `skin`, a sector centred on +z) with flat stringers standing radially
+    on its outer (convex) or inner (concave) side, the side the set-up
+    machines; holes through the skin between them."""
+    R, ts, length = rnd.uniform(250, 800), rnd.uniform(1.5, 3.0), rnd.uniform(150, 300)
+    arc = rnd.uniform(120, min(400, R * math.radians(60)))
+    span = math.degrees(arc / R)
+    outside = rnd.random() < 0.5
+    hs, tst = rnd.uniform(12, 35), rnd.uniform(1.0, 2.5)
+    poly = BRepBuilderAPI_MakePolygon()
+    for x, z in ((0, R), (length, R), (length, R + ts), (0, R + ts)):
+        poly.Add(gp_Pnt(x, 0, z))
+    poly.Close()
+    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
+    body = BRepPrimAPI_MakeRevol(face, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), math.radians(span)).Shape()
+    body = moved(body, about_x(-span / 2))
+    # Stringer angles: at least 30 mm of arc apart and 15 mm from the ends.
+    gap_deg, edge_deg = math.degrees(30 / R), math.degrees(15 / R)
+    most = int((span - 2 * edge_deg) // gap_deg) + 1
+    n = rnd.randint(1, max(1, min(4, most)))
+    angles = spread(rnd, -span / 2 + edge_deg, span / 2 - edge_deg, n, gap_deg)
+    z0, z1 = (R + ts / 2, R + ts + hs) if outside else (R - hs, R + ts / 2)
+    parts = [body] + [moved(box(0, -tst / 2, z0, length, tst / 2, z1), about_x(a)) for a in angles]
+    holes = skin_holes(rnd, angles, span, R, ts, length)
+    shape = fuse_all(parts)
+    if holes:
+        shape = cut_all(shape, [h[0] for h in holes])
+    t = Truth(shape, (0, 0, 1) if outside else (0, 0, -1))
+    x_axis = ((0, 0, 0), (1, 0, 0))
+    t.wall("W", "web", lambda f: on_cylinder(f, *x_axis, R) or on_cylinder(f, *x_axis, R + ts), ts)
+    for i, a in enumerate(angles):
+        n = turned_dir(about_x(a), (0, 1, 0))
+        t.wall(f"S{i + 1}", "rib", lambda f, n=n: on_plane(f, n, [v * tst / 2 for v in n])
+               or on_plane(f, [-v for v in n], [-v * tst / 2 for v in n]), tst)
+        t.link("W", f"S{i + 1}")
+    for k, (_, at, d, r) in enumerate(holes):
+        t.depression(f"H{k + 1}", "hole", lambda f, at=at, d=d, r=r: on_cylinder(f, at, d, r), "W",
+                     diameter=round(2 * r, 9))
+    params = {"radius": R, "skin": ts, "length": length, "span_deg": span, "stringers_outside": outside,
+              "stringer_height": hs, "stringer": tst, "stringer_deg": angles}
+    return t, params
+
+
+def spread(rnd, lo, hi, n, gap):
+    """`n` sorted values in lo..hi at least `gap` apart."""
+    slack = (hi - lo) - (n - 1) * gap
+    cuts = sorted(rnd.uniform(0, slack) for _ in range(n))
+    return [lo + c + i * gap for i, c in enumerate(cuts)]
+
+
+def skin_holes(rnd, angles, span, R, ts, length):
+    """Radial holes through the skin, in the middle of the bays between
+    stringers (and the sector's ends) that have room."""
+    edges = [-span / 2] + angles + [span / 2]
+    out = []
+    for a, b in zip(edges, edges[1:]):
+        room = min(math.radians(b - a) * R / 2, length / 2) - 8
+        if room < 3 or rnd.random() < 0.5:
+            continue
+        r = rnd.uniform(2.5, min(room, 15))
+        mid = (a + b) / 2
+        x = rnd.uniform(r + 10, length - r - 10)
+        d = turned_dir(about_x(mid), (0, 0, 1))
+        at = (x, 0.0, 0.0)
+        start = tuple(at[i] + d[i] * (R - 2) for i in range(3))
+        out.append((cylinder(start, d, r, ts + 4), at, d, r))
+    return out
+
+
 # ---------------------------------------------------------------- poses and parts
 
 def random_pose(rnd):
@@ -491,7 +578,7 @@ def posed(shape, up, trsf):
     return moved, [d.X(), d.Y(), d.Z()]
 
 
-FAMILIES = {"panel": panel}
+FAMILIES = {"panel": panel, "skin": skin}
 
 
 def part(seed, turned=True):

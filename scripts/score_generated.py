@@ -114,7 +114,20 @@ def signature(result):
     return out
 
 
-def pose_differences(built, turned, tol=POSE_TOL):
+#: Figures that come from the grid search for a region's largest inscribed
+#: circle (`polygon::inscribed_radius`): approximate, so a turned copy may
+#: read them differently (by up to 5 % on a web's widest cell with a hole
+#: in it). A known defect (issue 39's closing note), listed here by name
+#: so that every other figure is held to POSE_TOL.
+APPROXIMATE = {("web", "height"), ("web", "deflection"), ("web", "slenderness"),
+               ("*", "largest_tool_diameter")}
+
+
+def approximate(kind, name):
+    return (kind, name) in APPROXIMATE or ("*", name) in APPROXIMATE
+
+
+def pose_differences(built, turned, tol=POSE_TOL, strict=True):
     a, b = signature(built), signature(turned)
     problems = [f"pose: {k[0]} {sorted(k[1])} only as drawn" for k in a.keys() - b.keys()]
     problems += [f"pose: {k[0]} {sorted(k[1])} only turned" for k in b.keys() - a.keys()]
@@ -123,15 +136,18 @@ def pose_differences(built, turned, tol=POSE_TOL):
         if thin_a != thin_b:
             problems.append(f"pose: {k[0]} {sorted(k[1])} thin {thin_a} / {thin_b}")
         for name in fa.keys() | fb.keys():
+            if not strict and approximate(k[0], name):
+                continue
             x, y = fa.get(name), fb.get(name)
             if x is None or y is None or abs(x - y) > tol * max(1.0, abs(x)):
                 problems.append(f"pose: {k[0]} {sorted(k[1])} {name} {x} / {y}")
     return problems
 
 
-def check(seed, reach=False):
+def check(seed, reach=False, strict=True):
     """(family, tp, fp, fn, problems) of part `seed`, turned, plus its pose
-    differences against the part as drawn."""
+    differences against the part as drawn (`strict`: the approximate
+    figures too)."""
     import thinwall
     import thinwall.occ
     options = {} if reach else {"no_reach": True}
@@ -140,7 +156,7 @@ def check(seed, reach=False):
     tp, fp, fn, problems = score(doc, turned)
     flat, flat_doc = generate_parts.part(seed, turned=False)
     built = thinwall.occ.recognize(flat, up=",".join(map(repr, flat_doc["up"])), **options)
-    problems += pose_differences(built, turned)
+    problems += pose_differences(built, turned, strict=strict)
     return doc["family"], tp, fp, fn, problems
 
 

@@ -112,7 +112,8 @@ fn wall_feature(
     f
 }
 
-/// A drafted wall's thickness at its foot and at its top, mm. The top is
+/// A drafted wall's thickness at its foot and at its top, mm: the width of
+/// its section normal to the height direction. The top is
 /// at the region's highest vertices along the height direction; the foot
 /// where the side meets its base's side (through any fillet between them:
 /// the side's plane carried down to the base's), or at the region's lowest
@@ -133,10 +134,14 @@ fn foot_and_top(wall: &Wall, s: &WallSize, tol: f64) -> (f64, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
             (lo.min(level(p)), hi.max(level(p)))
         });
-    let top = thinnest(&mut at_level(hi).map(|p| wall.thickness_at(p)));
+    // Across the section normal to the height (as a drawing dimensions it).
+    let n0 = wall.normals[0];
+    let across = (n0 - up * n0.dot(up)).try_normalize(1e-12).unwrap_or(n0);
+    let width = |p: &Point3| wall.thickness_along(p, &across);
+    let top = thinnest(&mut at_level(hi).map(width));
     let foot = thinnest(&mut at_level(lo).map(|p| match s.foot_plane {
-        Some(plane) => wall.thickness_at(&down_to(wall, p, plane)),
-        None => wall.thickness_at(p),
+        Some(plane) => width(&down_to(wall, p, plane)),
+        None => width(p),
     }));
     (foot, top)
 }

@@ -80,10 +80,19 @@ impl Wall {
     /// across the wall, along the bisector of the two outward normals (for
     /// a symmetric draft, the horizontal width at that height).
     pub fn thickness_at(&self, on_side0: &Point3) -> f64 {
-        let n1 = self.normals[1];
-        let across = (self.normals[0] - n1)
+        let across = (self.normals[0] - self.normals[1])
             .try_normalize(1e-12)
             .unwrap_or(self.frame.z);
+        self.thickness_along(on_side0, &across)
+    }
+
+    /// The distance between the sides at a point of side 0's plane, mm,
+    /// measured along `across` (a unit vector pointing out of side 0): the
+    /// width of the wall's section normal to its height when `across` is
+    /// side 0's normal without its height component (a flange drafted on
+    /// its inner side only, dimensioned as drawn).
+    pub fn thickness_along(&self, on_side0: &Point3, across: &Vector3) -> f64 {
+        let n1 = self.normals[1];
         (on_side0 - self.side1_point).dot(&n1) / across.dot(&n1)
     }
 
