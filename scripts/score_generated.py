@@ -110,24 +110,15 @@ def signature(result):
     for f in list(result.stiffness_features) + list(result.machining_features):
         d = f.to_dict()
         figures = {k: v for k, v in d.items() if isinstance(v, (int, float)) and not isinstance(v, bool)}
+        for i, side in enumerate(d.get("access") or []):
+            figures[f"access{i}.fraction"] = side.get("fraction", 0.0)
+            figures[f"access{i}.reachable"] = float(bool(side.get("reachable")))
+            figures[f"access{i}.blocked_by"] = float(len(side.get("blocked_by") or []))
         out[(d["kind"], ordinals(f, "faces"))] = (d.get("thin"), figures)
     return out
 
 
-#: Figures that come from the grid search for a region's largest inscribed
-#: circle (`polygon::inscribed_radius`): approximate, so a turned copy may
-#: read them differently (by up to 5 % on a web's widest cell with a hole
-#: in it). A known defect (issue 39's closing note), listed here by name
-#: so that every other figure is held to POSE_TOL.
-APPROXIMATE = {("web", "height"), ("web", "deflection"), ("web", "slenderness"),
-               ("*", "largest_tool_diameter")}
-
-
-def approximate(kind, name):
-    return (kind, name) in APPROXIMATE or ("*", name) in APPROXIMATE
-
-
-def pose_differences(built, turned, tol=POSE_TOL, strict=True):
+def pose_differences(built, turned, tol=POSE_TOL):
     a, b = signature(built), signature(turned)
     problems = [f"pose: {k[0]} {sorted(k[1])} only as drawn" for k in a.keys() - b.keys()]
     problems += [f"pose: {k[0]} {sorted(k[1])} only turned" for k in b.keys() - a.keys()]
@@ -136,18 +127,15 @@ def pose_differences(built, turned, tol=POSE_TOL, strict=True):
         if thin_a != thin_b:
             problems.append(f"pose: {k[0]} {sorted(k[1])} thin {thin_a} / {thin_b}")
         for name in fa.keys() | fb.keys():
-            if not strict and approximate(k[0], name):
-                continue
             x, y = fa.get(name), fb.get(name)
             if x is None or y is None or abs(x - y) > tol * max(1.0, abs(x)):
                 problems.append(f"pose: {k[0]} {sorted(k[1])} {name} {x} / {y}")
     return problems
 
 
-def check(seed, reach=False, strict=True):
+def check(seed, reach=False):
     """(family, tp, fp, fn, problems) of part `seed`, turned, plus its pose
-    differences against the part as drawn (`strict`: the approximate
-    figures too)."""
+    differences against the part as drawn."""
     import thinwall
     import thinwall.occ
     options = {} if reach else {"no_reach": True}
@@ -156,7 +144,7 @@ def check(seed, reach=False, strict=True):
     tp, fp, fn, problems = score(doc, turned)
     flat, flat_doc = generate_parts.part(seed, turned=False)
     built = thinwall.occ.recognize(flat, up=",".join(map(repr, flat_doc["up"])), **options)
-    problems += pose_differences(built, turned, strict=strict)
+    problems += pose_differences(built, turned)
     return doc["family"], tp, fp, fn, problems
 
 

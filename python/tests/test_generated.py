@@ -27,7 +27,7 @@ F1_FLOOR = 0.999
 def chunk(first: int):
     counts, problems, posed = [0, 0, 0], [], []
     for seed in range(first, first + CHUNK):
-        family, tp, fp, fn, found = score_generated.check(seed, strict=False)
+        family, tp, fp, fn, found = score_generated.check(seed)
         counts = [counts[0] + tp, counts[1] + fp, counts[2] + fn]
         problems += [f"seed {seed} ({family}): {p}" for p in found if not p.startswith("pose:")]
         posed += [f"seed {seed} ({family}): {p}" for p in found if p.startswith("pose:")]

@@ -291,6 +291,43 @@ impl<'a> PartAnalysis<'a> {
         })[f.index()]
     }
 
+    /// Face `f`'s loops with its openings dropped: an inner loop along
+    /// which every neighbour meets it at a convex edge (a hole through a
+    /// web drops away on every side) is no boundary that supports it or
+    /// stops a tool. `None` for a face that is not planar.
+    pub fn loops_without_openings(&self, f: FaceId) -> Option<polygon::FaceLoops> {
+        let mut loops = self.planar(f)?.loops.clone();
+        let openings = self.openings(f);
+        if openings.len() == loops.inner.len() {
+            let mut keep = openings.iter().map(|o| !o);
+            loops.inner.retain(|_| keep.next().unwrap_or(true));
+        }
+        Some(loops)
+    }
+
+    /// Per inner loop of face `f` (in the face's order): whether it is an
+    /// opening, every edge of it convex.
+    pub fn openings(&self, f: FaceId) -> Vec<bool> {
+        let convex: std::collections::HashSet<thinwall_brep::EdgeId> = self
+            .graph
+            .neighbours(f)
+            .filter(|(_, a)| a.convexity == Convexity::Convex)
+            .flat_map(|(_, a)| a.edges.iter().map(|&e| self.graph.edges[e].edge))
+            .collect();
+        let outer = polygon::outer_loops(self.part, f);
+        self.part
+            .face(f)
+            .loops
+            .iter()
+            .zip(&outer)
+            .filter(|(_, &o)| !o)
+            .map(|(&l, _)| {
+                let lp = self.part.loop_(l);
+                !lp.coedges.is_empty() && lp.coedges.iter().all(|ce| convex.contains(&ce.edge))
+            })
+            .collect()
+    }
+
     /// A face that may be a blend: a cylinder, cone (a drafted pocket's
     /// corner radius), torus, sphere or free-form face tangent to two or
     /// more faces.

@@ -292,7 +292,7 @@ pub fn clearance_radius(region: &MultiPolygon<f64>, walls: &[geo::LineString<f64
     if walls.is_empty() {
         return f64::INFINITY;
     }
-    farthest(region, |p, floor| {
+    farthest(&over_openings(region, walls), |p, floor| {
         let mut d = f64::INFINITY;
         for w in walls {
             d = d.min(Euclidean.distance(p, w));
@@ -304,52 +304,181 @@ pub fn clearance_radius(region: &MultiPolygon<f64>, walls: &[geo::LineString<f64
     })
 }
 
+/// `region` with its openings filled: a hole in a floor that no wall runs
+/// along (a through hole in a pocket's floor drops away on every side) is
+/// where a tool's centre may stand too. Without it the centre had to skirt
+/// the opening, and where it came to rest on the opening's rim depended on
+/// the search's start: a turned copy read a pocket's largest tool 10 %
+/// apart.
+fn over_openings(region: &MultiPolygon<f64>, walls: &[geo::LineString<f64>]) -> MultiPolygon<f64> {
+    use geo::{Distance, Euclidean};
+    let touches = |ring: &geo::LineString<f64>| {
+        walls.iter().any(|w| {
+            w.0.iter()
+                .any(|c| Euclidean.distance(&geo::Point::from(*c), ring) <= OPENING_TOL)
+        })
+    };
+    MultiPolygon::new(
+        region
+            .0
+            .iter()
+            .map(|p| {
+                let kept = p
+                    .interiors()
+                    .iter()
+                    .filter(|r| touches(r))
+                    .cloned()
+                    .collect();
+                geo::Polygon::new(p.exterior().clone(), kept)
+            })
+            .collect(),
+    )
+}
+
+/// How near a wall's point must be to a floor's inner ring for the wall to
+/// run along it, mm (both come from the same edges' samples).
+const OPENING_TOL: f64 = 1e-6;
+
 /// The largest `dist` over points of `region` (a grid search refined
-/// around the best point); `dist(p, floor)` may answer 0 as soon as it
+/// around the best points); `dist(p, floor)` may answer 0 as soon as it
 /// knows it is at most `floor` (such a point cannot be the best).
+///
+/// The answer does not change with the pose of the region: the grid is laid
+/// along the region's minimum rectangle, not the axes it is drawn in (a
+/// grid along the drawing's axes read a web's widest cell 5 % apart on two
+/// poses of one skin); every coarse point as good as the best (a ridge, a
+/// symmetric region: which one a grid meets first is a matter of pose) is
+/// refined, nearest the region's centroid first, up to [`STARTS`]; and the
+/// refinement goes down to [`REFINED`] of the region's size.
 fn farthest(region: &MultiPolygon<f64>, dist: impl Fn(&geo::Point<f64>, f64) -> f64) -> f64 {
-    use geo::{BoundingRect, Contains, Point};
-    let Some(b) = region.bounding_rect() else {
+    use geo::{Contains, Point};
+    let Some(grid) = SearchBox::around(region) else {
         return 0.0;
     };
-    let at = |x: f64, y: f64, floor: f64| -> f64 {
-        let p = Point::new(x, y);
+    let at = |s: f64, t: f64, floor: f64| -> f64 {
+        let p = Point::from(grid.point(s, t));
         if !region.contains(&p) {
             return 0.0;
         }
         dist(&p, floor)
     };
     let n = 12;
-    let (mut w, mut h) = (b.width(), b.height());
-    let mut best = (b.min().x, b.min().y, 0.0);
+    let (w, h) = (grid.size[0], grid.size[1]);
+    let mut coarse: Vec<(f64, f64, f64)> = Vec::with_capacity((n + 1) * (n + 1));
     for i in 0..=n {
         for j in 0..=n {
-            let (x, y) = (
-                b.min().x + w * i as f64 / n as f64,
-                b.min().y + h * j as f64 / n as f64,
-            );
-            let d = at(x, y, best.2);
-            if d > best.2 {
-                best = (x, y, d);
-            }
+            let (s, t) = (w * i as f64 / n as f64, h * j as f64 / n as f64);
+            coarse.push((s, t, at(s, t, 0.0)));
         }
     }
-    for _ in 0..4 {
-        w /= n as f64 / 2.0;
-        h /= n as f64 / 2.0;
-        let (cx, cy) = (best.0, best.1);
-        for i in 0..=n {
-            for j in 0..=n {
-                let x = cx - w / 2.0 + w * i as f64 / n as f64;
-                let y = cy - h / 2.0 + h * j as f64 / n as f64;
-                let d = at(x, y, best.2);
+    let top = coarse.iter().map(|c| c.2).fold(0.0, f64::max);
+    let tie = REFINED * w.max(h);
+    let centre = grid.local(region);
+    let mut starts: Vec<(f64, f64, f64)> =
+        coarse.into_iter().filter(|c| c.2 >= top - tie).collect();
+    let from_centre = |c: &(f64, f64, f64)| (c.0 - centre.0).hypot(c.1 - centre.1);
+    starts.sort_by(|a, b| from_centre(a).total_cmp(&from_centre(b)));
+    starts.truncate(STARTS);
+    let window = (w / (n as f64 / 2.0), h / (n as f64 / 2.0));
+    let stop = REFINED * w.max(h);
+    starts
+        .into_iter()
+        .map(|start| refine(&at, start, window, stop))
+        .fold(0.0, f64::max)
+}
+
+/// A pattern search from `start` (s, t, its value): a 5 x 5 grid over a
+/// window around the best point so far, the window halved each round
+/// until it is under `stop`; the best value found.
+fn refine(
+    at: &impl Fn(f64, f64, f64) -> f64,
+    start: (f64, f64, f64),
+    (mut w, mut h): (f64, f64),
+    stop: f64,
+) -> f64 {
+    let mut best = start;
+    let m = 4;
+    while w.max(h) > stop {
+        let (cs, ct) = (best.0, best.1);
+        for i in 0..=m {
+            for j in 0..=m {
+                let s = cs - w / 2.0 + w * i as f64 / m as f64;
+                let t = ct - h / 2.0 + h * j as f64 / m as f64;
+                let d = at(s, t, best.2);
                 if d > best.2 {
-                    best = (x, y, d);
+                    best = (s, t, d);
                 }
             }
         }
+        w /= 2.0;
+        h /= 2.0;
     }
     best.2
+}
+
+/// How many equally good coarse points [`farthest`] refines at most.
+const STARTS: usize = 4;
+
+/// How finely [`farthest`] pins its point, relative to the region's size.
+const REFINED: f64 = 1e-9;
+
+/// A region's minimum rectangle as a search grid's frame: a corner, its
+/// long and short directions, and its sides.
+struct SearchBox {
+    corner: [f64; 2],
+    axes: [[f64; 2]; 2],
+    size: [f64; 2],
+}
+
+impl SearchBox {
+    fn around(region: &MultiPolygon<f64>) -> Option<Self> {
+        use geo::CoordsIter;
+        let u = crate::min_rect::min_rect(region)?.long_dir;
+        let axes = [u, [-u[1], u[0]]];
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for c in region.coords_iter() {
+            for k in 0..2 {
+                let t = c.x * axes[k][0] + c.y * axes[k][1];
+                lo[k] = lo[k].min(t);
+                hi[k] = hi[k].max(t);
+            }
+        }
+        if !(lo[0].is_finite() && lo[1].is_finite()) {
+            return None;
+        }
+        let corner = [
+            lo[0] * axes[0][0] + lo[1] * axes[1][0],
+            lo[0] * axes[0][1] + lo[1] * axes[1][1],
+        ];
+        Some(Self {
+            corner,
+            axes,
+            size: [hi[0] - lo[0], hi[1] - lo[1]],
+        })
+    }
+
+    /// The region's centroid as (s, t) from the corner (the corner itself
+    /// for a region without area).
+    fn local(&self, region: &MultiPolygon<f64>) -> (f64, f64) {
+        let Some(c) = geo::Centroid::centroid(region) else {
+            return (0.0, 0.0);
+        };
+        let d = [c.x() - self.corner[0], c.y() - self.corner[1]];
+        (
+            d[0] * self.axes[0][0] + d[1] * self.axes[0][1],
+            d[0] * self.axes[1][0] + d[1] * self.axes[1][1],
+        )
+    }
+
+    /// The point `s` along the long side and `t` along the short one from
+    /// the corner.
+    fn point(&self, s: f64, t: f64) -> geo::Coord<f64> {
+        geo::Coord {
+            x: self.corner[0] + s * self.axes[0][0] + t * self.axes[1][0],
+            y: self.corner[1] + s * self.axes[0][1] + t * self.axes[1][1],
+        }
+    }
 }
 
 /// The points of edge `e` from its start to its end: its ends when

@@ -205,17 +205,29 @@ fn without_base(
     let cells: Vec<geo::MultiPolygon<f64>> = if leaf_sides.is_empty() {
         vec![wall.region.clone()]
     } else if let Some(c) = &wall.curved {
-        // Developed, at the mid-surface.
+        // Developed, at the mid-surface; a face whose holes all go
+        // through the web without them (as below).
         sides
             .iter()
-            .flat_map(|&s| c.side_polygons[s].iter().map(|(_, p)| p.clone()))
+            .flat_map(|&s| c.side_polygons[s].iter())
+            .map(|(f, p)| {
+                let openings = a.openings(*f);
+                if !openings.is_empty() && openings.iter().all(|&o| o) {
+                    without_holes(p)
+                } else {
+                    p.clone()
+                }
+            })
             .collect()
     } else {
+        // A cell's holes through the web support nothing: the span runs
+        // to the walls around it (DOMAIN.md §2.1), as if they were not
+        // there, and its figure does not hang on how a search skirts them.
         sides
             .iter()
             .flat_map(|&s| wall.sides[s].iter())
-            .filter_map(|&f| a.planar(f))
-            .map(|p| p.polygon_in(&wall.frame))
+            .filter_map(|&f| a.loops_without_openings(f))
+            .map(|loops| thinwall_analysis::polygon::project_loops(&loops, &wall.frame))
             .collect()
     };
     // The widest cell; among cells as wide (a 30 x 30 and a 30 x 40
@@ -241,6 +253,14 @@ fn without_base(
     size.height_dir = in_plane_up
         .try_normalize(DIRECTION_NORM_MIN)
         .unwrap_or(wall.frame.x);
+}
+
+fn without_holes(p: &geo::MultiPolygon<f64>) -> geo::MultiPolygon<f64> {
+    geo::MultiPolygon::new(
+        p.0.iter()
+            .map(|q| geo::Polygon::new(q.exterior().clone(), vec![]))
+            .collect(),
+    )
 }
 
 /// Kinds: a wall carrying thin leaves, one that walls run through (an
