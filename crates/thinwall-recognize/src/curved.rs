@@ -656,6 +656,35 @@ fn pair_face(
     }
 }
 
+/// The pieces of a region in (θ, s), each shifted by the whole turns that
+/// put it nearest the largest: a wall across the angle's seam (where it
+/// falls depends on the surface's frame, so on the pose) stays in one
+/// piece, and its centre is its centre.
+fn unwrapped(parts: Vec<geo::Polygon<f64>>) -> Vec<geo::Polygon<f64>> {
+    let theta = |p: &geo::Polygon<f64>| p.centroid().map_or(0.0, |c| c.x());
+    let Some(reference) = parts
+        .iter()
+        .max_by(|a, b| a.unsigned_area().total_cmp(&b.unsigned_area()))
+        .map(theta)
+    else {
+        return parts;
+    };
+    parts
+        .into_iter()
+        .map(|p| {
+            let shift = -((theta(&p) - reference) / TAU).round() * TAU;
+            if shift == 0.0 {
+                p
+            } else {
+                p.map_coords(|q| Coord {
+                    x: q.x + shift,
+                    y: q.y,
+                })
+            }
+        })
+        .collect()
+}
+
 /// A wall from its sides and region in (θ, s), or none when it is too
 /// narrow or too tightly curved.
 fn build_wall(
@@ -666,7 +695,7 @@ fn build_wall(
     parts: Vec<geo::Polygon<f64>>,
     config: &Config,
 ) -> Option<crate::wall::Wall> {
-    let region_ts = MultiPolygon::new(parts);
+    let region_ts = MultiPolygon::new(unwrapped(parts));
     let thickness = off[0] - off[1];
     let c = region_ts.centroid()?;
     let (theta_c, s_c) = (c.x(), c.y());
