@@ -20,13 +20,13 @@ rigid move keeps: features (web, rib, flange, hole, cutout; a wall's side
 faces, thickness, foot and top thickness when drafted), connections
 (base_leaf, crossing) and the blend faces (fillet_faces).
 
-usage: python3 scripts/generate_parts.py OUT_DIR [FIRST [COUNT]]
+usage: python3 scripts/generate_parts.py [OUT_DIR [FIRST [COUNT]]]
        writes OUT_DIR/gen_SEED.step and OUT_DIR/gen_SEED.truth.json
-       (seeds FIRST .. FIRST+COUNT-1; default 0, 20)
+       (default target/generated, seeds FIRST .. FIRST+COUNT-1 = 1 .. 20)
 """
-import json, math, os, random, sys
+import math, os, random, sys
 
-from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakeRevol
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakeRevol
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut, BRepAlgoAPI_Fuse
 from OCP.BRepFilletAPI import BRepFilletAPI_MakeFillet
 from OCP.BRepOffsetAPI import BRepOffsetAPI_DraftAngle
@@ -47,6 +47,9 @@ except ImportError:  # 8.x moved the containers
     from OCP.OCP.collections import List_TopoDS_Shape as TopTools_ListOfShape
     from OCP.OCP.collections import IndexedMap_TopoDS_Shape_TopTools_ShapeMapHasher as TopTools_IndexedMapOfShape
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_recognition_fixtures import box, write_generated  # noqa: E402
+
 _face = getattr(TopoDS, "Face_s", None) or TopoDS.Face
 _edge = getattr(TopoDS, "Edge_s", None) or TopoDS.Edge
 _map_shapes = getattr(TopExp, "MapShapes_s", None) or TopExp.MapShapes
@@ -59,10 +62,6 @@ MIN_CELL = 28.0
 
 
 # ---------------------------------------------------------------- solids
-
-def box(x0, y0, z0, x1, y1, z1):
-    return BRepPrimAPI_MakeBox(gp_Pnt(x0, y0, z0), x1 - x0, y1 - y0, z1 - z0).Shape()
-
 
 def cylinder(p, d, r, length):
     return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(*p), gp_Dir(*d)), r, length).Shape()
@@ -598,32 +597,8 @@ def part(seed, turned=True):
     return shape, doc
 
 
-def write_step(shape, path):
-    from OCP.STEPControl import STEPControl_Writer, STEPControl_AsIs
-    from OCP.Interface import Interface_Static
-    from OCP.IFSelect import IFSelect_RetDone
-    from OCP.Message import Message, Message_Gravity
-    for printer in Message.DefaultMessenger_s().Printers():
-        printer.SetTraceLevel(Message_Gravity.Message_Fail)
-    Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
-    w = STEPControl_Writer()
-    w.Transfer(shape, STEPControl_AsIs)
-    assert w.Write(path) == IFSelect_RetDone, f"cannot write {path}"
-
-
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "target/generated"
-    first = int(sys.argv[2]) if len(sys.argv) > 2 else 0
-    count = int(sys.argv[3]) if len(sys.argv) > 3 else 20
-    os.makedirs(out, exist_ok=True)
-    for seed in range(first, first + count):
-        shape, doc = part(seed)
-        write_step(shape, os.path.join(out, f"gen_{seed}.step"))
-        with open(os.path.join(out, f"gen_{seed}.truth.json"), "w") as f:
-            json.dump(doc, f, indent=1)
-            f.write("\n")
-        print(f"gen_{seed}: {doc['family']}, {doc['face_count']} faces, "
-              f"{len(doc['features'])} features", flush=True)
+    write_generated("gen", part, "target/generated", 20)
 
 
 if __name__ == "__main__":
