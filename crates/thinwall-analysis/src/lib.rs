@@ -121,7 +121,7 @@ impl<'a> PartAnalysis<'a> {
             part,
             graph,
             setup,
-            tol: PartTolerances::for_diagonal(bbox.diagonal()),
+            tol: PartTolerances::for_diagonal(part.size()),
             bbox,
             props: OnceLock::new(),
             boundary: OnceLock::new(),

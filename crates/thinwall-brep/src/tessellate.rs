@@ -82,14 +82,15 @@ const NARROW_FACE: f64 = 0.002;
 /// more than this part of the face's area, the face is made finer.
 const BOUNDARY_AREA: f64 = 0.004;
 
-/// The chordal deviation of `part_mesh`, relative to the part's diagonal.
+/// The chordal deviation of `part_mesh`, relative to the part's size
+/// (`Part::size`).
 pub const RELATIVE_DEVIATION: f64 = 1e-3;
 
 /// The part's triangles at `RELATIVE_DEVIATION` of its size: the one mesh
 /// the pictures, the pages and the accessibility analysis share.
 pub fn part_mesh(part: &Part) -> Mesh {
     crate::builds::record(part, crate::builds::Built::Mesh);
-    let size = part.bounding_box().diagonal().max(1e-9);
+    let size = part.size().max(1e-9);
     tessellate(part, RELATIVE_DEVIATION * size)
 }
 

@@ -288,7 +288,7 @@ pub struct Ctx {
 
 impl Ctx {
     pub fn new(a: &PartAnalysis, tool: Tool) -> Self {
-        let size = a.bounding_box().diagonal().max(1e-3);
+        let size = a.part().size().max(1e-3);
         Self {
             tool,
             touch: TOUCH * size,
