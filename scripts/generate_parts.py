@@ -580,21 +580,27 @@ def posed(shape, up, trsf):
 FAMILIES = {"panel": panel, "skin": skin}
 
 
-def part(seed, turned=True):
-    """Part `seed`: (shape, truth document). `turned` places it in its
-    random pose; otherwise it stays in the frame it was drawn in."""
+def drawn(seed):
+    """Part `seed` in the frame it was drawn in and turned into its random
+    pose: ((shape, truth document), (turned shape, its truth document)),
+    drawn once."""
     rnd = random.Random(seed)
     family = sorted(FAMILIES)[seed % len(FAMILIES)]
     truth, params = FAMILIES[family](rnd)
     doc = truth.document(family, seed, params)
-    shape = truth.shape
     trsf = random_pose(rnd)
-    if turned:
-        shape, doc["up"] = posed(shape, truth.up, trsf)
-        v = trsf.TranslationPart()
-        doc["pose"] = {"rotation": [[trsf.Value(i, j) for j in (1, 2, 3)] for i in (1, 2, 3)],
-                       "translation": [v.X(), v.Y(), v.Z()]}
-    return shape, doc
+    shape, up = posed(truth.shape, truth.up, trsf)
+    v = trsf.TranslationPart()
+    turned = dict(doc, up=up, pose={"rotation": [[trsf.Value(i, j) for j in (1, 2, 3)] for i in (1, 2, 3)],
+                                    "translation": [v.X(), v.Y(), v.Z()]})
+    return (truth.shape, doc), (shape, turned)
+
+
+def part(seed, turned=True):
+    """Part `seed`: (shape, truth document). `turned` places it in its
+    random pose; otherwise it stays in the frame it was drawn in."""
+    flat, moved = drawn(seed)
+    return moved if turned else flat
 
 
 def main():

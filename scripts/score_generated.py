@@ -139,10 +139,9 @@ def check(seed, reach=False):
     import thinwall
     import thinwall.occ
     options = {} if reach else {"no_reach": True}
-    shape, doc = generate_parts.part(seed)
+    (flat, flat_doc), (shape, doc) = generate_parts.drawn(seed)
     turned = thinwall.occ.recognize(shape, up=",".join(map(repr, doc["up"])), **options)
     tp, fp, fn, problems = score(doc, turned)
-    flat, flat_doc = generate_parts.part(seed, turned=False)
     built = thinwall.occ.recognize(flat, up=",".join(map(repr, flat_doc["up"])), **options)
     problems += pose_differences(built, turned)
     return doc["family"], tp, fp, fn, problems
