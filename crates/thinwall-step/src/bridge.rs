@@ -712,12 +712,19 @@ impl<'s, 'm> Builder<'s, 'm> {
         // against it.
         let conic = matches!(curve, CurveKind::Circle { .. } | CurveKind::Ellipse { .. });
         let nurbs = match nurbs {
-            // A closed circle or ellipse as step-io gives it starts at the
-            // curve's own origin, which need not be the edge's vertex: the
-            // full turn is built from the vertex instead.
-            Some(n) if start == end && conic => self
+            // A circle or ellipse is built from its vertices in equal pieces
+            // of at most a quarter turn: step-io's arc has its knots where
+            // the curve's own parametrisation puts them (a closed one even
+            // starts at the curve's origin, not at the vertex), so the same
+            // arc written from another reference direction (a part turned,
+            // or written by another system) was sampled at other points.
+            Some(n) if conic => self
                 .conic_arc(&curve, start, end, edge.same_sense())
-                .or(Some(if edge.same_sense() { n } else { n.reversed() })),
+                .or(Some(if start == end && !edge.same_sense() {
+                    n.reversed()
+                } else {
+                    n
+                })),
             Some(n) => Some(n),
             None => {
                 let arc = self.conic_arc(&curve, start, end, edge.same_sense());
