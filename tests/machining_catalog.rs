@@ -324,3 +324,27 @@ fn pieces_other_cuts_left_keep_their_catalogue_name() {
         }
     }
 }
+
+/// What other cuts leave of a feature, drawn small
+/// (`scripts/make_catalog_fixtures.py`), keeps its catalogue name as built
+/// and turned: three walls of a hexagonal pocket (two meeting at 120°
+/// inside, which no triangle has) with their floor; what a passage left of
+/// a blind hole drilled from a step's floor (entered from a face that is
+/// not the block's).
+#[test]
+fn cut_pieces_drawn_small_keep_their_catalogue_name() {
+    let dir = common::root().join("fixtures/machining/catalog");
+    let cases = [
+        ("hexagon_pocket_three_walls", Catalog::SixSidesPocket, 4),
+        ("blind_hole_from_step_floor", Catalog::BlindHole, 2),
+    ];
+    for (stem, want, faces) in cases {
+        let f = dir.join(format!("{stem}.step"));
+        for seed in [None, Some(7), Some(8)] {
+            let (_, feats) = recognize_file(&f, seed);
+            let named: Vec<_> = feats.iter().filter(|m| m.catalog == Some(want)).collect();
+            assert_eq!(named.len(), 1, "{stem} turned {seed:?}: {feats:#?}");
+            assert_eq!(named[0].faces.len(), faces, "{stem} turned {seed:?}");
+        }
+    }
+}

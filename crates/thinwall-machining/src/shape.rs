@@ -32,8 +32,9 @@ const CUT_HOLE_SWEEP_DEG: f64 = 200.0;
 const TRIANGLE_FILL: f64 = 0.6;
 /// The profile a ring of walls (or what is left of one where another
 /// feature cut it) comes from, by the angles between their normals: six
-/// walls at 60° or parallel to each other, or four with a parallel pair
-/// and one at 60°, a hexagon; walls square or parallel only, a
+/// walls at 60° or parallel to each other, or three or more at 60°, 120°
+/// or parallel with two meeting at 120° inside, or four with a parallel
+/// pair and one at 60°, a hexagon; walls square or parallel only, a
 /// rectangle; three walls with no two parallel, a triangle.
 pub(crate) fn ring_profile(walls: &[Vector3]) -> Profile {
     let cos = |i: usize, j: usize| walls[i].dot(&walls[j]);
@@ -48,10 +49,14 @@ pub(crate) fn ring_profile(walls: &[Vector3]) -> Profile {
     let hexagon_walls =
         pairs().all(|(i, j)| at_60(i, j) || cos(i, j).abs() > 1.0 - NEAR_PARALLEL_EPS);
     let parallel = pairs().any(|(i, j)| cos(i, j) < -1.0 + NEAR_PARALLEL_EPS);
+    // Two walls meeting at 120° inside (normals 60° apart): a triangle has
+    // no such corner (its three add up to 180°).
+    let wide_corner = pairs().any(|(i, j)| (cos(i, j) - 0.5).abs() < NEAR_PARALLEL_EPS.sqrt());
     match walls.len() {
         n if n >= 5 && hexagon_walls => Profile::Hexagonal,
         n if n >= 5 => Profile::Free,
         n if n >= 3 && square_or_parallel => Profile::Rectangular,
+        n if n >= 3 && hexagon_walls && wide_corner => Profile::Hexagonal,
         3 if !parallel => Profile::Triangular,
         n if n >= 3 && sixty && parallel => Profile::Hexagonal,
         _ => Profile::Free,
@@ -254,8 +259,8 @@ impl<'g> GroupShape<'g> {
 
     /// Whether the group is what is left of a hole that another hole
     /// crosses: concave cylinders on parallel axes (and the bottom, a plane
-    /// square to them, when blind), entered through block faces square to
-    /// them, and along their length meeting (convexly) only other
+    /// square to them, when blind), entered through faces square to them
+    /// (the block's, or another feature's floor met at a convex rim), and along their length meeting (convexly) only other
     /// features' faces parallel to the axis: at least one of them another
     /// hole, or more than half the circle left. A circular slot's edges
     /// meet the block instead, and its arc is half a circle at most.
@@ -285,7 +290,11 @@ impl<'g> GroupShape<'g> {
                 let across = a.props(g).normal.map(|n| n.dot(&first.axis).abs());
                 let on_block = self.stock.plane_of(a, g).is_some();
                 let fits = match (a.concave_cylinder(g), across) {
-                    (_, Some(c)) if c > 1.0 - NEAR_PARALLEL_EPS => on_block,
+                    // The face it was entered from: the block's, or another
+                    // feature's floor met at the rim.
+                    (_, Some(c)) if c > 1.0 - NEAR_PARALLEL_EPS => {
+                        on_block || adj.convexity == Convexity::Convex
+                    }
                     (_, Some(c)) => {
                         c < NEAR_PARALLEL_EPS && !on_block && adj.convexity == Convexity::Convex
                     }
@@ -407,8 +416,15 @@ impl<'g> GroupShape<'g> {
             && sweeps
                 .iter()
                 .any(|s| (s - QUARTER_DEG).abs() < QUARTER_SLACK_DEG);
+        let mut planes: Vec<Plane> = Vec::new();
+        for p in walls.iter().filter_map(|&w| face_plane(a, w)) {
+            if !planes.iter().any(|q| same_plane(a, q, &p)) {
+                planes.push(p);
+            }
+        }
         CurvedFacts {
             floor,
+            wall_planes: planes.len(),
             walls,
             core,
             sweeps,
@@ -420,10 +436,11 @@ impl<'g> GroupShape<'g> {
         }
     }
 
-    /// A half circle through the part (one plane beside it at most: where
-    /// material beyond the edge closed its open side lower down).
+    /// A half circle through the part (one plane beside it at most, in
+    /// pieces or not: where material beyond the edge closed its open side
+    /// lower down).
     fn half_through_slot(k: &CurvedFacts) -> Option<Typed> {
-        (k.walls.len() <= 1 && !k.floor && k.halves > 0 && k.sweeps.len() == 1).then(|| {
+        (k.wall_planes <= 1 && !k.floor && k.halves > 0 && k.sweeps.len() == 1).then(|| {
             typed(
                 MachiningKind::Slot,
                 true,
@@ -823,6 +840,8 @@ struct CurvedFacts {
     floor: bool,
     /// Faces along the axis (planar walls).
     walls: Vec<FaceId>,
+    /// The distinct planes of the walls.
+    wall_planes: usize,
     /// A convex cylinder coaxial with the first (an O-ring's core).
     core: bool,
     /// Every concave cylinder's sweep, degrees.
