@@ -59,6 +59,8 @@ _surface_props = getattr(BRepGProp, "SurfaceProperties_s", None) or BRepGProp.Su
 MATCH = 1e-5
 #: Smallest pocket cell: under it a web is no longer thin, mm.
 MIN_CELL = 28.0
+#: A channel between two ribs narrower than the default tool (Ø12), mm.
+NARROW_CELL = (8.0, 11.5)
 
 
 # ---------------------------------------------------------------- solids
@@ -271,7 +273,9 @@ def cells(rnd, length, start, end, foot, most):
     """Random rib centre lines across `length`: the pockets' floor edges
     (from `start`, the first wall's inner foot or past the edge, to `end`)
     split into cells at least MIN_CELL wide by ribs `foot` thick at their
-    foot. Returns (rib centres, cells as (lo, hi) at the floor)."""
+    foot; one time in four, one cell between two ribs is a channel
+    NARROW_CELL wide, narrower than the tool. Returns (rib centres, cells
+    as (lo, hi) at the floor)."""
     room = end - start
     n = max(0, min(most, int((room + foot) // (MIN_CELL + foot)) - 1))
     n = rnd.randint(0, n)
@@ -281,6 +285,11 @@ def cells(rnd, length, start, end, foot, most):
     for s in shares[:-1] + [slack]:
         widths.append(MIN_CELL + s - prev)
         prev = s
+    if n >= 2 and rnd.random() < 0.25:
+        k = rnd.randint(1, n - 1)
+        narrow = rnd.uniform(*NARROW_CELL)
+        widths[k + 1] += widths[k] - narrow
+        widths[k] = narrow
     ribs, spans, at = [], [], start
     for i, w in enumerate(widths):
         spans.append((at, at + w))
@@ -309,7 +318,7 @@ def panel(rnd):
     ys, ycells = cells(rnd, W, y_lo, y_hi, rib_foot, 3)   # ribs along x at y = ys
     smallest = min(min(b - a for a, b in xcells), min(b - a for a, b in ycells))
     corner = rnd.choice([0.0, rnd.uniform(1.5, min(8.0, smallest / 2 - 2))])
-    fillet = rnd.choice([0.0, rnd.uniform(0.5, 3.0)])
+    fillet = rnd.choice([0.0, rnd.uniform(0.5, min(3.0, 0.3 * smallest))])
     if corner > 0:
         fillet = min(fillet, 0.8 * corner)
     top = tw + h
@@ -373,10 +382,26 @@ def panel_depressions(rnd, xs, ys, xcells, ycells, flanged, p):
             continue
         width = rnd.uniform(4, min(15, room))
         at = rnd.uniform(lo + rc + 3, hi - rc - 3 - width)
+        # At the flange's end where the pockets run out past the block's
+        # edge (no flange across it), one time in three: open at that end.
+        ends = open_ends(edge, flanged, p)
+        if ends and rnd.random() < 1 / 3:
+            at = -1.0 if rnd.choice(ends) == "lo" else ends_length(edge, p) + 1 - width
         depth = rnd.uniform(3, min(0.45 * h, h - rf - 3))
         tools.append(notch_tool(edge, at, width, depth, p))
         plan.append(("cutout", "F" + edge.upper(), edge, at, width, depth))
     return tools, plan
+
+
+def ends_length(edge, p):
+    """The length of the block's edge a flange runs along."""
+    return p["width"] if edge[0] == "x" else p["length"]
+
+
+def open_ends(edge, flanged, p):
+    """The ends ("lo", "hi") of a flange along `edge` with no flange across them."""
+    across = ("y0", "y1") if edge[0] == "x" else ("x0", "x1")
+    return [end for end, e in zip(("lo", "hi"), across) if not flanged[e]]
 
 
 def notch_tool(edge, at, width, depth, p):
@@ -457,7 +482,9 @@ def panel_depression_truth(t, plan, p):
                 lo, hi = (x0, at, top - depth), (x0 + foot, at + width, top)
                 sides = lambda f, at=at, w=width: on_plane(f, (0, 1, 0), (0, at, 0)) or on_plane(f, (0, -1, 0), (0, at + w, 0))
             floor = lambda f, z=top - depth: on_plane(f, (0, 0, 1), (0, 0, z))
-            t.depression(f"C{n_cut}", "cutout",
+            # Open at the flange's end: a side notch at a wall end (DOMAIN.md §2.2).
+            at_end = at < 0 or at + width > ends_length(edge, p)
+            t.depression(f"C{n_cut}", "notch" if at_end else "cutout",
                          lambda f, lo=lo, hi=hi, s=sides, fl=floor: inside(f, lo, hi) and (s(f) or fl(f)),
                          wall, depth=round(depth, 9))
 

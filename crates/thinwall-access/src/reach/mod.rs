@@ -501,6 +501,12 @@ pub(crate) fn sampled_outline(mesh: &Mesh, own: u32) -> Vec<Vec<[f64; 3]>> {
         .collect()
 }
 
+/// A face stops the tool only where it leaves more than this share of the
+/// judged face unreachable: below the 1e-6 to which fractions are stated,
+/// the polygon booleans' slivers (1e-6 mm² on a 2,000 mm² web) named a
+/// blocker in one pose and not in another.
+const BLOCKER_SHARE: f64 = 1e-7;
+
 /// Who stops the tool on a face (face of the part, cutter or holder) and
 /// how much of the face's `area` each leaves unreachable, most first.
 fn blockers_of(part: &thinwall_brep::Part, mesh: &Mesh, j: &Judged, area: f64) -> Vec<Blocker> {
@@ -520,6 +526,7 @@ fn blockers_of(part: &thinwall_brep::Part, mesh: &Mesh, j: &Judged, area: f64) -
                 unreachable_mm2: (mm2 * area / j.area.max(1e-300)).min((1.0 - j.fraction()) * area),
             }
         })
+        .filter(|b| b.unreachable_mm2 > BLOCKER_SHARE * area)
         .collect();
     blocked_by.sort_by(|x, y| {
         y.unreachable_mm2
