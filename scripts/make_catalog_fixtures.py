@@ -15,19 +15,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from make_recognition_fixtures import box, cut, write  # noqa: E402
-from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakePolygon  # noqa: E402
-from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakePrism  # noqa: E402
-from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt, gp_Vec  # noqa: E402
-
-
-def prism(points, z0, height):
-    """A prism on the polygon `points` (x, y) from z0 up `height`."""
-    poly = BRepBuilderAPI_MakePolygon()
-    for x, y in points:
-        poly.Add(gp_Pnt(x, y, z0))
-    poly.Close()
-    face = BRepBuilderAPI_MakeFace(poly.Wire()).Face()
-    return BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, height)).Shape()
+from make_access_fixtures import prism_z  # noqa: E402
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeCylinder  # noqa: E402
+from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt  # noqa: E402
 
 
 def hexagon_pocket_three_walls():
@@ -35,7 +25,7 @@ def hexagon_pocket_three_walls():
     round (20, 20); a 10 x 20 passage through the block over x > 19 takes its far half."""
     hexagon = [(20 + 6 * math.cos(math.radians(30 + 60 * k)),
                 20 + 6 * math.sin(math.radians(30 + 60 * k))) for k in range(6)]
-    part = cut(box(0, 0, 0, 40, 40, 20), prism(hexagon, 12, 10))
+    part = cut(box(0, 0, 0, 40, 40, 20), prism_z(hexagon, 12, 22))
     return cut(part, box(19, 10, -1, 29, 30, 21))
 
 
