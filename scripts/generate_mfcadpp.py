@@ -150,7 +150,8 @@ def run_batch(args, parts):
         try:
             done = subprocess.run(cmd, capture_output=True, text=True,
                                   timeout=args.timeout * len(todo))
-            out, status = done.stdout, f"crashed (exit {done.returncode})"
+            why = (done.stderr.strip().splitlines() or ["no message"])[-1][:200]
+            out, status = done.stdout, f"crashed (exit {done.returncode}): {why}"
         except subprocess.TimeoutExpired as e:
             out, status = e.stdout or "", "timed out"
             out = out.decode() if isinstance(out, bytes) else out

@@ -19,8 +19,9 @@ generator's own files run unchanged on OCP:
   and orientation); OCP compares by object identity. The hash is OCP's (pythonocc's rule:
   orientation ignored), so equal shapes hash alike.
 - The generator's modules are read through a loader that changes only what pythonocc did
-  differently: `except RuntimeError` also catches OpenCascade's `Standard_Failure` (pythonocc
-  raised every OCCT failure as RuntimeError), and numpy 2's `-np.inf` for the removed `np.NINF`.
+  differently: `except RuntimeError` also catches every OpenCascade failure OCP raises
+  (`Standard_Failure`, `StdFail_NotDone`, ...: pythonocc raised each as RuntimeError), and
+  numpy 2's `-np.inf` for the removed `np.NINF`.
 
 No line of the generator is copied here; its logic, random draws and labels are its own.
 """
@@ -184,7 +185,24 @@ class _OccFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         pass
 
 
-_FAILURE = "__import__('OCP.Standard', fromlist=['Standard_Failure']).Standard_Failure"
+def occt_failures():
+    """Every exception class OCP raises for an OpenCascade failure (OCP gives each its own
+    class, `StdFail_NotDone` is no `Standard_Failure`), once per process."""
+    global _FAILURES
+    if _FAILURES is None:
+        core = importlib.import_module("OCP.OCP")
+        found = set()
+        for name in dir(core):
+            mod = getattr(core, name)
+            if isinstance(mod, types.ModuleType):
+                found.update(c for c in vars(mod).values()
+                             if isinstance(c, type) and issubclass(c, BaseException))
+        _FAILURES = tuple(sorted(found, key=lambda c: c.__name__))
+    return _FAILURES
+
+
+_FAILURES = None
+_FAILURE = "*__import__('mfcadpp_compat').occt_failures()"
 
 # What pythonocc did differently, as (pattern, replacement); see the module's doc.
 REWRITES = (
