@@ -260,8 +260,9 @@ impl<'g> GroupShape<'g> {
     /// Whether the group is what is left of a hole that another hole
     /// crosses: concave cylinders on parallel axes (and the bottom, a plane
     /// square to them, when blind), entered through faces square to them
-    /// (the block's, or another feature's floor met at a convex rim), and along their length meeting (convexly) only other
-    /// features' faces parallel to the axis: at least one of them another
+    /// (the block's, or another feature's floor met at a convex rim), and
+    /// along their length meeting (convexly) only other features' faces
+    /// parallel to the axis: at least one of them another
     /// hole, or more than half the circle left. A circular slot's edges
     /// meet the block instead, and its arc is half a circle at most.
     /// `round_sweep`: [`Self::round_sweep`].

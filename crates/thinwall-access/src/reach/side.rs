@@ -339,20 +339,17 @@ fn bands(
     // coarse merge below was taken or not as rounding put a corner just
     // outside the face, and a kink 0.06 mm up a 36 mm rib went with it.
     let distinct = thin_out(vs, 1e-9 * span);
-    let out = if distinct.len() > MAX_BANDS {
+    let mut out = if distinct.len() > MAX_BANDS {
         thin_out(distinct, span / MAX_BANDS as f64)
     } else {
         distinct
     };
-    match out.last() {
-        Some(&l) if l < v1 - 1e-9 * span => [out, vec![v1]].concat(),
-        Some(_) => {
-            let mut out = out;
-            *out.last_mut().unwrap() = v1;
-            out
-        }
-        None => out,
+    // The face's top closes the last band, in place of a height just below.
+    match out.last_mut() {
+        Some(l) if *l >= v1 - 1e-9 * span => *l = v1,
+        _ => out.push(v1),
     }
+    out
 }
 
 /// Sorted values, each kept only more than `gap` above the last one kept.
