@@ -28,12 +28,11 @@ No line of the generator is copied here; its logic, random draws and labels are 
 
 import importlib.abc
 import importlib.machinery
-import importlib.util
 import re
 import sys
 import types
 
-import OCP
+import OCP  # noqa: F401  (fails early, with its own message, where OCP is missing)
 
 _OCC_PACKAGES = ("OCC", "OCC.Core", "OCC.Extend", "OCC.Display")
 
@@ -285,4 +284,3 @@ def install(upstream_dir):
     _pythonocc_out_parameters()
     sys.meta_path.insert(0, _UpstreamFinder(root))
     sys.meta_path.insert(0, _OccFinder())
-    assert OCP
