@@ -337,7 +337,11 @@ pub fn select(
         done_area = now;
     }
     let side = !s.part.is_empty();
-    let bottom = floor.unsigned_area() > tiny;
+    // A floor that only touches the field along an edge leaves a sliver
+    // of the booleans' rounding: under the smallest mill's polygon noise
+    // it is no floor.
+    let floor_noise = mills.last().map_or(0.0, |t| noise(t.diameter_mm));
+    let bottom = floor.unsigned_area() > tiny.max(floor_noise);
     let adjacency = Adjacency::of(side, bottom);
     let entry = if s.blank.is_empty() {
         Entry::Ramp

@@ -3,10 +3,10 @@
 //! facing one way, as one graph piece over the union of their projections.
 //! A grid over their boxes finds the triangle under a point; a flux over a
 //! polygon is the sum of each triangle's plane over its part of the
-//! polygon (2-D booleans through `thinwall_analysis::boolean`).
+//! polygon (the polygon's rings clipped by the triangle, `crate::clip`).
 
-use geo::{Coord, LineString, MultiPolygon, Polygon, Rect};
-use thinwall_analysis::boolean::intersection;
+use crate::clip::{signed_area, Wound};
+use geo::{Coord, MultiPolygon, Polygon, Rect};
 
 /// Triangles (x, y, z in the removal frame) over their projections.
 #[derive(Debug)]
@@ -246,7 +246,8 @@ impl Facets {
             .map(|k| k as usize)
             .filter(|&k| overlaps(&self.boxes[k], &bb))
             .collect();
-        self.flux_over(MultiPolygon::new(vec![p.clone()]), bb, tris, 0)
+        let region = Wound::of(&MultiPolygon::new(vec![p.clone()]));
+        self.flux_over(region, bb, tris, 0)
     }
 
     /// The flux of triangles `tris` over `region` (within `rect`):
@@ -255,17 +256,11 @@ impl Facets {
     /// the region, so a triangle's part of it is the sum of its parts in
     /// the halves; and a large region (a meshed face's outline of
     /// thousands of corners) is cut once per level, not once per triangle.
-    fn flux_over(
-        &self,
-        region: MultiPolygon<f64>,
-        rect: Rect<f64>,
-        tris: Vec<usize>,
-        depth: usize,
-    ) -> f64 {
-        if region.0.is_empty() || tris.is_empty() {
+    fn flux_over(&self, region: Wound, rect: Rect<f64>, tris: Vec<usize>, depth: usize) -> f64 {
+        if region.is_empty() || tris.is_empty() {
             return 0.0;
         }
-        if tris.len() * crate::halving::corners(&region) <= DIRECT_WORK
+        if tris.len() * region.corners() <= DIRECT_WORK
             || tris.len() <= 2
             || depth >= MAX_SPLIT_DEPTH
         {
@@ -275,30 +270,30 @@ impl Facets {
         crate::halving::halves(&rect)
             .into_iter()
             .map(|h| {
-                let part = intersection(&region, &MultiPolygon::new(vec![h.to_polygon()]));
                 let mine: Vec<usize> = tris
                     .iter()
                     .copied()
                     .filter(|&k| overlaps(&self.boxes[k], &h))
                     .collect();
-                self.flux_over(part, h, mine, depth + 1)
+                self.flux_over(region.in_rect(&h), h, mine, depth + 1)
             })
             .sum()
     }
 
-    /// Triangle `k`'s plane over its part of `region`.
-    fn triangle_flux(&self, k: usize, region: &MultiPolygon<f64>) -> f64 {
+    /// Triangle `k`'s plane over its part of `region` (clipped by the
+    /// triangle, [`crate::clip`]; a triangle seen edge-on holds nothing).
+    fn triangle_flux(&self, k: usize, region: &Wound) -> f64 {
         let [a, b, c] = self.tris[k];
-        let tri = MultiPolygon::new(vec![Polygon::new(
-            LineString::from(vec![(a[0], a[1]), (b[0], b[1]), (c[0], c[1]), (a[0], a[1])]),
-            vec![],
-        )]);
+        let mut tri = [[a[0], a[1]], [b[0], b[1]], [c[0], c[1]]];
+        let turn = signed_area(&tri);
+        if turn == 0.0 {
+            return 0.0;
+        }
+        if turn < 0.0 {
+            tri.swap(1, 2);
+        }
         let [z0, gx, gy] = self.planes[k];
-        intersection(&tri, region)
-            .0
-            .iter()
-            .map(|q| crate::moments::plane_flux(z0, gx, gy, q))
-            .sum()
+        region.in_convex(&tri).plane_flux(z0, gx, gy)
     }
 }
 
@@ -333,6 +328,7 @@ pub fn shared<S: serde::Serializer>(f: &std::sync::Arc<Facets>, s: S) -> Result<
 #[cfg(test)]
 mod tests {
     use super::*;
+    use geo::LineString;
 
     /// A tilted plane over the unit square, in two triangles, and a
     /// paraboloid-like roof over a fan: heights and fluxes as exact as the
@@ -414,7 +410,7 @@ mod tests {
         hole.0.reverse();
         let annulus = Polygon::new(ring(0.85, 3000), vec![hole]);
         let split = f.flux(&annulus);
-        let region = MultiPolygon::new(vec![annulus.clone()]);
+        let region = Wound::of(&MultiPolygon::new(vec![annulus.clone()]));
         let direct: f64 = (0..f.len()).map(|k| f.triangle_flux(k, &region)).sum();
         // The 2-D booleans round to their own grid (a few 1e-9 of the
         // area either way).

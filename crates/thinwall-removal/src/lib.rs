@@ -16,6 +16,7 @@
 //! A block is reachable from up when nothing of the part lies above it.
 
 pub mod cells;
+pub mod clip;
 pub mod facets;
 pub mod flux;
 mod fold;

@@ -26,6 +26,8 @@ pub struct Locator<'r> {
     grid: Grid,
     /// Per cell, its blocks.
     by_cell: Vec<Vec<usize>>,
+    /// The rectangle the cells cover (found once: every cell's box).
+    area: geo::Rect<f64>,
 }
 
 impl<'r> Locator<'r> {
@@ -40,6 +42,7 @@ impl<'r> Locator<'r> {
             removal,
             grid,
             by_cell,
+            area,
         }
     }
 
@@ -48,7 +51,7 @@ impl<'r> Locator<'r> {
         let r = self.removal;
         let l = r.frame.to_local(p);
         let tol = 1e-9 * r.size;
-        let area = footprint(r);
+        let area = self.area;
         let (x, y) = (l.x, l.y);
         if x < area.min().x - tol
             || x > area.max().x + tol
