@@ -94,7 +94,7 @@ pub fn signed_area(r: &[[f64; 2]]) -> f64 {
 }
 
 /// Signed area and first moments of an open ring: (A, ∫x, ∫y).
-fn moments(r: &[[f64; 2]]) -> (f64, f64, f64) {
+pub(crate) fn moments(r: &[[f64; 2]]) -> (f64, f64, f64) {
     let (mut a, mut mx, mut my) = (0.0, 0.0, 0.0);
     for k in 0..r.len() {
         let (p, q) = (r[k], r[(k + 1) % r.len()]);

@@ -112,18 +112,11 @@ fn clip(subject: &[[f64; 2]], by: &[[f64; 2]]) -> Vec<[f64; 2]> {
 }
 
 fn area_centroid(poly: &[[f64; 2]]) -> (f64, [f64; 2]) {
-    let (mut a, mut cx, mut cy) = (0.0, 0.0, 0.0);
-    for k in 0..poly.len() {
-        let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
-        let w = p[0] * q[1] - q[0] * p[1];
-        a += w;
-        cx += (p[0] + q[0]) * w;
-        cy += (p[1] + q[1]) * w;
-    }
-    if a.abs() < 1e-300 {
+    let (a, mx, my) = crate::clip::moments(poly);
+    if a.abs() < 0.5e-300 {
         return (0.0, [0.0, 0.0]);
     }
-    (0.5 * a.abs(), [cx / (3.0 * a), cy / (3.0 * a)])
+    (a.abs(), [mx / a, my / a])
 }
 
 /// The height of a triangle's plane over point `c`.
