@@ -22,10 +22,11 @@ pub use crate::stage::{Regions, Stage};
 use crate::drilling::{drilling_time_min, DrillKind, HoleSite};
 use crate::layers::{roughing_layers, CutterField, LayerOptions, RoughingLayer};
 use crate::order::{group_edges, nested, precedence, tool_order};
-use crate::rest::{select, Adjacency, FieldTools, ToolShare};
+use crate::rest::{open, Adjacency, FieldTools, ToolShare};
 use crate::tools::{CuttingTool, ToolLibrary};
 use petgraph::graph::NodeIndex;
 use serde::Serialize;
+use std::collections::HashMap;
 use thinwall_analysis::parallel::Work;
 use thinwall_removal::pieces::Meshed;
 use thinwall_removal::Removal;
@@ -405,7 +406,9 @@ pub(crate) fn mills_and_depth(
     (mills, a_p)
 }
 
-/// Every field's tools, or the hole whose drill takes it.
+/// Every field's tools, or the hole whose drill takes it. Each distinct
+/// field (the same contours, bit for bit) is opened once: a pocket's
+/// layers cut one section again and again, and only their floors differ.
 pub(crate) fn tools_for(
     layers: &[RoughingLayer],
     mills: &[&CuttingTool],
@@ -414,15 +417,46 @@ pub(crate) fn tools_for(
     tol: f64,
     work: Work<'_>,
 ) -> Vec<Vec<FieldTools>> {
-    work.map(layers, |l| {
-        l.fields
+    let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
+    let mut distinct: Vec<&CutterField> = Vec::new();
+    let slots: Vec<Vec<Result<usize, usize>>> = layers
+        .iter()
+        .map(|l| {
+            l.fields
+                .iter()
+                .map(|f| match drilled_by(f, l, holes, tol) {
+                    Some(h) => Err(h),
+                    None => Ok(*seen.entry(field_key(f)).or_insert_with(|| {
+                        distinct.push(f);
+                        distinct.len() - 1
+                    })),
+                })
+                .collect()
+        })
+        .collect();
+    let opened = work.map(&distinct, |f| open(f, mills, min_share_mm2));
+    let at: Vec<usize> = (0..layers.len()).collect();
+    work.map(&at, |&k| {
+        slots[k]
             .iter()
-            .map(|f| match drilled_by(f, l, holes, tol) {
-                Some(h) => FieldTools::drilled(&holes[h].id),
-                None => select(f, mills, &l.floor_region, min_share_mm2),
+            .map(|slot| match *slot {
+                Err(h) => FieldTools::drilled(&holes[h].id),
+                Ok(i) => opened[i].on(&layers[k].floor_region, mills),
             })
             .collect()
     })
+}
+
+/// A field's contours, bit for bit: its points and edge kinds, contour
+/// by contour.
+fn field_key(f: &CutterField) -> Vec<u64> {
+    let mut key = Vec::new();
+    for c in std::iter::once(&f.outer).chain(&f.islands) {
+        key.push(c.points.len() as u64);
+        key.extend(c.points.iter().flat_map(|p| [p[0].to_bits(), p[1].to_bits()]));
+        key.extend(c.edges.iter().map(|e| *e as u64));
+    }
+    key
 }
 
 /// What the operations are assembled with besides the layers.

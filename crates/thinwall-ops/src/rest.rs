@@ -294,11 +294,31 @@ pub fn select(
     floor: &MultiPolygon<f64>,
     min_share_mm2: f64,
 ) -> FieldTools {
+    open(field, mills, min_share_mm2).on(floor, mills)
+}
+
+/// What the mills clear of one field, whatever lies under it: the part of
+/// [`select`] that only the field's contours decide (a pocket's layers
+/// share one section, so this is worked out once per distinct field).
+pub struct Opened {
+    region: MultiPolygon<f64>,
+    tiny: f64,
+    side: bool,
+    entry: Entry,
+    /// Each tool's share (its floor area not yet known) and its opening.
+    shares: Vec<(ToolShare, MultiPolygon<f64>)>,
+    below: Option<BelowMinimum>,
+    rest_mm2: f64,
+    rest_width_mm: f64,
+    rest: Vec<Vec<[f64; 2]>>,
+}
+
+/// [`select`]'s descent down the mills, before any floor.
+pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> Opened {
     let s = shape(field);
     let area = s.region.unsigned_area();
     let tiny = 1e-9 * area.max(1.0);
-    let floor = intersection(&s.region, floor);
-    let mut shares = Vec::new();
+    let mut shares: Vec<(ToolShare, MultiPolygon<f64>)> = Vec::new();
     let mut done = MultiPolygon::new(vec![]);
     let mut done_area = 0.0;
     let mut below: Option<BelowMinimum> = None;
@@ -309,9 +329,7 @@ pub fn select(
         let c = cleared(&s, 0.5 * t.diameter_mm);
         let now = c.unsigned_area().max(done_area);
         // Slivers the larger tools' polygons left count as noise too.
-        let first = shares
-            .first()
-            .map_or(t.diameter_mm, |s: &ToolShare| s.diameter_mm);
+        let first = shares.first().map_or(t.diameter_mm, |s| s.0.diameter_mm);
         let cleared_mm2 = now - done_area;
         if cleared_mm2 <= tiny.max(noise(first)) {
             continue;
@@ -324,30 +342,11 @@ pub fn select(
             continue;
         }
         below = None;
-        shares.push(share(
-            &s,
-            &c,
-            &done,
-            t,
-            cleared_mm2,
-            &floor,
-            shares.is_empty(),
-        ));
+        let share = share(&s, &c, &done, t, cleared_mm2, shares.is_empty());
+        shares.push((share, c.clone()));
         done = c;
         done_area = now;
     }
-    let side = !s.part.is_empty();
-    // A floor that only touches the field along an edge leaves a sliver
-    // of the booleans' rounding: under the smallest mill's polygon noise
-    // it is no floor.
-    let floor_noise = mills.last().map_or(0.0, |t| noise(t.diameter_mm));
-    let bottom = floor.unsigned_area() > tiny.max(floor_noise);
-    let adjacency = Adjacency::of(side, bottom);
-    let entry = if s.blank.is_empty() {
-        Entry::Ramp
-    } else {
-        Entry::FromOutside
-    };
     // Measured on the difference itself: the layer check (cleared + rest
     // = section) then compares two booleans, not one number with itself.
     let rest = difference(&s.region, &done);
@@ -356,41 +355,90 @@ pub fn select(
     // no tool enters: the smallest tool's).
     let largest = shares
         .first()
-        .map(|s| s.diameter_mm)
+        .map(|s| s.0.diameter_mm)
         .or_else(|| mills.last().map(|t| t.diameter_mm))
         .unwrap_or(0.0);
-    let tiny = tiny.max(noise(largest));
-    FieldTools {
-        adjacency,
-        entry,
+    let worth = rest_mm2 > tiny.max(noise(largest));
+    Opened {
+        tiny,
+        side: !s.part.is_empty(),
+        entry: if s.blank.is_empty() {
+            Entry::Ramp
+        } else {
+            Entry::FromOutside
+        },
         shares,
+        below,
         rest_mm2,
-        rest_width_mm: if rest_mm2 > tiny {
+        rest_width_mm: if worth {
             2.0 * thinwall_analysis::polygon::inscribed_radius(&rest)
         } else {
             0.0
         },
-        rest: if rest_mm2 > tiny {
+        rest: if worth {
             rest.iter()
                 .map(|p| p.exterior().coords().map(|c| [c.x, c.y]).collect())
                 .collect()
         } else {
             Vec::new()
         },
-        below_minimum: below,
-        drilled: None,
+        region: s.region,
+    }
+}
+
+impl Opened {
+    /// The field's tools over `floor` (the part's floors at the layer's
+    /// bottom, x, y): each share's floor area and the bottom adjacency.
+    pub fn on(&self, floor: &MultiPolygon<f64>, mills: &[&CuttingTool]) -> FieldTools {
+        let floor = intersection(&self.region, floor);
+        let over = |c: &MultiPolygon<f64>| {
+            if c.0.is_empty() || floor.0.is_empty() {
+                0.0
+            } else {
+                intersection(c, &floor).unsigned_area()
+            }
+        };
+        let mut below_done = 0.0;
+        let shares = self
+            .shares
+            .iter()
+            .map(|(s, c)| {
+                let here = over(c);
+                let floor_mm2 = (here - below_done).max(0.0);
+                below_done = here;
+                ToolShare {
+                    floor_mm2,
+                    ..s.clone()
+                }
+            })
+            .collect();
+        // A floor that only touches the field along an edge leaves a
+        // sliver of the booleans' rounding: under the smallest mill's
+        // polygon noise it is no floor.
+        let floor_noise = mills.last().map_or(0.0, |t| noise(t.diameter_mm));
+        let bottom = floor.unsigned_area() > self.tiny.max(floor_noise);
+        FieldTools {
+            adjacency: Adjacency::of(self.side, bottom),
+            entry: self.entry,
+            shares,
+            rest_mm2: self.rest_mm2,
+            rest_width_mm: self.rest_width_mm,
+            rest: self.rest.clone(),
+            below_minimum: self.below.clone(),
+            drilled: None,
+        }
     }
 }
 
 /// Tool `t`'s share of the field `s`: what its opening `c` adds to `done`
-/// (`cleared_mm2`), split into Popma's regions, and its floor.
+/// (`cleared_mm2`), split into Popma's regions; its floor area comes with
+/// the layer ([`Opened::on`]).
 fn share(
     s: &Shape,
     c: &MultiPolygon<f64>,
     done: &MultiPolygon<f64>,
     t: &CuttingTool,
     cleared_mm2: f64,
-    floor: &MultiPolygon<f64>,
     first: bool,
 ) -> ToolShare {
     let (boundary, full_cut) = regions(s, c, done, t);
@@ -403,9 +451,7 @@ fn share(
         boundary_mm2: boundary,
         full_cut_mm2: full_cut,
         roughing_mm2: (cleared_mm2 - boundary - full_cut).max(0.0),
-        floor_mm2: (intersection(c, floor).unsigned_area()
-            - intersection(done, floor).unsigned_area())
-        .max(0.0),
+        floor_mm2: 0.0,
         first,
     }
 }
