@@ -453,7 +453,11 @@ fn field_key(f: &CutterField) -> Vec<u64> {
     let mut key = Vec::new();
     for c in std::iter::once(&f.outer).chain(&f.islands) {
         key.push(c.points.len() as u64);
-        key.extend(c.points.iter().flat_map(|p| [p[0].to_bits(), p[1].to_bits()]));
+        key.extend(
+            c.points
+                .iter()
+                .flat_map(|p| [p[0].to_bits(), p[1].to_bits()]),
+        );
         key.extend(c.edges.iter().map(|e| *e as u64));
     }
     key

@@ -544,4 +544,47 @@ mod tests {
         let sum = s.boundary_mm2 + s.full_cut_mm2 + s.roughing_mm2;
         assert!((sum - s.cleared_mm2).abs() < 1e-9 * 3600.0);
     }
+
+    /// One opening serves every layer of the field: over no floor, half
+    /// a floor and the whole, the same shares with their floor areas and
+    /// bottom adjacency as selecting afresh.
+    #[test]
+    fn an_opened_field_over_any_floor_is_the_field_selected_over_it() {
+        let lib = ToolLibrary::default_tools();
+        let mills: Vec<&CuttingTool> = lib.end_mills().collect();
+        let mut f = channel(60.0);
+        f.outer.points = vec![[0.0, 0.0], [60.0, 0.0], [60.0, 60.0], [0.0, 60.0]];
+        f.outer.edges = vec![
+            EdgeKind::Part,
+            EdgeKind::Blank,
+            EdgeKind::Part,
+            EdgeKind::Part,
+        ];
+        f.area_mm2 = 3600.0;
+        let opened = open(&f, &mills, 0.0);
+        let half = geo::Rect::new((0.0, 0.0), (30.0, 60.0)).to_polygon();
+        let floors = [
+            MultiPolygon::new(vec![]),
+            MultiPolygon::new(vec![half]),
+            MultiPolygon::new(vec![f.polygon()]),
+        ];
+        let mut floor_areas = Vec::new();
+        for floor in &floors {
+            let on = opened.on(floor, &mills);
+            assert_eq!(on, select(&f, &mills, floor, 0.0));
+            assert_eq!(on.adjacency.bottom(), !floor.0.is_empty());
+            floor_areas.push(on.shares.iter().map(|s| s.floor_mm2).sum::<f64>());
+        }
+        assert_eq!(floor_areas[0], 0.0);
+        // The rest lies in the corners the part closes, both in the left
+        // half (the right edge is blank: the tool overhangs it).
+        assert!(
+            (floor_areas[1] - 1800.0 + opened.rest_mm2).abs() < 1e-6,
+            "{floor_areas:?}"
+        );
+        assert!(
+            (floor_areas[2] - 3600.0 + opened.rest_mm2).abs() < 1e-6,
+            "{floor_areas:?}"
+        );
+    }
 }

@@ -213,8 +213,9 @@ pub fn plan_in_turn(
     let layer_sequence = layer_constraints(&layers, &seq.constraints);
     let splits = adapt::hole_splits(&faces, out, &walls, &shapes);
     let earlier = turn.map_or(&[][..], |t| t.earlier);
+    let this = turn.map(|t| t.this);
     let (removal, mut machining_features, frame) =
-        whole::removal_plan(analysis, out, &layers, &splits, earlier);
+        whole::removal_plan(analysis, out, &layers, &splits, (this, earlier));
     let adapted = adapt::relations(
         &faces,
         out,

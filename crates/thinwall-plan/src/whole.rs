@@ -15,13 +15,16 @@ use thinwall_removal::{frame_of, Removal, StockShape};
 /// The removal plan of `part` with its designed `layers` (plan order).
 /// Heights closer than the part's feature tolerance are the same. After
 /// the `earlier` set-ups' removals (none: the first set-up), the blocks
-/// they took are `cleared` and left out of the features.
+/// they took are `cleared` and left out of the features. `this`, the
+/// set-up's removal without bands (the proposal's), when in the same
+/// frame and stock, is cut by the bands rather than the part
+/// decomposed again ([`Removal::with_bands`]: the same result).
 pub fn removal_plan(
     a: &PartAnalysis,
     out: &Outcome,
     layers: &[Layer],
     splits: &[crate::types::HoleSplit],
-    earlier: &[Removal],
+    (this, earlier): (Option<&Removal>, &[Removal]),
 ) -> (RemovalSummary, Vec<RemovalFeature>, [[f64; 3]; 4]) {
     let part = a.part();
     let up = out.setup.up_in_part();
@@ -42,7 +45,11 @@ pub fn removal_plan(
         notes,
         ..Default::default()
     };
-    let mut r = match Removal::new(part, frame, &stock, &bands, size).and_then(Removal::checked) {
+    let reused = this
+        .filter(|t| t.frame == frame && t.size == size)
+        .and_then(|t| t.with_bands(part, &stock, &bands));
+    let made = reused.unwrap_or_else(|| Removal::new(part, frame, &stock, &bands, size));
+    let mut r = match made.and_then(Removal::checked) {
         Ok(r) => r,
         Err(e) => {
             summary.unavailable = Some(e);

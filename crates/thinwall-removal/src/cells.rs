@@ -38,8 +38,18 @@ fn overlaps(a: &Rect<f64>, b: &Rect<f64>) -> bool {
 /// Cut `start` by every cover in turn. Polygons of area below `min_area`
 /// (noise of the booleans) are dropped.
 pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell> {
-    let mut cells = vec![cell(start, vec![])];
-    for (ci, c) in covers.iter().enumerate() {
+    arrange_on(vec![cell(start, vec![])], covers, 0, min_area)
+}
+
+/// `cells`, the arrangement of `covers[..first]`, cut by the covers from
+/// `first` on in turn: the arrangement of them all.
+pub fn arrange_on(
+    mut cells: Vec<Cell>,
+    covers: &[Cover],
+    first: usize,
+    min_area: f64,
+) -> Vec<Cell> {
+    for (ci, c) in covers.iter().enumerate().skip(first) {
         // A long arrangement (thousands of meshed triangles) stops at the
         // study's time limit.
         thinwall_analysis::parallel::check_deadline();

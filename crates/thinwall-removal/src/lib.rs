@@ -28,7 +28,7 @@ pub mod pieces;
 pub mod sample;
 pub mod slab;
 
-use cells::{arrange, Cover};
+use cells::{arrange, arrange_on, Cover};
 use geo::{Coord, MultiPolygon, Rect};
 use pieces::{Facing, Piece};
 use thinwall_analysis::PartAnalysis;
@@ -140,6 +140,12 @@ pub struct Removal {
     /// The block stock's bottom and top (none for a given solid), mm.
     bottom: Option<f64>,
     top: Option<f64>,
+    /// The rectangle the arrangement started from, the block stock's
+    /// corners (none for a given solid), and whether bands cut the cells:
+    /// what [`Removal::with_bands`] checks and starts from.
+    start: Rect<f64>,
+    block: Option<([f64; 3], [f64; 3])>,
+    banded: bool,
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
     /// booleans where edges coincide up to rounding) and over cells between
     /// a vertical face's edges that the file puts apart (narrower than
@@ -544,6 +550,25 @@ impl Bound {
     }
 }
 
+/// A removal's faces seen from up and its cells, before the columns over
+/// them: what [`Removal::new`] and [`Removal::with_bands`] share.
+struct Arranged<'s, 'p> {
+    frame: Frame,
+    stock: &'s StockShape<'p>,
+    size: f64,
+    meshed: pieces::Meshed,
+    part_pieces: Vec<Piece>,
+    stock_pieces: Vec<Piece>,
+    start: Rect<f64>,
+    cells: Vec<cells::Cell>,
+    banded: bool,
+}
+
+/// Cells below this area (noise of the booleans) are dropped, mm².
+fn min_cell_area(size: f64) -> f64 {
+    (1e-7 * size).powi(2)
+}
+
 impl Removal {
     /// Decompose `stock − part` in `frame`, cutting cells also along every
     /// band (regions the planner wants features to follow).
@@ -563,8 +588,75 @@ impl Removal {
         };
         let start = footprint(stock, part_pieces.iter().chain(&stock_pieces), size);
         let covers = covers(part_pieces.iter().chain(&stock_pieces), bands);
-        let min_area = (1e-7 * size).powi(2);
-        let cells = arrange(start.to_polygon(), &covers, min_area);
+        let cells = arrange(start.to_polygon(), &covers, min_cell_area(size));
+        Self::columns(
+            part,
+            Arranged {
+                frame,
+                stock,
+                size,
+                meshed,
+                part_pieces,
+                stock_pieces,
+                start,
+                cells,
+                banded: !bands.is_empty(),
+            },
+        )
+    }
+
+    /// What [`Removal::new`] gives with `bands` in the same frame and of
+    /// the same block `stock` as this removal, made without bands: the
+    /// bands are the arrangement's last covers, so this removal's pieces
+    /// and cells are where it would stand before them, and only the bands
+    /// are cut (the plan's removal after the proposal's, whose pieces and
+    /// cells are most of its cost). `None` when this removal has bands or
+    /// another stock.
+    pub fn with_bands(
+        &self,
+        part: &Part,
+        stock: &StockShape,
+        bands: &[MultiPolygon<f64>],
+    ) -> Option<Result<Self, RemovalError>> {
+        let same_block =
+            matches!(stock, StockShape::Block { lo, hi } if self.block == Some((*lo, *hi)));
+        if self.banded || !same_block {
+            return None;
+        }
+        let covers = covers(self.part_pieces.iter().chain(&self.stock_pieces), bands);
+        let first = self.part_pieces.len() + self.stock_pieces.len();
+        let cells = arrange_on(self.cells.clone(), &covers, first, min_cell_area(self.size));
+        Some(Self::columns(
+            part,
+            Arranged {
+                frame: self.frame,
+                stock,
+                size: self.size,
+                meshed: self.meshed.clone(),
+                part_pieces: self.part_pieces.clone(),
+                stock_pieces: self.stock_pieces.clone(),
+                start: self.start,
+                cells,
+                banded: !bands.is_empty(),
+            },
+        ))
+    }
+
+    /// The removal over arranged cells: each cell's bands, its columns'
+    /// blocks, and the check that they add up.
+    fn columns(part: &Part, x: Arranged) -> Result<Self, RemovalError> {
+        let Arranged {
+            frame,
+            stock,
+            size,
+            meshed,
+            part_pieces,
+            stock_pieces,
+            start,
+            cells,
+            banded,
+        } = x;
+        let min_area = min_cell_area(size);
         let vertical = pieces::vertical_faces(part, &frame);
         let columns = Columns {
             part: &part_pieces,
@@ -612,11 +704,14 @@ impl Removal {
             )
         });
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
-        let (bottom, top) = match stock {
-            StockShape::Block { lo, hi } => (Some(lo[2]), Some(hi[2])),
-            StockShape::Solid(_) => (None, None),
+        let (bottom, top, block) = match stock {
+            StockShape::Block { lo, hi } => (Some(lo[2]), Some(hi[2]), Some((*lo, *hi))),
+            StockShape::Solid(_) => (None, None, None),
         };
         Ok(Self {
+            start,
+            block,
+            banded,
             size,
             meshed,
             vertical_grid,

@@ -16,6 +16,7 @@ use crate::choice::{clean, up_candidates, UpCandidate, SAME_SETUP_COS};
 use crate::heights::HeightMap;
 use crate::turn::{cut_after, residue, residue_after, residue_tolerance, Residue};
 use serde::Serialize;
+use std::collections::HashMap;
 use thinwall_analysis::PartAnalysis;
 use thinwall_geom::{Point3, Vector3};
 use thinwall_removal::{Bound, Removal, RemovalError};
@@ -91,7 +92,8 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
         later: Vec::new(),
         residue: residue(&[]),
     };
-    let Some(first) = first_setup(a, &mut proposal) else {
+    let mut refused = Refused::default();
+    let Some(first) = first_setup(a, &mut proposal, &mut refused) else {
         proposal
             .why
             .push("no direction the planar faces face gives a removal".into());
@@ -105,8 +107,12 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
     proposal.residue = residue(&removals);
     while proposal.residue.volume_mm3 > tol && removals.len() < MOST_SETUPS {
         let before = proposal.residue.volume_mm3;
-        let Some((r, left)) = next_setup(a, &mut removals, &mut proposal.later, (before, worth))
-        else {
+        let Some((r, left)) = next_setup(
+            a,
+            (&mut removals, &mut refused),
+            &mut proposal.later,
+            (before, worth),
+        ) else {
             break;
         };
         let up = clean(&r.frame.z);
@@ -132,14 +138,18 @@ pub fn propose(a: &PartAnalysis) -> (Proposal, Vec<Removal>) {
 /// exact removal reaches the most (to rounding; then the larger face on
 /// the table); if the removal refuses them all, the next candidates in
 /// turn. Those it refuses say why.
-fn first_setup(a: &PartAnalysis, proposal: &mut Proposal) -> Option<Removal> {
+fn first_setup(
+    a: &PartAnalysis,
+    proposal: &mut Proposal,
+    refused: &mut Refused,
+) -> Option<Removal> {
     let tried = proposal.candidates.len();
     let mut from = 0;
     while from < tried {
         let group = near_best(&proposal.candidates[from..]);
         let mut best: Option<(f64, f64, Removal)> = None;
         for c in &mut proposal.candidates[from..from + group] {
-            match crate::choice::removal_along(a, Vector3::from(c.up)) {
+            match refused.removal_along(a, Vector3::from(c.up)) {
                 Err(why) => c.refused = Some(why),
                 Ok(r) => {
                     let reached: f64 = r
@@ -206,6 +216,28 @@ fn left_text(residue: &Residue, tol: f64) -> String {
     }
 }
 
+/// The directions the removal refused, and why. The removal along a
+/// direction depends on the part and the direction alone, so one refused
+/// is refused again when a later set-up's candidates bring it back (NIST
+/// FTC 07: a direction 1° off −Z, 6.3 s each time).
+#[derive(Default)]
+struct Refused(HashMap<[u64; 3], String>);
+
+impl Refused {
+    /// [`crate::choice::removal_along`], or the reason it gave before.
+    fn removal_along(&mut self, a: &PartAnalysis, up: Vector3) -> Result<Removal, String> {
+        let key = [up.x.to_bits(), up.y.to_bits(), up.z.to_bits()];
+        if let Some(why) = self.0.get(&key) {
+            return Err(why.clone());
+        }
+        let made = crate::choice::removal_along(a, up);
+        if let Err(why) = &made {
+            self.0.insert(key, why.clone());
+        }
+        made
+    }
+}
+
 /// Exact removals tried for one set-up, at most: the candidates best on
 /// their height maps first, until one takes more than the tolerance.
 const MOST_EXACT_TRIES: usize = 3;
@@ -216,7 +248,7 @@ const MOST_EXACT_TRIES: usize = 3;
 /// than `worth` of the `before` mm³ left.
 fn next_setup(
     a: &PartAnalysis,
-    removals: &mut Vec<Removal>,
+    (removals, refused): (&mut Vec<Removal>, &mut Refused),
     later: &mut Vec<LaterCandidate>,
     (before, worth): (f64, f64),
 ) -> Option<(Removal, Residue)> {
@@ -238,7 +270,7 @@ fn next_setup(
         .collect();
     ranked.sort_by(|x, y| x.0.total_cmp(&y.0));
     for (_, d) in ranked.into_iter().take(MOST_EXACT_TRIES) {
-        let r = match crate::choice::removal_along(a, d) {
+        let r = match refused.removal_along(a, d) {
             Ok(r) => r,
             Err(why) => {
                 if let Some(c) = later.iter_mut().rev().find(|c| c.up == clean(&d)) {

@@ -1,0 +1,117 @@
+//! A removal cut into bands after one made without them
+//! (`Removal::with_bands`, what the plan does after the proposal) is the
+//! removal made with the bands from the start: the same cells, bit for
+//! bit, the same covers over each, the same bands and blocks; turned
+//! parts too. It refuses a removal that has bands already and another
+//! stock.
+
+mod common;
+
+use geo::{Coord, LineString, MultiPolygon, Polygon, Rect};
+use thinwall_analysis::{PartAnalysis, Setup};
+use thinwall_brep::Part;
+use thinwall_removal::{frame_of, Removal, StockShape};
+
+/// Exact faces, cylinders with holes, free-form faces taken as triangles,
+/// and turned copies.
+const PARTS: [&str; 5] = [
+    "ops/pocket_islands.step",
+    "curved/frame_r400_holes.step",
+    "curved/frame_r400_holes_turned.step",
+    "bulges/bulges_1.step",
+    "bulges/bulges_3.step",
+];
+
+fn read(name: &str) -> Part {
+    let path = common::root().join("fixtures").join(name);
+    thinwall_step::read_file(&path).unwrap().0
+}
+
+fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Polygon<f64> {
+    Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 }).to_polygon()
+}
+
+/// Bands over the stock's footprint `lo`–`hi`: its left third, a strip
+/// across its middle, and a disc about its centre (a 48-gon).
+fn bands(lo: [f64; 3], hi: [f64; 3]) -> Vec<MultiPolygon<f64>> {
+    let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
+    let c = [lo[0] + 0.5 * w, lo[1] + 0.5 * h];
+    let r = 0.3 * w.min(h);
+    let disc: LineString<f64> = (0..48)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 48.0;
+            (c[0] + r * t.cos(), c[1] + r * t.sin())
+        })
+        .collect();
+    vec![
+        MultiPolygon::new(vec![rect(lo[0], lo[1], lo[0] + w / 3.0, hi[1])]),
+        MultiPolygon::new(vec![rect(lo[0], c[1] - 0.1 * h, hi[0], c[1] + 0.1 * h)]),
+        MultiPolygon::new(vec![Polygon::new(disc, vec![])]),
+    ]
+}
+
+fn same(a: &Removal, b: &Removal, what: &str) {
+    assert_eq!(a.cells.len(), b.cells.len(), "{what}: cells");
+    for (k, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
+        assert_eq!(x.poly, y.poly, "{what}: cell {k}'s polygon");
+        assert_eq!(x.covers, y.covers, "{what}: cell {k}'s covers");
+        assert_eq!(
+            x.area.to_bits(),
+            y.area.to_bits(),
+            "{what}: cell {k}'s area"
+        );
+    }
+    assert_eq!(a.cell_bands, b.cell_bands, "{what}: bands");
+    assert_eq!(a.blocks.len(), b.blocks.len(), "{what}: blocks");
+    for (x, y) in a.blocks.iter().zip(&b.blocks) {
+        assert_eq!(
+            (x.cell, x.reachable, x.open_below, x.volume.to_bits()),
+            (y.cell, y.reachable, y.open_below, y.volume.to_bits()),
+            "{what}: a block"
+        );
+    }
+    assert_eq!(a.stock_volume.to_bits(), b.stock_volume.to_bits(), "{what}");
+    assert_eq!(a.part_volume.to_bits(), b.part_volume.to_bits(), "{what}");
+    assert_eq!(
+        a.sliver_volume.to_bits(),
+        b.sliver_volume.to_bits(),
+        "{what}"
+    );
+}
+
+#[test]
+fn bands_cut_after_are_bands_cut_from_the_start() {
+    for name in PARTS {
+        let part = read(name);
+        let a = PartAnalysis::new(&part, Setup::default());
+        let size = a.bounding_box().diagonal();
+        for up in [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]] {
+            let what = format!("{name} up {up:?}");
+            let (frame, lo, hi) = frame_of(&a, up.into());
+            let stock = StockShape::Block { lo, hi };
+            let bands = bands(lo, hi);
+            let Ok(plain) = Removal::new(&part, frame, &stock, &[], size) else {
+                // A direction the removal refuses is refused either way.
+                assert!(
+                    Removal::new(&part, frame, &stock, &bands, size).is_err(),
+                    "{what}"
+                );
+                continue;
+            };
+            let direct = Removal::new(&part, frame, &stock, &bands, size).unwrap();
+            let after = plain.with_bands(&part, &stock, &bands).unwrap().unwrap();
+            assert!(
+                direct.cells.len() > plain.cells.len(),
+                "{what}: the bands cut"
+            );
+            same(&direct, &after, &what);
+            // Once banded, or for another block, it starts afresh.
+            assert!(after.with_bands(&part, &stock, &bands).is_none(), "{what}");
+            let taller = StockShape::Block {
+                lo,
+                hi: [hi[0], hi[1], hi[2] + 1.0],
+            };
+            assert!(plain.with_bands(&part, &taller, &bands).is_none(), "{what}");
+        }
+    }
+}
