@@ -46,7 +46,7 @@ pub fn removal_plan(
         ..Default::default()
     };
     let reused = this
-        .filter(|t| t.frame == frame && t.size == size)
+        .filter(|t| same_bits(&t.frame, &frame) && t.size.to_bits() == size.to_bits())
         .and_then(|t| t.with_bands(part, &stock, &bands));
     let made = reused.unwrap_or_else(|| Removal::new(part, frame, &stock, &bands, size));
     let mut r = match made.and_then(Removal::checked) {
@@ -143,4 +143,12 @@ fn footprint(c: &[Vector3], ring: [usize; 4]) -> MultiPolygon<f64> {
     pts.push(pts[0]);
     let poly = Polygon::new(LineString::new(pts), vec![]).orient(geo::orient::Direction::Default);
     MultiPolygon::new(vec![poly])
+}
+
+/// Two frames the same bit for bit (a zero's sign too: a removal made in
+/// one is then the other's, down to `-0.0` in its output).
+fn same_bits(a: &Frame, b: &Frame) -> bool {
+    let bits =
+        |f: &Frame| [f.origin.coords, f.x, f.y, f.z].map(|v| [v.x, v.y, v.z].map(f64::to_bits));
+    bits(a) == bits(b)
 }
