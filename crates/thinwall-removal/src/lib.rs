@@ -618,8 +618,11 @@ impl Removal {
         stock: &StockShape,
         bands: &[MultiPolygon<f64>],
     ) -> Option<Result<Self, RemovalError>> {
-        let same_block =
-            matches!(stock, StockShape::Block { lo, hi } if self.block == Some((*lo, *hi)));
+        // The same corners bit for bit (a zero's sign too, which would
+        // show in the cells' coordinates).
+        let bits = |c: &[f64; 3]| c.map(f64::to_bits);
+        let same_block = matches!((stock, self.block), (StockShape::Block { lo, hi }, Some((l, h)))
+            if bits(lo) == bits(&l) && bits(hi) == bits(&h));
         if self.banded || !same_block {
             return None;
         }
