@@ -12,10 +12,13 @@ use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::Part;
 use thinwall_removal::{frame_of, Removal, StockShape};
 
-/// Exact faces, cylinders with holes, free-form faces taken as triangles,
-/// and turned copies.
-const PARTS: [&str; 5] = [
+/// Exact faces, pockets on both sides of a web with corner radii and floor
+/// fillets, holes, cylinders with holes, free-form faces taken as
+/// triangles, and turned copies.
+const PARTS: [&str; 7] = [
     "ops/pocket_islands.step",
+    "pockets/pockets_2.step",
+    "holes/holes_2.step",
     "curved/frame_r400_holes.step",
     "curved/frame_r400_holes_turned.step",
     "bulges/bulges_1.step",

@@ -419,14 +419,14 @@ pub(crate) fn tools_for(
 ) -> Vec<Vec<FieldTools>> {
     let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
     let mut distinct: Vec<&CutterField> = Vec::new();
-    let slots: Vec<Vec<Result<usize, usize>>> = layers
+    let slots: Vec<Vec<Slot>> = layers
         .iter()
         .map(|l| {
             l.fields
                 .iter()
                 .map(|f| match drilled_by(f, l, holes, tol) {
-                    Some(h) => Err(h),
-                    None => Ok(*seen.entry(field_key(f)).or_insert_with(|| {
+                    Some(h) => Slot::Drilled(h),
+                    None => Slot::Opened(*seen.entry(field_key(f)).or_insert_with(|| {
                         distinct.push(f);
                         distinct.len() - 1
                     })),
@@ -440,11 +440,18 @@ pub(crate) fn tools_for(
         slots[k]
             .iter()
             .map(|slot| match *slot {
-                Err(h) => FieldTools::drilled(&holes[h].id),
-                Ok(i) => opened[i].on(&layers[k].floor_region, mills),
+                Slot::Drilled(h) => FieldTools::drilled(&holes[h].id),
+                Slot::Opened(i) => opened[i].on(&layers[k].floor_region),
             })
             .collect()
     })
+}
+
+/// What takes a field of a layer: a hole's drill (its index), or the
+/// mills as they open a distinct field (its index among them).
+enum Slot {
+    Drilled(usize),
+    Opened(usize),
 }
 
 /// A field's contours, bit for bit: its points and edge kinds, contour

@@ -294,7 +294,7 @@ pub fn select(
     floor: &MultiPolygon<f64>,
     min_share_mm2: f64,
 ) -> FieldTools {
-    open(field, mills, min_share_mm2).on(floor, mills)
+    open(field, mills, min_share_mm2).on(floor)
 }
 
 /// What the mills clear of one field, whatever lies under it: the part of
@@ -303,6 +303,8 @@ pub fn select(
 pub struct Opened {
     region: MultiPolygon<f64>,
     tiny: f64,
+    /// The smallest mill's polygon noise: a floor under it is no floor.
+    floor_noise: f64,
     side: bool,
     entry: Entry,
     /// Each tool's share (its floor area not yet known) and its opening.
@@ -361,6 +363,7 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
     let worth = rest_mm2 > tiny.max(noise(largest));
     Opened {
         tiny,
+        floor_noise: mills.last().map_or(0.0, |t| noise(t.diameter_mm)),
         side: !s.part.is_empty(),
         entry: if s.blank.is_empty() {
             Entry::Ramp
@@ -389,7 +392,7 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
 impl Opened {
     /// The field's tools over `floor` (the part's floors at the layer's
     /// bottom, x, y): each share's floor area and the bottom adjacency.
-    pub fn on(&self, floor: &MultiPolygon<f64>, mills: &[&CuttingTool]) -> FieldTools {
+    pub fn on(&self, floor: &MultiPolygon<f64>) -> FieldTools {
         let floor = intersection(&self.region, floor);
         let over = |c: &MultiPolygon<f64>| {
             if c.0.is_empty() || floor.0.is_empty() {
@@ -415,8 +418,7 @@ impl Opened {
         // A floor that only touches the field along an edge leaves a
         // sliver of the booleans' rounding: under the smallest mill's
         // polygon noise it is no floor.
-        let floor_noise = mills.last().map_or(0.0, |t| noise(t.diameter_mm));
-        let bottom = floor.unsigned_area() > self.tiny.max(floor_noise);
+        let bottom = floor.unsigned_area() > self.tiny.max(self.floor_noise);
         FieldTools {
             adjacency: Adjacency::of(self.side, bottom),
             entry: self.entry,
@@ -546,8 +548,9 @@ mod tests {
     }
 
     /// One opening serves every layer of the field: over no floor, half
-    /// a floor and the whole, the same shares with their floor areas and
-    /// bottom adjacency as selecting afresh.
+    /// a floor and the whole, each share's floor area and the bottom
+    /// adjacency follow the floor (over the whole floor, every share lies
+    /// over it).
     #[test]
     fn an_opened_field_over_any_floor_is_the_field_selected_over_it() {
         let lib = ToolLibrary::default_tools();
@@ -570,8 +573,7 @@ mod tests {
         ];
         let mut floor_areas = Vec::new();
         for floor in &floors {
-            let on = opened.on(floor, &mills);
-            assert_eq!(on, select(&f, &mills, floor, 0.0));
+            let on = opened.on(floor);
             assert_eq!(on.adjacency.bottom(), !floor.0.is_empty());
             floor_areas.push(on.shares.iter().map(|s| s.floor_mm2).sum::<f64>());
         }
@@ -586,5 +588,10 @@ mod tests {
             (floor_areas[2] - 3600.0 + opened.rest_mm2).abs() < 1e-6,
             "{floor_areas:?}"
         );
+        let whole = opened.on(&floors[2]);
+        assert!(whole.shares.len() > 1);
+        for s in &whole.shares {
+            assert!((s.floor_mm2 - s.cleared_mm2).abs() < 1e-6, "{s:?}");
+        }
     }
 }

@@ -137,15 +137,8 @@ pub struct Removal {
     pub vertical: Vec<pieces::Vertical>,
     /// Vertical faces by grid square, to find those near a point.
     vertical_grid: Grid,
-    /// The block stock's bottom and top (none for a given solid), mm.
-    bottom: Option<f64>,
-    top: Option<f64>,
-    /// The rectangle the arrangement started from, the block stock's
-    /// corners (none for a given solid), and whether bands cut the cells:
-    /// what [`Removal::with_bands`] checks and starts from.
-    start: Rect<f64>,
+    /// The block stock's corners `lo`, `hi` (none for a given solid), mm.
     block: Option<([f64; 3], [f64; 3])>,
-    banded: bool,
     /// Removal over cells narrower than [`SLIVER_WIDTH`] (noise of the
     /// booleans where edges coincide up to rounding) and over cells between
     /// a vertical face's edges that the file puts apart (narrower than
@@ -561,7 +554,6 @@ struct Arranged<'s, 'p> {
     stock_pieces: Vec<Piece>,
     start: Rect<f64>,
     cells: Vec<cells::Cell>,
-    banded: bool,
 }
 
 /// Cells below this area (noise of the booleans) are dropped, mm².
@@ -600,7 +592,6 @@ impl Removal {
                 stock_pieces,
                 start,
                 cells,
-                banded: !bands.is_empty(),
             },
         )
     }
@@ -623,11 +614,16 @@ impl Removal {
         let bits = |c: &[f64; 3]| c.map(f64::to_bits);
         let same_block = matches!((stock, self.block), (StockShape::Block { lo, hi }, Some((l, h)))
             if bits(lo) == bits(&l) && bits(hi) == bits(&h));
-        if self.banded || !same_block {
+        // Covers past the pieces' are bands this removal was cut by.
+        let first = self.part_pieces.len() + self.stock_pieces.len();
+        let banded = self
+            .cells
+            .iter()
+            .any(|c| c.covers.iter().any(|&i| i >= first));
+        if banded || !same_block {
             return None;
         }
         let covers = covers(self.part_pieces.iter().chain(&self.stock_pieces), bands);
-        let first = self.part_pieces.len() + self.stock_pieces.len();
         let cells = arrange_on(self.cells.clone(), &covers, first, min_cell_area(self.size));
         Some(Self::columns(
             part,
@@ -638,9 +634,8 @@ impl Removal {
                 meshed: self.meshed.clone(),
                 part_pieces: self.part_pieces.clone(),
                 stock_pieces: self.stock_pieces.clone(),
-                start: self.start,
+                start: footprint(stock, std::iter::empty(), self.size),
                 cells,
-                banded: !bands.is_empty(),
             },
         ))
     }
@@ -657,7 +652,6 @@ impl Removal {
             stock_pieces,
             start,
             cells,
-            banded,
         } = x;
         let min_area = min_cell_area(size);
         let vertical = pieces::vertical_faces(part, &frame);
@@ -707,21 +701,17 @@ impl Removal {
             )
         });
         let vertical_grid = Grid::new(start, vertical.iter().map(|v| v.bbox), 1e-6 * size);
-        let (bottom, top, block) = match stock {
-            StockShape::Block { lo, hi } => (Some(lo[2]), Some(hi[2]), Some((*lo, *hi))),
-            StockShape::Solid(_) => (None, None, None),
+        let block = match stock {
+            StockShape::Block { lo, hi } => Some((*lo, *hi)),
+            StockShape::Solid(_) => None,
         };
         Ok(Self {
-            start,
             block,
-            banded,
             size,
             meshed,
             vertical_grid,
             sliver_volume,
             vertical,
-            bottom,
-            top,
             frame,
             part_pieces,
             stock_pieces,
@@ -767,7 +757,7 @@ impl Removal {
 
     /// The block stock's bottom height, mm (NaN for a given solid).
     pub fn stock_bottom(&self) -> f64 {
-        self.bottom.unwrap_or(f64::NAN)
+        self.block.map_or(f64::NAN, |(lo, _)| lo[2])
     }
 
     /// The axis (world, unit) of a bound that is a half cylinder.

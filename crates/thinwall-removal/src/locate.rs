@@ -78,9 +78,8 @@ impl<'r> Locator<'r> {
                 return Place::Block(bi);
             }
         }
-        if let Some(bottom) = r.bottom {
-            let top = r.top.unwrap_or(f64::INFINITY);
-            if l.z < bottom - tol || l.z > top + tol {
+        if let Some((lo, hi)) = r.block {
+            if l.z < lo[2] - tol || l.z > hi[2] + tol {
                 return Place::Outside;
             }
         }
