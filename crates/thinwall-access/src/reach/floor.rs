@@ -12,6 +12,7 @@
 pub use super::disk::{disk, grown};
 use super::obstacle::Obstacle;
 use super::scene::{clip_tagged, Scene};
+use super::window::Window;
 use super::{xy_bounds, Ctx, Judged};
 use geo::Rect;
 use geo::{Area, BoundingRect, Coord, MultiPolygon};
@@ -122,16 +123,24 @@ fn grown_obstacles(
             }
         }
     }
+    // Only material within both radii of the floor stops a position the
+    // floor is reached from.
+    let window = Window::of(region);
     obstacles
         .into_iter()
-        .map(|((face, holder), ob)| {
+        .filter_map(|((face, holder), mut ob)| {
+            let reach = if holder { big } else { r };
+            ob.retain(|corners| window.near(corners, reach + r));
+            if ob.is_empty() {
+                return None;
+            }
             let d = match (holder, ob.tessellated) {
                 (false, false) => &small_disk,
                 (false, true) => &small_tess,
                 (true, false) => &holder_disk,
                 (true, true) => &holder_tess,
             };
-            ((face, holder), ob.grown(d))
+            Some(((face, holder), ob.grown(d)))
         })
         .collect()
 }

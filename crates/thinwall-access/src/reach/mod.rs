@@ -31,6 +31,7 @@ pub mod scene;
 pub mod side;
 pub mod standing;
 pub mod walls;
+pub mod window;
 
 pub use largest::{largest_tool, SMALLEST_TOOL, TOOL_PRECISION};
 use scene::Scene;

@@ -87,6 +87,15 @@ impl Obstacle {
         });
     }
 
+    /// Keeps the pieces whose projected corners pass `keep`.
+    pub fn retain(&mut self, keep: impl Fn(&[[f64; 2]]) -> bool) {
+        self.pieces.retain(|p| keep(&p.corners));
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pieces.is_empty()
+    }
+
     /// The pieces grown by `disk` (convex, counter-clockwise, around the
     /// origin) and joined.
     pub fn grown(&self, disk: &[[f64; 2]]) -> MultiPolygon<f64> {

@@ -164,12 +164,7 @@ pub fn judge_some(
             [p[0] + r * n[0] / level, p[1] + r * n[1] / level, p[2]]
         };
         stops.clear();
-        point_stops(scene, centre, tool, ctx.touch_curved, |k, holder| {
-            let key = (scene.tris[k as usize].face, holder);
-            if !stops.contains(&key) {
-                stops.push(key);
-            }
-        });
+        point_stops(scene, centre, tool, ctx.touch_curved, &mut stops);
         if stops.is_empty() {
             out.reached += area;
             continue;

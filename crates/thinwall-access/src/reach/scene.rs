@@ -53,6 +53,8 @@ pub struct Scene {
     nx: usize,
     ny: usize,
     cells: Vec<Vec<u32>>,
+    /// Per triangle, the first cell it is filed in (column, row).
+    first: Vec<[usize; 2]>,
     /// The highest corner filed in each cell.
     cell_top: Vec<f64>,
 }
@@ -97,10 +99,12 @@ impl Scene {
             nx,
             ny,
             cells: vec![Vec::new(); nx * ny],
+            first: Vec::new(),
             cell_top: vec![f64::NEG_INFINITY; nx * ny],
         };
         for k in 0..scene.tris.len() {
             let (a, b) = scene.range(scene.tris[k].lo, scene.tris[k].hi);
+            scene.first.push(a);
             for j in a[1]..=b[1] {
                 for i in a[0]..=b[0] {
                     scene.cells[j * nx + i].push(k as u32);
@@ -177,7 +181,7 @@ impl Scene {
                     }
                     if t.hi[0] >= lo[0] && t.lo[0] <= hi[0] && t.hi[1] >= lo[1] && t.lo[1] <= hi[1]
                     {
-                        let (first, _) = self.range(t.lo, t.hi);
+                        let first = self.first[k as usize];
                         if first[0].max(a[0]) == i && first[1].max(a[1]) == j {
                             f(k);
                         }
@@ -355,17 +359,18 @@ pub fn blocked(
     }
 }
 
-/// The triangles a tool with its tip centre at `c` would cut into (as
-/// [`blocked`] tells at the line's point `c`), each told to `stop` with
-/// whether the holder (not the cutter) meets it: the cutter's within its
-/// radius, the holder's within its own among the triangles reaching above
-/// the cutting length (cells with nothing that high are skipped).
+/// The faces whose triangles a tool with its tip centre at `c` would cut
+/// into (as [`blocked`] tells at the line's point `c`), pushed on `stops`
+/// once each with whether the holder (not the cutter) meets them: the
+/// cutter's within its radius, the holder's within its own among the
+/// triangles reaching above the cutting length (cells with nothing that
+/// high are skipped). A face already in `stops` is not tested again.
 pub fn point_stops(
     scene: &Scene,
     c: [f64; 3],
     tool: &Tool,
     touch: f64,
-    mut stop: impl FnMut(u32, bool),
+    stops: &mut Vec<(u32, bool)>,
 ) {
     let h = c[2];
     let (r, big) = (0.5 * tool.diameter, 0.5 * tool.holder_diameter);
@@ -375,12 +380,12 @@ pub fn point_stops(
         let (a, b) = ([q[0] - rho, q[1] - rho], [q[0] + rho, q[1] + rho]);
         scene.for_near(a, b, lo, |k| {
             let t = &scene.tris[k as usize];
-            if t.lo[2] > hi {
+            if t.lo[2] > hi || stops.contains(&(t.face, holder)) {
                 return;
             }
             let (part, n) = clip(&t.p, lo, hi);
             if point_near_convex(q, &part[..n], rho - touch) {
-                stop(k, holder);
+                stops.push((t.face, holder));
             }
         });
     };
