@@ -3,7 +3,7 @@
 //!
 //! | engine | serves |
 //! |---|---|
-//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`, `wound_region`, `even_odd_region`) | a meshed face's region and a face's projection whose loops overlap (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
+//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`, `wound_region`, `even_odd_region`, `positive_region`) | a meshed face's region and a face's projection whose loops overlap (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
 //! | geo's `BooleanOps` (i_overlay 4.5 inside geo 0.33) | face regions from loops (`polygon.rs`), wall overlaps of the recognizers (`walls.rs`, `curved.rs`, `offset.rs`), the removal's pieces, cells and cuts (`thinwall-removal`), flank-milling zones (`thinwall-access/src/zones.rs`), the order of operations (`thinwall-ops/src/order.rs`): few operands, made by our own code, whose outputs the snapshots pin |
 //!
 //! Why two: geo 0.33 pins i_overlay 4.5, whose hole binding panics (an
@@ -79,6 +79,14 @@ pub fn wound_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
 /// projection, ring by ring exclusive or.
 pub fn even_odd_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
     filled(rings, FillRule::EvenOdd)
+}
+
+/// The region closed rings wind around positively (counter-clockwise, y
+/// up), as one shape: a stroke's convolution cycles
+/// (`thinwall_access::reach::stroke`), whose loops wind back where the
+/// stroke's side is concave.
+pub fn positive_region(rings: Vec<Vec<[f64; 2]>>) -> MultiPolygon<f64> {
+    filled(rings, FillRule::Positive)
 }
 
 /// The region closed rings fill, as one shape, by `rule`.
@@ -174,6 +182,27 @@ mod tests {
             pts.reverse();
         }
         Polygon::new(LineString::from(pts), vec![])
+    }
+
+    /// Counter-clockwise rings wind positively, clockwise ones negatively:
+    /// a square inside a larger one, each way round.
+    #[test]
+    fn positive_is_counter_clockwise() {
+        let ring = |x: f64, s: f64, ccw: bool| {
+            let mut v = vec![[x, x], [x + s, x], [x + s, x + s], [x, x + s]];
+            if !ccw {
+                v.reverse();
+            }
+            v
+        };
+        let area = |rings| positive_region(rings).unsigned_area();
+        assert!((area(vec![ring(0.0, 4.0, true)]) - 16.0).abs() < 1e-12);
+        assert_eq!(area(vec![ring(0.0, 4.0, false)]), 0.0);
+        // Wound twice and once: all of it; once less the inner: a frame.
+        let both = area(vec![ring(0.0, 4.0, true), ring(1.0, 1.0, true)]);
+        assert!((both - 16.0).abs() < 1e-12);
+        let frame = area(vec![ring(0.0, 4.0, true), ring(1.0, 1.0, false)]);
+        assert!((frame - 15.0).abs() < 1e-12);
     }
 
     /// Tiles of either orientation: a 20 × 20 grid of triangles over a

@@ -247,6 +247,47 @@ pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
         .unwrap_or(0.0)
 }
 
+/// `region` without zero-width spikes: a corner where its ring turns
+/// straight back (a boolean's antenna along an edge it touched) is
+/// dropped, with the repeat it leaves, until none is left. The area is
+/// unchanged; a spike would cut a circle inscribed in the region short.
+pub fn without_spikes(region: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+    let clean = |ring: &LineString<f64>| -> LineString<f64> {
+        let mut pts: Vec<Coord<f64>> = ring.coords().copied().collect();
+        if pts.len() > 1 && pts.first() == pts.last() {
+            pts.pop();
+        }
+        let mut k = 0;
+        while pts.len() >= 3 && k < pts.len() {
+            let n = pts.len();
+            let (a, b, c) = (pts[(k + n - 1) % n], pts[k], pts[(k + 1) % n]);
+            let (u, v) = (b - a, c - b);
+            let cross = u.x * v.y - u.y * v.x;
+            let dot = u.x * v.x + u.y * v.y;
+            let scale = u.x.hypot(u.y) * v.x.hypot(v.y);
+            if b == a || (dot < 0.0 && cross.abs() <= 1e-9 * scale) {
+                pts.remove(k);
+                k = k.saturating_sub(1);
+            } else {
+                k += 1;
+            }
+        }
+        LineString::new(pts)
+    };
+    MultiPolygon::new(
+        region
+            .iter()
+            .map(|p| {
+                Polygon::new(
+                    clean(p.exterior()),
+                    p.interiors().iter().map(clean).collect(),
+                )
+            })
+            .filter(|p| p.exterior().0.len() >= 3)
+            .collect(),
+    )
+}
+
 /// Radius of the largest circle inside `region` (approximate: a grid
 /// search refined around the best point of each of its pieces), mm. Piece
 /// by piece: one grid over pieces spread far apart (a rest of slivers
@@ -528,6 +569,38 @@ pub fn beyond_rounding(common: &MultiPolygon<f64>, lin: f64, min_area: f64) -> b
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A 10 × 4 rectangle with an antenna (through a middle corner) from
+    /// its left side to near its right: the same area, the antenna gone
+    /// (a straight corner kept),
+    /// and the inscribed circle the rectangle's again.
+    #[test]
+    fn a_spike_is_dropped() {
+        let ring = vec![
+            (0.0, 0.0),
+            (10.0, 0.0),
+            (10.0, 4.0),
+            (0.0, 4.0),
+            (0.0, 2.0),
+            (5.0, 2.0),
+            (9.0, 2.0),
+            (5.0, 2.0),
+            (0.0, 2.0),
+            (0.0, 0.0),
+        ];
+        let spiky = MultiPolygon::new(vec![Polygon::new(LineString::from(ring), vec![])]);
+        let clean = without_spikes(&spiky);
+        assert!((clean.unsigned_area() - 40.0).abs() < 1e-12);
+        // Four corners, the straight one at (0, 2) and the closing repeat.
+        assert_eq!(
+            clean.0[0].exterior().0.len(),
+            6,
+            "{:?}",
+            clean.0[0].exterior()
+        );
+        assert!(inscribed_radius(&spiky) < 1.5);
+        assert!((inscribed_radius(&clean) - 2.0).abs() < 1e-3);
+    }
 
     fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> MultiPolygon<f64> {
         MultiPolygon::new(vec![Polygon::new(

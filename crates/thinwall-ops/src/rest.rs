@@ -18,8 +18,9 @@ use crate::layers::{CutterField, EdgeKind};
 use crate::tools::CuttingTool;
 use geo::{Area, MultiPolygon};
 use serde::Serialize;
-use thinwall_access::reach::floor::{disk, grown};
-use thinwall_analysis::boolean::{difference, intersection, union, union_all};
+use thinwall_access::reach::floor::{disk, opened};
+use thinwall_access::reach::stroke::stroked;
+use thinwall_analysis::boolean::{difference, intersection, union};
 
 /// One tool's share of a field, and its regions (Popma §4.3.4): the
 /// three add up to `cleared_mm2`.
@@ -141,21 +142,21 @@ impl FieldTools {
     }
 }
 
-/// The field as a polygon, and its part and blank edges as segments.
+/// The field as a polygon, and its part and blank contours as chains.
 struct Shape {
     region: MultiPolygon<f64>,
-    part: Vec<[[f64; 2]; 2]>,
-    blank: Vec<[[f64; 2]; 2]>,
+    part: Vec<Vec<[f64; 2]>>,
+    blank: Vec<Vec<[f64; 2]>>,
 }
 
 fn shape(f: &CutterField) -> Shape {
     let mut part = Vec::new();
     let mut blank = Vec::new();
     for c in std::iter::once(&f.outer).chain(&f.islands) {
-        for (seg, kind) in straight_runs(&c.points, &c.edges) {
+        for (chain, kind) in chains(&c.points, &c.edges) {
             match kind {
-                EdgeKind::Part => part.push(seg),
-                EdgeKind::Blank => blank.push(seg),
+                EdgeKind::Part => part.push(chain),
+                EdgeKind::Blank => blank.push(chain),
             }
         }
     }
@@ -166,35 +167,32 @@ fn shape(f: &CutterField) -> Shape {
     }
 }
 
-/// A closed contour's edges with runs of collinear edges of one kind
-/// joined (cell boundaries split a straight contour into many edges; each
-/// grown edge costs a boolean): (segment, kind).
-fn straight_runs(points: &[[f64; 2]], kinds: &[EdgeKind]) -> Vec<([[f64; 2]; 2], EdgeKind)> {
+/// A closed contour's edges (`kinds[k]`: from corner k to k + 1) as
+/// chains of one kind, each a maximal run of consecutive edges; a contour
+/// of one kind is one chain, closed (its first corner repeated).
+fn chains(points: &[[f64; 2]], kinds: &[EdgeKind]) -> Vec<(Vec<[f64; 2]>, EdgeKind)> {
     let n = points.len();
     if n < 2 {
         return Vec::new();
     }
-    let turns = |k: usize| {
-        // Whether the contour turns (or changes kind) at point k.
-        let (a, b, c) = (points[(k + n - 1) % n], points[k], points[(k + 1) % n]);
-        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
-        let cross = u[0] * v[1] - u[1] * v[0];
-        let dot = u[0] * v[0] + u[1] * v[1];
-        let scale = u[0].hypot(u[1]) * v[0].hypot(v[1]);
-        kinds[(k + n - 1) % n] != kinds[k] || cross.abs() > 1e-9 * scale || dot <= 0.0
+    let Some(start) = (0..n).find(|&k| kinds[k] != kinds[(k + n - 1) % n]) else {
+        let mut ring = points.to_vec();
+        ring.push(points[0]);
+        return vec![(ring, kinds[0])];
     };
-    let corners: Vec<usize> = (0..n).filter(|&k| turns(k)).collect();
-    if corners.is_empty() {
-        return (0..n)
-            .map(|k| ([points[k], points[(k + 1) % n]], kinds[k]))
-            .collect();
+    let mut out = Vec::new();
+    let mut chain = vec![points[start]];
+    for i in 0..n {
+        let k = (start + i) % n;
+        chain.push(points[(k + 1) % n]);
+        if i + 1 == n || kinds[(k + 1) % n] != kinds[k] {
+            out.push((
+                std::mem::replace(&mut chain, vec![points[(k + 1) % n]]),
+                kinds[k],
+            ));
+        }
     }
-    (0..corners.len())
-        .map(|i| {
-            let (a, b) = (corners[i], corners[(i + 1) % corners.len()]);
-            ([points[a], points[b]], kinds[a])
-        })
-        .collect()
+    out
 }
 
 /// Where a tool of radius `r` clears the field: its centre anywhere in
@@ -202,32 +200,16 @@ fn straight_runs(points: &[[f64; 2]], kinds: &[EdgeKind]) -> Vec<([[f64; 2]; 2],
 /// contour; the positions grown back by `r`, within the field.
 fn cleared(s: &Shape, r: f64) -> MultiPolygon<f64> {
     let d = disk(r);
-    let grow = |segs: &[[[f64; 2]; 2]]| -> Vec<MultiPolygon<f64>> {
-        segs.iter()
-            .filter_map(|s| grown(s, &d))
-            .map(|p| MultiPolygon::new(vec![p]))
-            .collect()
+    let domain = if s.blank.is_empty() {
+        s.region.clone()
+    } else {
+        union(&s.region, &stroked(&s.blank, &d))
     };
-    let mut domain = grow(&s.blank);
-    domain.push(s.region.clone());
-    let free = difference(&union_all(domain), &union_all(grow(&s.part)));
+    let free = difference(&domain, &stroked(&s.part, &d));
     if free.unsigned_area() <= 0.0 {
         return MultiPolygon::new(vec![]);
     }
-    let mut pieces = vec![free.clone()];
-    for p in &free {
-        for ring in std::iter::once(p.exterior()).chain(p.interiors()) {
-            let mut pts: Vec<[f64; 2]> = ring.coords().map(|c| [c.x, c.y]).collect();
-            pts.pop();
-            let kinds = vec![EdgeKind::Part; pts.len()];
-            for (seg, _) in straight_runs(&pts, &kinds) {
-                if let Some(g) = grown(&seg, &d) {
-                    pieces.push(MultiPolygon::new(vec![g]));
-                }
-            }
-        }
-    }
-    intersection(&s.region, &union_all(pieces))
+    intersection(&s.region, &opened(&free, &d))
 }
 
 /// The regions of tool `t`'s share (Popma §4.3.4), what its opening `c`
@@ -249,14 +231,7 @@ fn regions(
     done: &MultiPolygon<f64>,
     t: &CuttingTool,
 ) -> (f64, f64) {
-    let band = disk(t.finish_radial_depth_mm);
-    let along: Vec<MultiPolygon<f64>> = s
-        .part
-        .iter()
-        .filter_map(|seg| grown(seg, &band))
-        .map(|p| MultiPolygon::new(vec![p]))
-        .collect();
-    let u = union_all(along);
+    let u = stroked(&s.part, &disk(t.finish_radial_depth_mm));
     let wide = cleared(s, 0.5 * (t.diameter_mm + t.radial_depth_mm));
     let v = union(&u, &wide);
     let within = |m: &MultiPolygon<f64>, x: &MultiPolygon<f64>| {
@@ -351,7 +326,7 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
     }
     // Measured on the difference itself: the layer check (cleared + rest
     // = section) then compares two booleans, not one number with itself.
-    let rest = difference(&s.region, &done);
+    let rest = thinwall_analysis::polygon::without_spikes(&difference(&s.region, &done));
     let rest_mm2 = rest.unsigned_area();
     // Less than the disks' polygon error: no rest worth a word (a field
     // no tool enters: the smallest tool's).
@@ -378,8 +353,11 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
         } else {
             0.0
         },
+        // Pieces of no area (the booleans' slivers along a contour) are
+        // no rest.
         rest: if worth {
             rest.iter()
+                .filter(|p| p.unsigned_area() > tiny)
                 .map(|p| p.exterior().coords().map(|c| [c.x, c.y]).collect())
                 .collect()
         } else {

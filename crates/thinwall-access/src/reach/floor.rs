@@ -12,12 +12,13 @@
 pub use super::disk::{disk, grown};
 use super::obstacle::Obstacle;
 use super::scene::{clip_tagged, Scene};
+use super::stroke::stroked;
 use super::window::Window;
 use super::{xy_bounds, Ctx, Judged};
 use geo::Rect;
 use geo::{Area, BoundingRect, Coord, MultiPolygon};
 use std::collections::BTreeMap;
-use thinwall_analysis::boolean::{difference, intersection, union_all};
+use thinwall_analysis::boolean::{difference, intersection, union, union_all};
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 
@@ -146,19 +147,14 @@ fn grown_obstacles(
 }
 
 /// The positions `free` grown by `disk`: the points the tool's end covers
-/// from them (free positions, and each edge of their outline grown).
-fn opened(free: &MultiPolygon<f64>, disk: &[[f64; 2]]) -> MultiPolygon<f64> {
-    let mut pieces = vec![free.clone()];
-    for poly in free {
-        for ring in std::iter::once(poly.exterior()).chain(poly.interiors()) {
-            for l in ring.lines() {
-                if let Some(p) = grown(&[[l.start.x, l.start.y], [l.end.x, l.end.y]], disk) {
-                    pieces.push(MultiPolygon::new(vec![p]));
-                }
-            }
-        }
-    }
-    union_all(pieces)
+/// from them (free positions, and their outline grown).
+pub fn opened(free: &MultiPolygon<f64>, disk: &[[f64; 2]]) -> MultiPolygon<f64> {
+    let rings: Vec<Vec<[f64; 2]>> = free
+        .iter()
+        .flat_map(|poly| std::iter::once(poly.exterior()).chain(poly.interiors()))
+        .map(|ring| ring.coords().map(|c| [c.x, c.y]).collect())
+        .collect();
+    union(free, &stroked(&rings, disk))
 }
 
 /// Which obstacles stop the tool on the `lost` floor: every one whose

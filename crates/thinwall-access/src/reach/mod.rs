@@ -30,6 +30,7 @@ pub mod sampled;
 pub mod scene;
 pub mod side;
 pub mod standing;
+pub mod stroke;
 pub mod walls;
 pub mod window;
 

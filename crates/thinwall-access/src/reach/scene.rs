@@ -4,6 +4,8 @@
 
 use super::interval::{line_near_convex, point_near_convex, Span};
 use super::Tool;
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{RTree, AABB};
 use thinwall_brep::tessellate::Mesh;
 use thinwall_geom::{Frame, Point3, Vector3};
 
@@ -44,23 +46,21 @@ impl Tri {
     }
 }
 
-/// Triangles in the frame of one tool axis.
+type Boxes = RTree<GeomWithData<Rectangle<[f64; 3]>, u32>>;
+
+/// Triangles in the frame of one tool axis, in a two-level hierarchy of
+/// boxes (x, y, z in the frame): the faces', and each face's triangles'
+/// (R-trees, `rstar`). A query by footprint and height takes the faces
+/// whose box meets it, then their triangles; one that asks which faces
+/// stop a tool stops testing a face at its first triangle that does.
 pub struct Scene {
     pub frame: Frame,
     pub tris: Vec<Tri>,
-    origin: [f64; 2],
-    cell: f64,
-    nx: usize,
-    ny: usize,
-    cells: Vec<Vec<u32>>,
-    /// Per triangle, the first cell it is filed in (column, row).
-    first: Vec<[usize; 2]>,
-    /// The highest corner filed in each cell.
-    cell_top: Vec<f64>,
+    /// The boxes of the mesh's faces (index into the mesh's faces).
+    faces: Boxes,
+    /// Per face of the mesh, its triangles' boxes (index into `tris`).
+    face_tris: Vec<Boxes>,
 }
-
-/// Buckets per side of the footprint grid, at most.
-const GRID_CELLS: f64 = 96.0;
 
 impl Scene {
     /// `frame.z` is the tool axis; the origin near the part keeps the
@@ -68,7 +68,10 @@ impl Scene {
     /// only approximate them ([`Tri::tessellated`]).
     pub fn new(mesh: &Mesh, frame: Frame, curved: impl Fn(usize) -> bool) -> Self {
         let mut tris = Vec::new();
+        let mut face_tris = Vec::with_capacity(mesh.faces.len());
+        let mut face_boxes = Vec::new();
         for (k, fm) in mesh.faces.iter().enumerate() {
+            let first = tris.len();
             for t in &fm.triangles {
                 let p = t.map(|i| {
                     let l = frame.to_local(&mesh.points[i as usize]);
@@ -76,69 +79,30 @@ impl Scene {
                 });
                 tris.push(Tri::new(p, *t, k as u32, curved(k)));
             }
-        }
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for t in &tris {
-            for c in 0..2 {
-                lo[c] = lo[c].min(t.lo[c]);
-                hi[c] = hi[c].max(t.hi[c]);
+            let own = &tris[first..];
+            let boxes: Vec<_> = own
+                .iter()
+                .zip(first as u32..)
+                .map(|(t, i)| GeomWithData::new(Rectangle::from_corners(t.lo, t.hi), i))
+                .collect();
+            if let Some(t0) = own.first() {
+                let (mut lo, mut hi) = (t0.lo, t0.hi);
+                for t in own {
+                    for c in 0..3 {
+                        lo[c] = lo[c].min(t.lo[c]);
+                        hi[c] = hi[c].max(t.hi[c]);
+                    }
+                }
+                face_boxes.push(GeomWithData::new(Rectangle::from_corners(lo, hi), k as u32));
             }
+            face_tris.push(RTree::bulk_load(boxes));
         }
-        if tris.is_empty() {
-            lo = [0.0; 2];
-            hi = [1.0; 2];
-        }
-        let cell = ((hi[0] - lo[0]).max(hi[1] - lo[1]) / GRID_CELLS).max(1e-6);
-        let nx = ((hi[0] - lo[0]) / cell).floor() as usize + 1;
-        let ny = ((hi[1] - lo[1]) / cell).floor() as usize + 1;
-        let mut scene = Self {
+        Self {
             frame,
             tris,
-            origin: lo,
-            cell,
-            nx,
-            ny,
-            cells: vec![Vec::new(); nx * ny],
-            first: Vec::new(),
-            cell_top: vec![f64::NEG_INFINITY; nx * ny],
-        };
-        for k in 0..scene.tris.len() {
-            let (a, b) = scene.range(scene.tris[k].lo, scene.tris[k].hi);
-            scene.first.push(a);
-            for j in a[1]..=b[1] {
-                for i in a[0]..=b[0] {
-                    scene.cells[j * nx + i].push(k as u32);
-                    let top = &mut scene.cell_top[j * nx + i];
-                    *top = top.max(scene.tris[k].hi[2]);
-                }
-            }
+            faces: RTree::bulk_load(face_boxes),
+            face_tris,
         }
-        // Highest first: a query stops at the first triangle below it.
-        let tris = &scene.tris;
-        for cell in &mut scene.cells {
-            cell.sort_by(|&x, &y| {
-                tris[y as usize].hi[2]
-                    .total_cmp(&tris[x as usize].hi[2])
-                    .then(x.cmp(&y))
-            });
-        }
-        scene
-    }
-
-    fn range(&self, lo: [f64; 3], hi: [f64; 3]) -> ([usize; 2], [usize; 2]) {
-        let idx = |v: f64, o: f64, n: usize| -> usize {
-            (((v - o) / self.cell).floor().max(0.0) as usize).min(n - 1)
-        };
-        (
-            [
-                idx(lo[0], self.origin[0], self.nx),
-                idx(lo[1], self.origin[1], self.ny),
-            ],
-            [
-                idx(hi[0], self.origin[0], self.nx),
-                idx(hi[1], self.origin[1], self.ny),
-            ],
-        )
     }
 
     pub fn local(&self, p: &Point3) -> [f64; 3] {
@@ -155,40 +119,61 @@ impl Scene {
     /// is above `zmin`, each once, in index order.
     pub fn near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64) -> Vec<u32> {
         let mut out = Vec::new();
-        self.for_near(lo, hi, zmin, |k| out.push(k));
+        self.for_near(lo, hi, (zmin, f64::INFINITY), |k| out.push(k));
         out.sort_unstable();
         out
     }
 
-    /// Each triangle whose footprint meets the rectangle `lo..hi` and whose
-    /// top is above `zmin`, told to `f` once, in no order and without
-    /// gathering them: in the first cell of the rectangle it is filed in
-    /// (its lower corner's and the rectangle's, whichever is later). Cells
-    /// with nothing above `zmin` are skipped whole, and a cell's triangles
-    /// (highest first) only down to `zmin`.
-    pub fn for_near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64, mut f: impl FnMut(u32)) {
-        let (a, b) = self.range([lo[0], lo[1], 0.0], [hi[0], hi[1], 0.0]);
-        for j in a[1]..=b[1] {
-            for i in a[0]..=b[0] {
-                let cell = j * self.nx + i;
-                if self.cell_top[cell] <= zmin {
-                    continue;
-                }
-                for &k in &self.cells[cell] {
-                    let t = &self.tris[k as usize];
-                    if t.hi[2] <= zmin {
-                        break;
-                    }
-                    if t.hi[0] >= lo[0] && t.lo[0] <= hi[0] && t.hi[1] >= lo[1] && t.lo[1] <= hi[1]
-                    {
-                        let first = self.first[k as usize];
-                        if first[0].max(a[0]) == i && first[1].max(a[1]) == j {
-                            f(k);
-                        }
-                    }
+    /// Each triangle whose footprint meets the rectangle `lo..hi`, whose
+    /// top is above `zmin` and whose bottom is not above `zmax`, told to
+    /// `f` once, in no order and without gathering them.
+    pub fn for_near(
+        &self,
+        lo: [f64; 2],
+        hi: [f64; 2],
+        (zmin, zmax): (f64, f64),
+        mut f: impl FnMut(u32),
+    ) {
+        let envelope = Self::envelope(lo, hi, (zmin, zmax));
+        for face in self.faces.locate_in_envelope_intersecting(&envelope) {
+            for t in self.face_tris[face.data as usize].locate_in_envelope_intersecting(&envelope) {
+                if self.tris[t.data as usize].hi[2] > zmin {
+                    f(t.data);
                 }
             }
         }
+    }
+
+    /// The faces (mesh indices) whose box meets the rectangle `lo..hi`
+    /// between the heights (`zmin` exclusive, as [`Scene::for_near`]), and
+    /// whether `test` holds for one of their triangles there (each face's
+    /// triangles tested until one does), each told to `f` once, unless
+    /// `skip` says the face is already known.
+    pub fn faces_where(
+        &self,
+        lo: [f64; 2],
+        hi: [f64; 2],
+        (zmin, zmax): (f64, f64),
+        skip: impl Fn(u32) -> bool,
+        mut test: impl FnMut(u32) -> bool,
+        mut f: impl FnMut(u32),
+    ) {
+        let envelope = Self::envelope(lo, hi, (zmin, zmax));
+        for face in self.faces.locate_in_envelope_intersecting(&envelope) {
+            if skip(face.data) {
+                continue;
+            }
+            let hit = self.face_tris[face.data as usize]
+                .locate_in_envelope_intersecting(&envelope)
+                .any(|t| self.tris[t.data as usize].hi[2] > zmin && test(t.data));
+            if hit {
+                f(face.data);
+            }
+        }
+    }
+
+    fn envelope(lo: [f64; 2], hi: [f64; 2], (zmin, zmax): (f64, f64)) -> AABB<[f64; 3]> {
+        AABB::from_corners([lo[0], lo[1], zmin], [hi[0], hi[1], zmax.min(f64::MAX)])
     }
 
     /// The height of triangle `k`'s highest corner.
@@ -378,16 +363,22 @@ pub fn point_stops(
     let q = [c[0], c[1]];
     let mut near = |rho: f64, lo: f64, hi: f64, holder: bool| {
         let (a, b) = ([q[0] - rho, q[1] - rho], [q[0] + rho, q[1] + rho]);
-        scene.for_near(a, b, lo, |k| {
-            let t = &scene.tris[k as usize];
-            if t.lo[2] > hi || stops.contains(&(t.face, holder)) {
-                return;
-            }
-            let (part, n) = clip(&t.p, lo, hi);
-            if point_near_convex(q, &part[..n], rho - touch) {
-                stops.push((t.face, holder));
-            }
-        });
+        let known: Vec<u32> = stops
+            .iter()
+            .filter(|s| s.1 == holder)
+            .map(|s| s.0)
+            .collect();
+        scene.faces_where(
+            a,
+            b,
+            (lo, hi),
+            |face| known.contains(&face),
+            |k| {
+                let (part, n) = clip(&scene.tris[k as usize].p, lo, hi);
+                point_near_convex(q, &part[..n], rho - touch)
+            },
+            |face| stops.push((face, holder)),
+        );
     };
     near(r, h + touch, top, false);
     near(big, top + touch, f64::INFINITY, true);

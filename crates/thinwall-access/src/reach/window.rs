@@ -138,11 +138,15 @@ fn segment_distance(s: [[f64; 2]; 2], t: [[f64; 2]; 2]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use geo::{Coord, EuclideanDistance, LineString, Polygon};
+    use geo::{Coord, Distance, Euclidean, LineString, Polygon};
 
     fn poly(ring: &[[f64; 2]]) -> Polygon<f64> {
         Polygon::new(
-            LineString::from(ring.iter().map(|p| Coord { x: p[0], y: p[1] }).collect::<Vec<_>>()),
+            LineString::from(
+                ring.iter()
+                    .map(|p| Coord { x: p[0], y: p[1] })
+                    .collect::<Vec<_>>(),
+            ),
             vec![],
         )
     }
@@ -163,7 +167,9 @@ mod tests {
         let hole = [[3.0, 3.0], [3.0, 7.0], [7.0, 7.0], [7.0, 3.0]];
         let mut region = poly(&outer);
         region.interiors_push(LineString::from(
-            hole.iter().map(|p| Coord { x: p[0], y: p[1] }).collect::<Vec<_>>(),
+            hole.iter()
+                .map(|p| Coord { x: p[0], y: p[1] })
+                .collect::<Vec<_>>(),
         ));
         let multi = MultiPolygon::new(vec![region.clone()]);
         let w = Window::of(&multi);
@@ -184,13 +190,21 @@ mod tests {
                 .collect();
             let d = next() * 8.0;
             let truth = match corners.len() {
-                1 => geo::Point::new(corners[0][0], corners[0][1]).euclidean_distance(&multi),
-                2 => geo::Line::new(
-                    Coord { x: corners[0][0], y: corners[0][1] },
-                    Coord { x: corners[1][0], y: corners[1][1] },
-                )
-                .euclidean_distance(&multi),
-                _ => poly(&corners).euclidean_distance(&multi),
+                1 => Euclidean.distance(&geo::Point::new(corners[0][0], corners[0][1]), &multi),
+                2 => Euclidean.distance(
+                    &geo::Line::new(
+                        Coord {
+                            x: corners[0][0],
+                            y: corners[0][1],
+                        },
+                        Coord {
+                            x: corners[1][0],
+                            y: corners[1][1],
+                        },
+                    ),
+                    &multi,
+                ),
+                _ => Euclidean.distance(&poly(&corners), &multi),
             };
             if (truth - d).abs() < 1e-6 {
                 continue;
