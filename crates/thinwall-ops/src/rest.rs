@@ -12,7 +12,9 @@
 //!
 //! Disks are 128-gons with their corners on the circle
 //! ([`thinwall_access::reach::floor::disk`]): an area bounded by a tool's
-//! arc comes out within about 0.1 % of the circle's.
+//! arc comes out within about 0.1 % of the circle's. Contours are grown by
+//! them as strokes ([`thinwall_access::reach::stroke`]): each chain of one
+//! kind in one boolean, the same region as a capsule per edge.
 
 use crate::layers::{CutterField, EdgeKind};
 use crate::tools::CuttingTool;
