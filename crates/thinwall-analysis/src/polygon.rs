@@ -247,6 +247,18 @@ pub fn long_side(region: &MultiPolygon<f64>) -> f64 {
         .unwrap_or(0.0)
 }
 
+/// `region`'s pieces of more than `min_area`, [`without_spikes`]: a
+/// boolean's result as it is reported (slivers of no area along an edge
+/// two operands share are no piece).
+pub fn without_slivers(region: &MultiPolygon<f64>, min_area: f64) -> MultiPolygon<f64> {
+    let pieces = region
+        .iter()
+        .filter(|p| p.unsigned_area() > min_area)
+        .cloned()
+        .collect();
+    without_spikes(&MultiPolygon::new(pieces))
+}
+
 /// `region` without zero-width spikes: a corner where its ring turns
 /// straight back (a boolean's antenna along an edge it touched) is
 /// dropped, with the repeat it leaves, until none is left. The area is

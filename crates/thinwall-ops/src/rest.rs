@@ -23,6 +23,7 @@ use serde::Serialize;
 use thinwall_access::reach::floor::{disk, opened};
 use thinwall_access::reach::stroke::stroked;
 use thinwall_analysis::boolean::{difference, intersection, union};
+use thinwall_analysis::polygon::without_slivers;
 
 /// One tool's share of a field, and its regions (Popma §4.3.4): the
 /// three add up to `cleared_mm2`.
@@ -328,7 +329,7 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
     }
     // Measured on the difference itself: the layer check (cleared + rest
     // = section) then compares two booleans, not one number with itself.
-    let rest = thinwall_analysis::polygon::without_spikes(&difference(&s.region, &done));
+    let rest = difference(&s.region, &done);
     let rest_mm2 = rest.unsigned_area();
     // Less than the disks' polygon error: no rest worth a word (a field
     // no tool enters: the smallest tool's).
@@ -338,6 +339,9 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
         .or_else(|| mills.last().map(|t| t.diameter_mm))
         .unwrap_or(0.0);
     let worth = rest_mm2 > tiny.max(noise(largest));
+    // Slivers of no area along a contour and zero-width spikes are no
+    // rest, and would cut its inscribed width short.
+    let rest = without_slivers(&rest, tiny);
     Opened {
         tiny,
         floor_noise: mills.last().map_or(0.0, |t| noise(t.diameter_mm)),
@@ -355,11 +359,8 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
         } else {
             0.0
         },
-        // Pieces of no area (the booleans' slivers along a contour) are
-        // no rest.
         rest: if worth {
             rest.iter()
-                .filter(|p| p.unsigned_area() > tiny)
                 .map(|p| p.exterior().coords().map(|c| [c.x, c.y]).collect())
                 .collect()
         } else {

@@ -19,6 +19,7 @@ use geo::Rect;
 use geo::{Area, BoundingRect, Coord, MultiPolygon};
 use std::collections::BTreeMap;
 use thinwall_analysis::boolean::{difference, intersection, union, union_all};
+use thinwall_analysis::polygon::without_slivers;
 use thinwall_analysis::PlanarFace;
 use thinwall_geom::{Frame, Vector3};
 
@@ -51,7 +52,8 @@ pub fn judge(ctx: &Ctx, scene: &Scene, pf: &PlanarFace, own: u32, named: bool) -
     );
     let free = difference(&MultiPolygon::new(vec![frame_box.to_polygon()]), &stopped);
     let reached = intersection(&region, &opened(&free, &small_disk));
-    let lost = difference(&region, &reached);
+    // Slivers of no area along the floor's edges are nothing lost.
+    let lost = without_slivers(&difference(&region, &reached), 1e-9 * area);
     let mut out = Judged {
         area,
         reached: reached.unsigned_area().min(area),
