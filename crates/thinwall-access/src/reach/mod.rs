@@ -59,6 +59,17 @@ const TOUCH: f64 = 1e-9;
 /// longer than four times their width ([`sampled::Samples`]): what stops
 /// the tool changes over about its radius.
 const SAMPLE_SPACING: f64 = 0.25;
+/// Areas that differ by less than this are a tie (ordered by id then),
+/// mm²: symmetric blockers' lost areas differ in their last bits, which
+/// rounding decides.
+pub const AREA_TIE_MM2: f64 = 1e-6;
+
+/// An area's rank for ordering blockers, the worst first: equal within
+/// [`AREA_TIE_MM2`].
+pub fn area_rank(mm2: f64) -> i64 {
+    (mm2 / AREA_TIE_MM2).round() as i64
+}
+
 /// Ways round of the five-axis axes.
 const AZIMUTHS: usize = 12;
 
@@ -531,8 +542,8 @@ fn blockers_of(part: &thinwall_brep::Part, mesh: &Mesh, j: &Judged, area: f64) -
         .filter(|b| b.unreachable_mm2 > BLOCKER_SHARE * area)
         .collect();
     blocked_by.sort_by(|x, y| {
-        y.unreachable_mm2
-            .total_cmp(&x.unreachable_mm2)
+        area_rank(y.unreachable_mm2)
+            .cmp(&area_rank(x.unreachable_mm2))
             .then(x.face.cmp(&y.face))
             .then(x.by.cmp(&y.by))
     });
@@ -619,5 +630,20 @@ fn face_reach(
         },
         largest_tool_mm,
         note,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Areas a rounding apart rank alike (the id orders them then);
+    /// areas a tie apart do not.
+    #[test]
+    fn areas_within_rounding_tie() {
+        let a = 1149.709356783899;
+        assert_eq!(area_rank(a), area_rank(a * (1.0 + 1e-15)));
+        assert_eq!(area_rank(7.605424848141204), area_rank(7.605424848141203));
+        assert!(area_rank(a + 2.0 * AREA_TIE_MM2) > area_rank(a));
     }
 }

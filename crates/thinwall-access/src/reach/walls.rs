@@ -2,7 +2,7 @@
 //! whole, in a planner's words ("gap to R3 is 8.0 mm, narrower than the
 //! Ø12 tool").
 
-use super::{FaceReach, ToolPart, WHOLE_SHARE};
+use super::{area_rank, FaceReach, ToolPart, WHOLE_SHARE};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use thinwall_analysis::{FeatureId, PartAnalysis};
@@ -74,7 +74,11 @@ pub fn wall_sides(
             }
             let fraction = if area > 0.0 { reached / area } else { 1.0 };
             let mut worst: Vec<(FeatureId, Lost)> = lost.into_iter().collect();
-            worst.sort_by(|x, y| y.1 .0.total_cmp(&x.1 .0).then(x.0.cmp(&y.0)));
+            worst.sort_by(|x, y| {
+                area_rank(y.1 .0)
+                    .cmp(&area_rank(x.1 .0))
+                    .then(x.0.cmp(&y.0))
+            });
             let whole = fraction >= 1.0 - WHOLE_SHARE;
             let reason = (!whole).then(|| {
                 let head = format!(
