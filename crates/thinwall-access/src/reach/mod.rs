@@ -634,8 +634,19 @@ fn face_reach(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// Numbers in [0, 1) from `seed` (xorshift): the reach tests' random
+    /// shapes, the same on every run.
+    pub(crate) fn uniform(mut s: u64) -> impl FnMut() -> f64 {
+        move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
 
     /// Areas a rounding apart rank alike (the id orders them then);
     /// areas a tie apart do not.

@@ -147,13 +147,7 @@ mod tests {
     /// (areas within 1e-9, each less the other within 1e-9 of the area).
     #[test]
     fn a_stroke_is_the_union_of_its_capsules() {
-        let mut s = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = super::super::tests::uniform(0x9e37_79b9_7f4a_7c15_u64);
         for trial in 0..120 {
             let r = 0.05 + 6.0 * next() * next();
             let d = disk(r);
@@ -222,13 +216,7 @@ mod tests {
     /// shared thin-walled panel); the short way is right.
     #[test]
     fn a_straight_corner_within_rounding_takes_the_short_way() {
-        let mut s = 0x1234_5678_9abc_def1_u64;
-        let mut next = || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = super::super::tests::uniform(0x1234_5678_9abc_def1_u64);
         let d = disk(4.0);
         for k in 0..128 {
             // Normal at the bisector of corners k and k + 1: the line runs

@@ -174,13 +174,7 @@ mod tests {
         let multi = MultiPolygon::new(vec![region.clone()]);
         let w = Window::of(&multi);
         // A small deterministic generator.
-        let mut s = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = super::super::tests::uniform(0x2545_f491_4f6c_dd1d_u64);
         let mut checked = [0usize; 2];
         for k in 0..4000 {
             let c = [next() * 70.0 - 15.0, next() * 70.0 - 15.0];
