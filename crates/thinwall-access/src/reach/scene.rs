@@ -1,6 +1,6 @@
 //! The part's triangles in a tool axis's frame (`z` along the axis, up),
-//! bucketed by their footprint, and what stops a tool whose tip runs along
-//! a level line.
+//! in a hierarchy of boxes by face, and what stops a tool whose tip runs
+//! along a level line.
 
 use super::interval::{line_near_convex, point_near_convex, Span};
 use super::Tool;
@@ -470,4 +470,93 @@ fn crossing(p: &[f64; 3], q: &[f64; 3], z: f64) -> [f64; 3] {
     };
     let t = (z - a[2]) / (b[2] - a[2]);
     [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, z]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use thinwall_brep::tessellate::FaceMesh;
+    use thinwall_brep::FaceId;
+
+    /// Random triangles in a dozen faces (some empty), queried by random
+    /// boxes and height bands: `near` is every triangle a brute force
+    /// finds, and `faces_where` every face with a triangle there passing
+    /// the test (here: a corner within the box), skipped faces left out.
+    #[test]
+    fn the_hierarchy_finds_what_brute_force_does() {
+        let mut next = super::super::tests::uniform(0x5eed_1234_abcd_0007);
+        let mut points = Vec::new();
+        let mut faces = Vec::new();
+        for f in 0..12u32 {
+            let mut triangles = Vec::new();
+            let (cx, cy, cz) = (100.0 * next(), 100.0 * next(), 50.0 * next());
+            for _ in 0..(f % 4) * 15 {
+                let base = points.len() as u32;
+                for _ in 0..3 {
+                    points.push(Point3::new(
+                        cx + 20.0 * next(),
+                        cy + 20.0 * next(),
+                        cz + 20.0 * next(),
+                    ));
+                }
+                triangles.push([base, base + 1, base + 2]);
+            }
+            faces.push(FaceMesh {
+                face: FaceId(f),
+                triangles,
+                issue: None,
+            });
+        }
+        let mesh = Mesh {
+            points,
+            faces,
+            edges: Vec::new(),
+        };
+        let scene = Scene::new(&mesh, Frame::world(), |_| false);
+        for _ in 0..300 {
+            let lo = [120.0 * next() - 10.0, 120.0 * next() - 10.0];
+            let hi = [lo[0] + 30.0 * next(), lo[1] + 30.0 * next()];
+            let zmin = 70.0 * next() - 5.0;
+            let zmax = if next() < 0.3 {
+                f64::INFINITY
+            } else {
+                zmin + 30.0 * next()
+            };
+            let meets = |t: &Tri| {
+                t.hi[0] >= lo[0]
+                    && t.lo[0] <= hi[0]
+                    && t.hi[1] >= lo[1]
+                    && t.lo[1] <= hi[1]
+                    && t.hi[2] > zmin
+                    && t.lo[2] <= zmax
+            };
+            if zmax.is_infinite() {
+                let want: Vec<u32> = (0..scene.tris.len() as u32)
+                    .filter(|&k| meets(&scene.tris[k as usize]))
+                    .collect();
+                assert_eq!(scene.near(lo, hi, zmin), want);
+            }
+            let inside = |k: u32| {
+                scene.tris[k as usize]
+                    .p
+                    .iter()
+                    .any(|p| p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1])
+            };
+            let skip = |f: u32| f.is_multiple_of(5);
+            let mut want_faces: Vec<u32> = (0..12)
+                .filter(|&f| !skip(f))
+                .filter(|&f| {
+                    (0..scene.tris.len() as u32).any(|k| {
+                        let t = &scene.tris[k as usize];
+                        t.face == f && meets(t) && inside(k)
+                    })
+                })
+                .collect();
+            let mut got = Vec::new();
+            scene.faces_where(lo, hi, (zmin, zmax), skip, inside, |f| got.push(f));
+            got.sort_unstable();
+            want_faces.sort_unstable();
+            assert_eq!(got, want_faces);
+        }
+    }
 }
