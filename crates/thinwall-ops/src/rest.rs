@@ -465,6 +465,24 @@ mod tests {
         }
     }
 
+    /// A square's edges part, part, blank, part come out as one part
+    /// chain of three edges (round the corner where the contour starts)
+    /// and one blank edge; a contour of one kind is one closed chain.
+    #[test]
+    fn a_contour_splits_into_chains_of_one_kind() {
+        use EdgeKind::{Blank, Part};
+        let sq = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let got = chains(&sq, &[Part, Part, Blank, Part]);
+        assert_eq!(got.len(), 2);
+        assert_eq!(got[0].1, Blank);
+        assert_eq!(got[0].0, vec![sq[2], sq[3]]);
+        assert_eq!(got[1].1, Part);
+        assert_eq!(got[1].0, vec![sq[3], sq[0], sq[1], sq[2]]);
+        let ring = chains(&sq, &[Part; 4]);
+        assert_eq!(ring, vec![(vec![sq[0], sq[1], sq[2], sq[3], sq[0]], Part)]);
+        assert!(chains(&sq[..1], &[Part]).is_empty());
+    }
+
     /// Ø20 with a_e 12 and a finishing stepover of 2: in a channel 25 wide
     /// (narrower than 20 + 12) everything off the walls' 2 mm bands is a
     /// full cut, 4200 mm², but at the open ends, where a disk of radius 16
