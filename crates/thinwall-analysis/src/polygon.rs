@@ -263,7 +263,7 @@ pub fn without_slivers(region: &MultiPolygon<f64>, min_area: f64) -> MultiPolygo
 /// straight back (a boolean's antenna along an edge it touched) is
 /// dropped, with the repeat it leaves, until none is left. The area is
 /// unchanged; a spike would cut a circle inscribed in the region short.
-pub fn without_spikes(region: &MultiPolygon<f64>) -> MultiPolygon<f64> {
+fn without_spikes(region: &MultiPolygon<f64>) -> MultiPolygon<f64> {
     let clean = |ring: &LineString<f64>| -> LineString<f64> {
         let mut pts: Vec<Coord<f64>> = ring.coords().copied().collect();
         if pts.len() > 1 && pts.first() == pts.last() {

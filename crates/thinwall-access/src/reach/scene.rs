@@ -118,51 +118,34 @@ impl Scene {
     /// Triangles whose footprint meets the rectangle `lo..hi` and whose top
     /// is above `zmin`, each once, in index order.
     pub fn near(&self, lo: [f64; 2], hi: [f64; 2], zmin: f64) -> Vec<u32> {
-        let mut out = Vec::new();
-        self.for_near(lo, hi, (zmin, f64::INFINITY), |k| out.push(k));
+        let envelope = Self::envelope(lo, hi, (zmin, f64::INFINITY));
+        let mut out: Vec<u32> = self
+            .faces
+            .locate_in_envelope_intersecting(&envelope)
+            .flat_map(|face| {
+                self.face_tris[face.data as usize].locate_in_envelope_intersecting(&envelope)
+            })
+            .map(|t| t.data)
+            .filter(|&k| self.tris[k as usize].hi[2] > zmin)
+            .collect();
         out.sort_unstable();
         out
     }
 
-    /// Each triangle whose footprint meets the rectangle `lo..hi`, whose
-    /// top is above `zmin` and whose bottom is not above `zmax`, told to
-    /// `f` once, in no order and without gathering them.
-    pub fn for_near(
-        &self,
-        lo: [f64; 2],
-        hi: [f64; 2],
-        (zmin, zmax): (f64, f64),
-        mut f: impl FnMut(u32),
-    ) {
-        let envelope = Self::envelope(lo, hi, (zmin, zmax));
-        for face in self.faces.locate_in_envelope_intersecting(&envelope) {
-            for t in self.face_tris[face.data as usize].locate_in_envelope_intersecting(&envelope) {
-                if self.tris[t.data as usize].hi[2] > zmin {
-                    f(t.data);
-                }
-            }
-        }
-    }
-
     /// The faces (mesh indices) whose box meets the rectangle `lo..hi`
-    /// between the heights (`zmin` exclusive, as [`Scene::for_near`]), and
-    /// whether `test` holds for one of their triangles there (each face's
-    /// triangles tested until one does), each told to `f` once, unless
-    /// `skip` says the face is already known.
+    /// between the heights (`zmin` exclusive, as [`Scene::near`]) and for
+    /// one of whose triangles there `test` holds (each face's triangles
+    /// tested until one does), each told to `f` once.
     pub fn faces_where(
         &self,
         lo: [f64; 2],
         hi: [f64; 2],
         (zmin, zmax): (f64, f64),
-        skip: impl Fn(u32) -> bool,
         mut test: impl FnMut(u32) -> bool,
         mut f: impl FnMut(u32),
     ) {
         let envelope = Self::envelope(lo, hi, (zmin, zmax));
         for face in self.faces.locate_in_envelope_intersecting(&envelope) {
-            if skip(face.data) {
-                continue;
-            }
             let hit = self.face_tris[face.data as usize]
                 .locate_in_envelope_intersecting(&envelope)
                 .any(|t| self.tris[t.data as usize].hi[2] > zmin && test(t.data));
@@ -348,8 +331,8 @@ pub fn blocked(
 /// into (as [`blocked`] tells at the line's point `c`), pushed on `stops`
 /// once each with whether the holder (not the cutter) meets them: the
 /// cutter's within its radius, the holder's within its own among the
-/// triangles reaching above the cutting length (cells with nothing that
-/// high are skipped). A face already in `stops` is not tested again.
+/// triangles reaching above the cutting length. Each query visits a face
+/// once and stops testing it at its first triangle that stops the tool.
 pub fn point_stops(
     scene: &Scene,
     c: [f64; 3],
@@ -363,21 +346,19 @@ pub fn point_stops(
     let q = [c[0], c[1]];
     let mut near = |rho: f64, lo: f64, hi: f64, holder: bool| {
         let (a, b) = ([q[0] - rho, q[1] - rho], [q[0] + rho, q[1] + rho]);
-        let known: Vec<u32> = stops
-            .iter()
-            .filter(|s| s.1 == holder)
-            .map(|s| s.0)
-            .collect();
         scene.faces_where(
             a,
             b,
             (lo, hi),
-            |face| known.contains(&face),
             |k| {
                 let (part, n) = clip(&scene.tris[k as usize].p, lo, hi);
                 point_near_convex(q, &part[..n], rho - touch)
             },
-            |face| stops.push((face, holder)),
+            |face| {
+                if !stops.contains(&(face, holder)) {
+                    stops.push((face, holder));
+                }
+            },
         );
     };
     near(r, h + touch, top, false);
@@ -481,7 +462,7 @@ mod tests {
     /// Random triangles in a dozen faces (some empty), queried by random
     /// boxes and height bands: `near` is every triangle a brute force
     /// finds, and `faces_where` every face with a triangle there passing
-    /// the test (here: a corner within the box), skipped faces left out.
+    /// the test (here: a corner within the box).
     #[test]
     fn the_hierarchy_finds_what_brute_force_does() {
         let mut next = super::super::tests::uniform(0x5eed_1234_abcd_0007);
@@ -542,9 +523,7 @@ mod tests {
                     .iter()
                     .any(|p| p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1])
             };
-            let skip = |f: u32| f.is_multiple_of(5);
             let mut want_faces: Vec<u32> = (0..12)
-                .filter(|&f| !skip(f))
                 .filter(|&f| {
                     (0..scene.tris.len() as u32).any(|k| {
                         let t = &scene.tris[k as usize];
@@ -553,7 +532,7 @@ mod tests {
                 })
                 .collect();
             let mut got = Vec::new();
-            scene.faces_where(lo, hi, (zmin, zmax), skip, inside, |f| got.push(f));
+            scene.faces_where(lo, hi, (zmin, zmax), inside, |f| got.push(f));
             got.sort_unstable();
             want_faces.sort_unstable();
             assert_eq!(got, want_faces);

@@ -11,12 +11,12 @@
 //! when one of its edges comes within the distance of an outline edge, or
 //! when one lies inside the other.
 
-use geo::MultiPolygon;
-use rstar::{primitives::Line, RTree, AABB};
+use geo::{Coord, Distance, Euclidean, Line, MultiPolygon};
+use rstar::{primitives::Line as Edge, RTree, AABB};
 
 /// A floor's outline, for distance queries.
 pub struct Window {
-    edges: RTree<Line<[f64; 2]>>,
+    edges: RTree<Edge<[f64; 2]>>,
     /// One corner of each of the floor's polygons: a floor inside a piece
     /// has no edge near the piece's.
     firsts: Vec<[f64; 2]>,
@@ -36,7 +36,7 @@ impl Window {
             for ring in std::iter::once(p.exterior()).chain(p.interiors()) {
                 for l in ring.lines() {
                     x_max = x_max.max(l.start.x).max(l.end.x);
-                    edges.push(Line::new([l.start.x, l.start.y], [l.end.x, l.end.y]));
+                    edges.push(Edge::new([l.start.x, l.start.y], [l.end.x, l.end.y]));
                 }
             }
         }
@@ -110,35 +110,16 @@ fn in_convex(corners: &[[f64; 2]], p: [f64; 2]) -> bool {
     !(pos && neg)
 }
 
-fn point_segment(p: [f64; 2], s: [[f64; 2]; 2]) -> f64 {
-    let (a, b) = (s[0], s[1]);
-    let (ux, uy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = ux * ux + uy * uy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * ux).hypot(p[1] - a[1] - t * uy)
-}
-
-/// The distance between two segments (0 when they cross).
+/// The distance between two segments (0 when they cross), geo's.
 fn segment_distance(s: [[f64; 2]; 2], t: [[f64; 2]; 2]) -> f64 {
-    let crosses = cross(s[0], s[1], t[0]) * cross(s[0], s[1], t[1]) < 0.0
-        && cross(t[0], t[1], s[0]) * cross(t[0], t[1], s[1]) < 0.0;
-    if crosses {
-        return 0.0;
-    }
-    point_segment(s[0], t)
-        .min(point_segment(s[1], t))
-        .min(point_segment(t[0], s))
-        .min(point_segment(t[1], s))
+    let line = |u: [[f64; 2]; 2]| Line::new(Coord::from(u[0]), Coord::from(u[1]));
+    Euclidean.distance(&line(s), &line(t))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use geo::{Coord, Distance, Euclidean, LineString, Polygon};
+    use geo::{LineString, Polygon};
 
     fn poly(ring: &[[f64; 2]]) -> Polygon<f64> {
         Polygon::new(
