@@ -29,6 +29,7 @@ fn plan(text: &str, up: [f64; 3]) -> SetupOperations {
         &StockShape::Block { lo, hi },
         &[],
         a.bounding_box().diagonal(),
+        Work::serial(),
     )
     .unwrap();
     let lib = ToolLibrary::default_tools();

@@ -27,6 +27,7 @@ fn removal(part: &thinwall_brep::Part) -> Result<Removal, RemovalError> {
         &StockShape::Block { lo, hi },
         &[],
         a.bounding_box().diagonal(),
+        Work::serial(),
     )
 }
 
@@ -540,9 +541,16 @@ fn posed_removal(path: &std::path::Path, seed: Option<u64>, sign: f64) -> (Remov
     );
     let (frame, lo, hi) = frame_of(&a, up);
     let size = a.bounding_box().diagonal();
-    let r = Removal::new(&part, frame, &StockShape::Block { lo, hi }, &[], size)
-        .and_then(Removal::checked)
-        .unwrap_or_else(|e| panic!("{} {seed:?} up {sign}: {e}", path.display()));
+    let r = Removal::new(
+        &part,
+        frame,
+        &StockShape::Block { lo, hi },
+        &[],
+        size,
+        Work::serial(),
+    )
+    .and_then(Removal::checked)
+    .unwrap_or_else(|e| panic!("{} {seed:?} up {sign}: {e}", path.display()));
     (r, frame, size)
 }
 

@@ -9,6 +9,7 @@
 mod common;
 
 use geo::{Area, BooleanOps, BoundingRect, Contains, InteriorPoint, MultiPolygon};
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::Part;
 use thinwall_geom::tolerance::SLIVER;
@@ -58,9 +59,16 @@ fn volume_along(part: &Part, dir: Vector3) -> f64 {
     let a = PartAnalysis::new(part, Setup::default());
     let (f, lo, hi) = frame_of(&a, dir);
     let size = a.bounding_box().diagonal();
-    Removal::new(part, f, &StockShape::Block { lo, hi }, &[], size)
-        .unwrap()
-        .part_volume
+    Removal::new(
+        part,
+        f,
+        &StockShape::Block { lo, hi },
+        &[],
+        size,
+        Work::serial(),
+    )
+    .unwrap()
+    .part_volume
 }
 
 /// A planar part's volume by the divergence theorem: Σ (n · c) A / 3.
@@ -195,7 +203,13 @@ fn features_overlap_neither_each_other_nor_the_part() {
         let f = frame(&p);
         let size = part.bounding_box().diagonal();
         let deviation = thinwall_geom::tolerance::machining_deviation(size);
-        let pcs = pieces(&part, &f, deviation, &mut Default::default()).unwrap();
+        let pcs = pieces(
+            &part,
+            &f,
+            (deviation, Work::serial()),
+            &mut Default::default(),
+        )
+        .unwrap();
         let tol = 1e-7 * size;
         let solids: Vec<(&str, &FeatureSolid, MultiPolygon<f64>)> = p
             .machining_features

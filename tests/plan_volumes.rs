@@ -4,6 +4,7 @@
 
 mod common;
 
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_plan::{volumes, RuleSet};
 
@@ -25,9 +26,16 @@ fn volume_along(part: &thinwall_brep::Part, up: [f64; 3]) -> f64 {
     let a = PartAnalysis::new(part, Setup::default());
     let (f, lo, hi) = frame_of(&a, nalgebra::Vector3::new(up[0], up[1], up[2]));
     let size = a.bounding_box().diagonal();
-    Removal::new(part, f, &StockShape::Block { lo, hi }, &[], size)
-        .expect("planes and cylinders across up")
-        .part_volume
+    Removal::new(
+        part,
+        f,
+        &StockShape::Block { lo, hi },
+        &[],
+        size,
+        Work::serial(),
+    )
+    .expect("planes and cylinders across up")
+    .part_volume
 }
 
 fn layers_read_back(text: &str, up: [f64; 3]) -> usize {

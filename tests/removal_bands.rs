@@ -8,6 +8,7 @@
 mod common;
 
 use geo::{Coord, LineString, MultiPolygon, Polygon, Rect};
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::Part;
 use thinwall_removal::{frame_of, Removal, StockShape};
@@ -93,28 +94,41 @@ fn bands_cut_after_are_bands_cut_from_the_start() {
             let (frame, lo, hi) = frame_of(&a, up.into());
             let stock = StockShape::Block { lo, hi };
             let bands = bands(lo, hi);
-            let Ok(plain) = Removal::new(&part, frame, &stock, &[], size) else {
+            let Ok(plain) = Removal::new(&part, frame, &stock, &[], size, Work::serial()) else {
                 // A direction the removal refuses is refused either way.
                 assert!(
-                    Removal::new(&part, frame, &stock, &bands, size).is_err(),
+                    Removal::new(&part, frame, &stock, &bands, size, Work::serial()).is_err(),
                     "{what}"
                 );
                 continue;
             };
-            let direct = Removal::new(&part, frame, &stock, &bands, size).unwrap();
-            let after = plain.with_bands(&part, &stock, &bands).unwrap().unwrap();
+            let direct = Removal::new(&part, frame, &stock, &bands, size, Work::serial()).unwrap();
+            let after = plain
+                .with_bands(&part, &stock, &bands, Work::serial())
+                .unwrap()
+                .unwrap();
             assert!(
                 direct.cells.len() > plain.cells.len(),
                 "{what}: the bands cut"
             );
             same(&direct, &after, &what);
             // Once banded, or for another block, it starts afresh.
-            assert!(after.with_bands(&part, &stock, &bands).is_none(), "{what}");
+            assert!(
+                after
+                    .with_bands(&part, &stock, &bands, Work::serial())
+                    .is_none(),
+                "{what}"
+            );
             let taller = StockShape::Block {
                 lo,
                 hi: [hi[0], hi[1], hi[2] + 1.0],
             };
-            assert!(plain.with_bands(&part, &taller, &bands).is_none(), "{what}");
+            assert!(
+                plain
+                    .with_bands(&part, &taller, &bands, Work::serial())
+                    .is_none(),
+                "{what}"
+            );
         }
     }
 }

@@ -9,6 +9,7 @@
 
 mod common;
 
+use thinwall_analysis::parallel::Work;
 use thinwall_removal::Removal;
 
 const CTC_03: &str = "nist/nist_ctc_03_asme1_ap242-e2.stp";
@@ -148,7 +149,7 @@ fn removal_along(text: &str, up: nalgebra::Vector3<f64>, what: &str) -> Removal 
     let (frame, lo, hi) = thinwall_removal::frame_of(&a, up);
     let size = a.bounding_box().diagonal();
     let stock = thinwall_removal::StockShape::Block { lo, hi };
-    let r = Removal::new(&part, frame, &stock, &[], size)
+    let r = Removal::new(&part, frame, &stock, &[], size, Work::serial())
         .and_then(Removal::checked)
         .unwrap_or_else(|e| panic!("{what}: {e}"));
     common::assert_part_volume_is_the_tessellations(&part, &r, 1e-3, what);

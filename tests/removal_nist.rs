@@ -15,6 +15,7 @@ mod common;
 
 use nalgebra::Vector3;
 use std::time::Duration;
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::parallel::{Budget, OverBudget};
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_removal::{frame_of, Removal, RemovalError, StockShape};
@@ -73,8 +74,15 @@ fn removal(path: &std::path::Path, occ: f64, name: &str) -> Outcome {
     let budget = Budget::default();
     budget.start(Some(Duration::from_secs(BUDGET_SECONDS)));
     let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        Removal::new(&part, frame, &StockShape::Block { lo, hi }, &[], size)
-            .and_then(Removal::checked)
+        Removal::new(
+            &part,
+            frame,
+            &StockShape::Block { lo, hi },
+            &[],
+            size,
+            Work::serial(),
+        )
+        .and_then(Removal::checked)
     }));
     budget.start(None);
     let r = match run {

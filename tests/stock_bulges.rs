@@ -11,6 +11,7 @@
 mod common;
 
 use nalgebra::Vector3;
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::{Machine, PartAnalysis, Setup};
 use thinwall_machining::stock::Stock;
 use thinwall_removal::{frame_of, Removal, StockShape};
@@ -92,6 +93,7 @@ fn check_pose(text: &str, seed: Option<u64>, sign: f64, truth: &Truth, what: &st
         &StockShape::Block { lo: slo, hi: shi },
         &[],
         size,
+        Work::serial(),
     )
     .and_then(Removal::checked)
     .unwrap_or_else(|e| panic!("{what}: {e}"));

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
+use thinwall_analysis::parallel::Work;
 
 /// `../shared/data` beside the checkout (CI has it there too).
 pub fn shared_data() -> PathBuf {
@@ -211,6 +212,7 @@ pub fn block_removal(
         &stock,
         &[],
         bb.diagonal(),
+        Work::serial(),
     );
     (part, r)
 }

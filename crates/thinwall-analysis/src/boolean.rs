@@ -45,6 +45,130 @@ pub fn intersection(a: &MultiPolygon<f64>, b: &MultiPolygon<f64>) -> MultiPolygo
     apply(a, b, OverlayRule::Intersect)
 }
 
+/// `(a ∩ b, a − b)` from one overlay graph of the two (half the work of
+/// the two booleans apart: the segments are split and wound once).
+pub fn split(
+    a: &MultiPolygon<f64>,
+    b: &MultiPolygon<f64>,
+) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
+    let (sa, sb) = (shapes(a), shapes(b));
+    split_shapes(&sa, &sb, None)
+}
+
+/// [`split`] of a small `a` by a large `b` whose corners' bounds are
+/// `b_bounds` ([`Bounds::of`]): the same result, bit for bit, with only
+/// `b`'s rings whose boxes meet `a`'s (a polygon whose outline's box
+/// misses it goes whole, a hole that misses it goes from its polygon).
+/// The rings left are `b`'s own, and the overlay's integer grid is the
+/// one the whole of both would give (it follows the bounds of all
+/// corners), so every segment that meets `a` is the same on the grid.
+pub fn split_near(
+    a: &MultiPolygon<f64>,
+    b: &MultiPolygon<f64>,
+    b_bounds: &Bounds,
+) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
+    let sa = shapes(a);
+    let Some(a_bounds) = Bounds::of_shapes(&sa) else {
+        return (MultiPolygon::new(vec![]), MultiPolygon::new(vec![]));
+    };
+    let meets = |r: &Vec<[f64; 2]>| {
+        Bounds::of_shapes(&vec![vec![r.clone()]]).is_some_and(|rb| rb.meets(&a_bounds))
+    };
+    let sb: Shapes = shapes(b)
+        .into_iter()
+        .filter(|rings| meets(&rings[0]))
+        .map(|rings| {
+            let mut rings = rings.into_iter();
+            let outline = rings.next().expect("a shape has its outline");
+            std::iter::once(outline)
+                .chain(rings.filter(meets))
+                .collect()
+        })
+        .collect();
+    split_shapes(&sa, &sb, Some(&a_bounds.union(b_bounds)))
+}
+
+/// The corners' bounds of a region: the overlay's integer grid is set by
+/// them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    pub min: [f64; 2],
+    pub max: [f64; 2],
+}
+
+impl Bounds {
+    /// The bounds of `m`'s corners (`None` when it has none).
+    pub fn of(m: &MultiPolygon<f64>) -> Option<Self> {
+        Self::of_shapes(&shapes(m))
+    }
+
+    fn of_shapes(s: &Shapes) -> Option<Self> {
+        let mut it = s.iter().flatten().flatten();
+        let first = *it.next()?;
+        Some(it.fold(
+            Bounds {
+                min: first,
+                max: first,
+            },
+            |b, p| Bounds {
+                min: [b.min[0].min(p[0]), b.min[1].min(p[1])],
+                max: [b.max[0].max(p[0]), b.max[1].max(p[1])],
+            },
+        ))
+    }
+
+    fn union(&self, o: &Bounds) -> Bounds {
+        Bounds {
+            min: [self.min[0].min(o.min[0]), self.min[1].min(o.min[1])],
+            max: [self.max[0].max(o.max[0]), self.max[1].max(o.max[1])],
+        }
+    }
+
+    fn meets(&self, o: &Bounds) -> bool {
+        self.min[0] <= o.max[0]
+            && o.min[0] <= self.max[0]
+            && self.min[1] <= o.max[1]
+            && o.min[1] <= self.max[1]
+    }
+}
+
+/// `(a ∩ b, a − b)` of shapes, on the integer grid of `grid` when given
+/// (else of their corners).
+fn split_shapes(
+    sa: &Shapes,
+    sb: &Shapes,
+    grid: Option<&Bounds>,
+) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
+    use i_overlay::core::extract::BooleanExtractionBuffer;
+    use i_overlay::core::overlay::ShapeType;
+    use i_overlay::float::overlay::FloatOverlay;
+    use i_overlay::i_float::adapter::FloatPointAdapter;
+    let empty = || MultiPolygon::new(vec![]);
+    if sa.is_empty() {
+        return (empty(), empty());
+    }
+    crate::parallel::check_deadline();
+    let mut overlay = match grid {
+        None => FloatOverlay::<[f64; 2], i64>::from_subj_and_clip(sa, sb),
+        Some(g) => {
+            let corners = [g.min, g.max];
+            let adapter =
+                FloatPointAdapter::<[f64; 2], i64>::with_iter_conservative(corners.iter());
+            let capacity = sa.iter().chain(sb).flatten().map(Vec::len).sum();
+            FloatOverlay::with_adapter(adapter, capacity)
+                .unsafe_add_source(sa, ShapeType::Subject)
+                .unsafe_add_source(sb, ShapeType::Clip)
+        }
+    };
+    let Some(graph) = overlay.build_graph_view(FillRule::EvenOdd) else {
+        return (empty(), empty());
+    };
+    let mut buffer = BooleanExtractionBuffer::default();
+    let inside = graph.extract_shapes(OverlayRule::Intersect, &mut buffer);
+    let outside = graph.extract_shapes(OverlayRule::Difference, &mut buffer);
+    (from_shapes(inside), from_shapes(outside))
+}
+
 /// The union of polygons that tile a region and barely overlap (a mesh's
 /// triangles seen from above), in one sweep with the non-zero rule (each
 /// ring counter-clockwise). Where many overlap deeply (grown triangles),
@@ -249,6 +373,72 @@ mod tests {
         );
         assert!((union_tiles(&grown).unsigned_area() - pairwise.unsigned_area()).abs() < 1e-9);
         assert!((pairwise.unsigned_area() - 5.5).abs() < 1e-9);
+    }
+
+    /// A split is the intersection and the difference, bit for bit; and
+    /// the split near a small region (the far polygons and holes of the
+    /// large one left out) is the whole split, bit for bit: over 200
+    /// random cells against a field of 60 squares, some with holes.
+    #[test]
+    fn a_split_near_is_the_whole_split() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut field = Vec::new();
+        for _ in 0..60 {
+            let (x, y, s) = (100.0 * next(), 100.0 * next(), 2.0 + 8.0 * next());
+            let mut p = square(x, y, s, true);
+            if next() < 0.5 {
+                p.interiors_push(
+                    square(x + 0.3 * s, y + 0.3 * s, 0.4 * s, false)
+                        .exterior()
+                        .clone(),
+                );
+            }
+            field.push(p);
+        }
+        let field = union_all(
+            field
+                .into_iter()
+                .map(|p| MultiPolygon::new(vec![p]))
+                .collect(),
+        );
+        let bounds = Bounds::of(&field).unwrap();
+        let (mut cut, mut left_out) = (0, 0);
+        for _ in 0..200 {
+            let (x, y, s) = (100.0 * next(), 100.0 * next(), 1.0 + 12.0 * next());
+            let n = 3 + (next() * 9.0) as usize;
+            let ring: Vec<(f64, f64)> = (0..n)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * (k as f64 + 0.5 * next()) / n as f64;
+                    let r = s * (0.5 + 0.5 * next());
+                    (x + r * t.cos(), y + r * t.sin())
+                })
+                .collect();
+            let cell = MultiPolygon::new(vec![Polygon::new(LineString::from(ring), vec![])]);
+            let whole = split(&cell, &field);
+            assert_eq!(whole.0, intersection(&cell, &field));
+            assert_eq!(whole.1, difference(&cell, &field));
+            assert_eq!(split_near(&cell, &field, &bounds), whole);
+            cut += usize::from(!whole.0 .0.is_empty() && !whole.1 .0.is_empty());
+            let near = Bounds::of(&cell).unwrap();
+            left_out += field
+                .iter()
+                .filter(|p| {
+                    !Bounds::of(&MultiPolygon::new(vec![(*p).clone()]))
+                        .unwrap()
+                        .meets(&near)
+                })
+                .count();
+        }
+        assert!(
+            cut > 20 && left_out > 1000,
+            "{cut} cut, {left_out} polygons left out"
+        );
     }
 
     /// Two overlapping squares and a frame with a hole, in either

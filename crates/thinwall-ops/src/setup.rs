@@ -66,8 +66,15 @@ pub fn plan_setup(
 ) -> Result<(Frame, SetupOperations), OpsError> {
     let (frame, lo, hi) = frame_for(a, lib)?;
     let size = a.bounding_box().diagonal();
-    let removal =
-        Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()?;
+    let removal = Removal::new(
+        a.part(),
+        frame,
+        &StockShape::Block { lo, hi },
+        &[],
+        size,
+        a.work(),
+    )?
+    .checked()?;
     let (ops, _) = plan_in_turn(a, &removal, features, &[], lib, axial_depth_mm, limits)?;
     Ok((frame, ops))
 }

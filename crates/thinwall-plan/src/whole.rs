@@ -47,8 +47,8 @@ pub fn removal_plan(
     };
     let reused = this
         .filter(|t| same_bits(&t.frame, &frame) && t.size.to_bits() == size.to_bits())
-        .and_then(|t| t.with_bands(part, &stock, &bands));
-    let made = reused.unwrap_or_else(|| Removal::new(part, frame, &stock, &bands, size));
+        .and_then(|t| t.with_bands(part, &stock, &bands, a.work()));
+    let made = reused.unwrap_or_else(|| Removal::new(part, frame, &stock, &bands, size, a.work()));
     let mut r = match made.and_then(Removal::checked) {
         Ok(r) => r,
         Err(e) => {

@@ -6,6 +6,8 @@
 use super::flux::area;
 use crate::halving::{corners, halves};
 use geo::{BooleanOps, BoundingRect, LineString, MultiPolygon, Polygon, Rect};
+use thinwall_analysis::boolean::{self, Bounds};
+use thinwall_analysis::parallel::Work;
 
 /// A region that covers part of the plane.
 pub struct Cover<'a> {
@@ -37,17 +39,20 @@ fn overlaps(a: &Rect<f64>, b: &Rect<f64>) -> bool {
 
 /// Cut `start` by every cover in turn. Polygons of area below `min_area`
 /// (noise of the booleans) are dropped.
-pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64) -> Vec<Cell> {
-    arrange_on(vec![cell(start, vec![])], covers, 0, min_area)
+pub fn arrange(start: Polygon<f64>, covers: &[Cover], min_area: f64, work: Work) -> Vec<Cell> {
+    arrange_on(vec![cell(start, vec![])], covers, (0, min_area), work)
 }
 
 /// `cells`, the arrangement of `covers[..first]`, cut by the covers from
-/// `first` on in turn: the arrangement of them all.
+/// `first` on in turn: the arrangement of them all. The cells one cover
+/// meets are cut on `work`'s threads (each cut is the cell's alone; the
+/// pieces go back in the cells' order, so the result is the same either
+/// way).
 pub fn arrange_on(
     mut cells: Vec<Cell>,
     covers: &[Cover],
-    first: usize,
-    min_area: f64,
+    (first, min_area): (usize, f64),
+    work: Work,
 ) -> Vec<Cell> {
     for (ci, c) in covers.iter().enumerate().skip(first) {
         // A long arrangement (thousands of meshed triangles) stops at the
@@ -57,67 +62,123 @@ pub fn arrange_on(
         // tiles once, so each cell meets only the tiles by it.
         let tiles = (c.robust && corners(c.region) > TILE_CORNERS)
             .then(|| Tiles::of(c.region.clone(), c.bbox, 0));
+        let met: Vec<usize> = (0..cells.len())
+            .filter(|&k| overlaps(&cells[k].bbox, &c.bbox))
+            .collect();
+        if met.is_empty() {
+            continue;
+        }
+        // A many-cornered region is cut near each cell only (the same
+        // result: `boolean::split_near`).
+        let near = match (c.robust, &tiles) {
+            (true, None) if corners(c.region) > NEAR_CORNERS => Bounds::of(c.region),
+            _ => None,
+        };
+        let region = Region {
+            tiles: tiles.as_ref(),
+            near: near.as_ref(),
+        };
+        let cut = |&k: &usize| cut_cell(&cells[k], (ci, c), region, min_area);
+        let mut cuts = match met.len() >= PARALLEL_CELLS {
+            true => work.map(&met, cut),
+            false => met.iter().map(cut).collect(),
+        }
+        .into_iter();
+        let mut met = met.into_iter().peekable();
         let mut next = Vec::with_capacity(cells.len() + 4);
-        for cl in cells.drain(..) {
-            if !overlaps(&cl.bbox, &c.bbox) {
+        for (k, cl) in cells.into_iter().enumerate() {
+            if met.next_if_eq(&k).is_none() {
                 next.push(cl);
                 continue;
             }
-            // A cell with many holes (a rib grid's top) meets a cover
-            // through the holes by it only: the others lie outside the
-            // cover's box, so they change neither part, and go back into
-            // the piece around them after.
-            let (near, far) = by_the_box(&cl.poly, &c.bbox);
-            let me = MultiPolygon::new(vec![near]);
-            let local;
-            let region = match &tiles {
-                Some(t) => {
-                    local = t.near(&cl.bbox);
-                    &local
-                }
-                None => c.region,
-            };
-            let inside = match c.robust {
-                true => thinwall_analysis::boolean::intersection(&me, region),
-                false => me.intersection(region),
-            };
-            let inside_area: f64 = inside.0.iter().map(area).sum();
-            if inside_area <= min_area {
-                next.push(cl);
-                continue;
-            }
-            let outside = match c.robust {
-                true => thinwall_analysis::boolean::difference(&me, region),
-                false => me.difference(region),
-            };
-            let outside = match with_holes(outside, &far) {
-                Some(o) => o,
-                // A hole found no piece around it (a boolean's noise):
-                // the whole cell, as without the shortcut.
-                None => {
-                    let whole = MultiPolygon::new(vec![cl.poly.clone()]);
-                    match c.robust {
-                        true => thinwall_analysis::boolean::difference(&whole, region),
-                        false => whole.difference(region),
-                    }
-                }
-            };
-            let mut covered = cl.covers.clone();
-            covered.push(ci);
-            for p in inside.0 {
-                if area(&p) > min_area {
-                    next.push(cell(p, covered.clone()));
-                }
-            }
-            for p in outside.0 {
-                if area(&p) > min_area {
-                    next.push(cell(p, cl.covers.clone()));
-                }
+            match cuts.next().expect("one cut per cell met") {
+                Some(pieces) => next.extend(pieces),
+                None => next.push(cl),
             }
         }
         cells = next;
     }
     cells
+}
+
+/// How a cover's region is cut: through its tiles, or near each cell on
+/// the grid of its corners' bounds.
+#[derive(Clone, Copy)]
+struct Region<'t> {
+    tiles: Option<&'t Tiles>,
+    near: Option<&'t Bounds>,
+}
+
+/// A region with more corners than this is cut near each cell only.
+const NEAR_CORNERS: usize = 8;
+
+/// Cells a cover meets, at least, to cut them on several threads.
+const PARALLEL_CELLS: usize = 4;
+
+/// Cell `cl` cut by cover `ci`: its pieces inside the cover and outside,
+/// or `None` when the cover leaves it whole (no more than `min_area` of it
+/// inside).
+fn cut_cell(
+    cl: &Cell,
+    (ci, c): (usize, &Cover),
+    Region {
+        tiles,
+        near: bounds,
+    }: Region,
+    min_area: f64,
+) -> Option<Vec<Cell>> {
+    // A cell with many holes (a rib grid's top) meets a cover through the
+    // holes by it only: the others lie outside the cover's box, so they
+    // change neither part, and go back into the piece around them after.
+    let (near, far) = by_the_box(&cl.poly, &c.bbox);
+    let me = MultiPolygon::new(vec![near]);
+    let local;
+    let region = match tiles {
+        Some(t) => {
+            local = t.near(&cl.bbox);
+            &local
+        }
+        None => c.region,
+    };
+    let (inside, outside) = match (c.robust, bounds) {
+        (true, Some(b)) => {
+            let (i, o) = boolean::split_near(&me, region, b);
+            (i, Some(o))
+        }
+        (true, None) => {
+            let (i, o) = boolean::split(&me, region);
+            (i, Some(o))
+        }
+        (false, _) => (me.intersection(region), None),
+    };
+    let inside_area: f64 = inside.0.iter().map(area).sum();
+    if inside_area <= min_area {
+        return None;
+    }
+    let outside = outside.unwrap_or_else(|| me.difference(region));
+    let outside = match with_holes(outside, &far) {
+        Some(o) => o,
+        // A hole found no piece around it (a boolean's noise): the whole
+        // cell, as without the shortcut.
+        None => {
+            let whole = MultiPolygon::new(vec![cl.poly.clone()]);
+            match c.robust {
+                true => boolean::difference(&whole, region),
+                false => whole.difference(region),
+            }
+        }
+    };
+    let mut covered = cl.covers.clone();
+    covered.push(ci);
+    let inside = inside.0.into_iter().map(|p| (p, covered.clone()));
+    let outside = outside.0.into_iter().map(|p| (p, cl.covers.clone()));
+    Some(
+        inside
+            .chain(outside)
+            .filter(|(p, _)| area(p) > min_area)
+            .map(|(p, covers)| cell(p, covers))
+            .collect(),
+    )
 }
 
 /// A cell with more holes than this meets a cover through the holes by the
@@ -275,7 +336,12 @@ mod tests {
             bbox: region.bounding_rect().unwrap(),
             robust,
         };
-        let cells = arrange(start, &[cover(&band, true), cover(&region, true)], 1e-9);
+        let cells = arrange(
+            start,
+            &[cover(&band, true), cover(&region, true)],
+            1e-9,
+            Work::serial(),
+        );
         let covered: f64 = cells
             .iter()
             .filter(|c| c.covers.contains(&1))

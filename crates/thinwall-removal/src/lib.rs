@@ -31,6 +31,7 @@ pub mod slab;
 use cells::{arrange, arrange_on, Cover};
 use geo::{Coord, MultiPolygon, Rect};
 use pieces::{Facing, Piece};
+use thinwall_analysis::parallel::Work;
 use thinwall_analysis::PartAnalysis;
 use thinwall_brep::Part;
 use thinwall_geom::{Frame, Vector3};
@@ -564,23 +565,26 @@ fn min_cell_area(size: f64) -> f64 {
 impl Removal {
     /// Decompose `stock − part` in `frame`, cutting cells also along every
     /// band (regions the planner wants features to follow).
+    /// The faces' pieces and the cells are made on `work`'s threads (the
+    /// same result either way).
     pub fn new(
         part: &Part,
         frame: Frame,
         stock: &StockShape,
         bands: &[MultiPolygon<f64>],
         size: f64,
+        work: Work,
     ) -> Result<Self, RemovalError> {
         let deviation = thinwall_geom::tolerance::machining_deviation(size);
         let mut meshed = pieces::Meshed::default();
-        let part_pieces = pieces::pieces(part, &frame, deviation, &mut meshed)?;
+        let part_pieces = pieces::pieces(part, &frame, (deviation, work), &mut meshed)?;
         let stock_pieces = match stock {
-            StockShape::Solid(s) => pieces::pieces(s, &frame, deviation, &mut meshed)?,
+            StockShape::Solid(s) => pieces::pieces(s, &frame, (deviation, work), &mut meshed)?,
             StockShape::Block { .. } => vec![],
         };
         let start = footprint(stock, part_pieces.iter().chain(&stock_pieces), size);
         let covers = covers(part_pieces.iter().chain(&stock_pieces), bands);
-        let cells = arrange(start.to_polygon(), &covers, min_cell_area(size));
+        let cells = arrange(start.to_polygon(), &covers, min_cell_area(size), work);
         Self::columns(
             part,
             Arranged {
@@ -608,6 +612,7 @@ impl Removal {
         part: &Part,
         stock: &StockShape,
         bands: &[MultiPolygon<f64>],
+        work: Work,
     ) -> Option<Result<Self, RemovalError>> {
         // The same corners bit for bit (a zero's sign too, which would
         // show in the cells' coordinates).
@@ -624,7 +629,8 @@ impl Removal {
             return None;
         }
         let covers = covers(self.part_pieces.iter().chain(&self.stock_pieces), bands);
-        let cells = arrange_on(self.cells.clone(), &covers, first, min_cell_area(self.size));
+        let cut = (first, min_cell_area(self.size));
+        let cells = arrange_on(self.cells.clone(), &covers, cut, work);
         Some(Self::columns(
             part,
             Arranged {

@@ -15,6 +15,8 @@
 use super::sample::face_loop_points;
 use super::RemovalError;
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Orient, Polygon, Rect};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use thinwall_analysis::parallel::Work;
 use thinwall_brep::{FaceId, Part};
 use thinwall_geom::{Frame, Point3, Surface, Vector3};
 
@@ -104,27 +106,56 @@ pub struct Piece {
 pub fn pieces(
     part: &Part,
     frame: &Frame,
-    deviation: f64,
+    (deviation, work): (f64, Work),
     meshed: &mut Meshed,
 ) -> Result<Vec<Piece>, RemovalError> {
-    let mut out = Vec::new();
-    for f in part.face_ids() {
-        match face_pieces(part, f, frame) {
-            Ok(p) => out.extend(p),
-            Err(RemovalError::UnsupportedFace { step_id, reason }) => {
-                let (facets, overlap) = facet_pieces(part, f, frame, deviation).map_err(|why| {
-                    RemovalError::UnsupportedFace {
-                        step_id,
-                        reason: format!("{reason}, and its triangles: {why}"),
-                    }
-                })?;
-                meshed.add(part, f, &facets, deviation, overlap);
-                out.extend(facets);
-            }
-            Err(e) => return Err(e),
+    let faces: Vec<(usize, FaceId)> = part.face_ids().enumerate().collect();
+    // The first face (in the part's order) that fails is the error; past
+    // a failure, faces after it are not worth making.
+    let failed = AtomicUsize::new(usize::MAX);
+    let made = work.map(&faces, |&(k, f)| {
+        if k > failed.load(Ordering::Relaxed) {
+            return None;
         }
+        let made = face_or_facet_pieces(part, f, frame, deviation);
+        if made.is_err() {
+            failed.fetch_min(k, Ordering::Relaxed);
+        }
+        Some(made)
+    });
+    let mut out = Vec::new();
+    for ((_, f), m) in faces.into_iter().zip(made) {
+        // Faces left unmade follow a failed one, whose error comes first.
+        let (p, overlap) = m.expect("a face unmade follows a failure")?;
+        if let Some(overlap) = overlap {
+            meshed.add(part, f, &p, deviation, overlap);
+        }
+        out.extend(p);
     }
     Ok(out)
+}
+
+/// Face `f`'s exact pieces, or else its triangles' and their overlap in
+/// projection (mm³).
+fn face_or_facet_pieces(
+    part: &Part,
+    f: FaceId,
+    frame: &Frame,
+    deviation: f64,
+) -> Result<(Vec<Piece>, Option<f64>), RemovalError> {
+    match face_pieces(part, f, frame) {
+        Ok(p) => Ok((p, None)),
+        Err(RemovalError::UnsupportedFace { step_id, reason }) => {
+            let (facets, overlap) = facet_pieces(part, f, frame, deviation).map_err(|why| {
+                RemovalError::UnsupportedFace {
+                    step_id,
+                    reason: format!("{reason}, and its triangles: {why}"),
+                }
+            })?;
+            Ok((facets, Some(overlap)))
+        }
+        Err(e) => Err(e),
+    }
 }
 
 /// The faces taken as triangles rather than exactly: which, their area,

@@ -110,11 +110,10 @@ fn scored(a: &PartAnalysis, up: Vector3, area: f64, part_mm3: f64) -> UpCandidat
 pub fn up_candidates(a: &PartAnalysis) -> Vec<UpCandidate> {
     let size = a.bounding_box().diagonal();
     let part_mm3 = crate::heights::mesh_volume(a);
-    let mut out: Vec<UpCandidate> = directions(a)
-        .into_iter()
-        .take(MOST_CANDIDATES)
-        .map(|(up, area)| scored(a, up, area, part_mm3))
-        .collect();
+    let dirs: Vec<(Vector3, f64)> = directions(a).into_iter().take(MOST_CANDIDATES).collect();
+    let mut out = a
+        .work()
+        .map(&dirs, |&(up, area)| scored(a, up, area, part_mm3));
     // Equal to rounding: then the larger face down on the table is the
     // better set-up (the proposal compares near ones exactly).
     let tol = 1e-6 * size.powi(3);

@@ -253,21 +253,20 @@ fn next_setup(
     (before, worth): (f64, f64),
 ) -> Option<(Removal, Residue)> {
     let setup = removals.len() + 1;
-    let mut ranked: Vec<(f64, Vector3)> = next_directions(a, removals)
-        .into_iter()
-        .map(|d| {
-            let map = HeightMap::along(a, d);
-            let reaches = |p: &Point3| map.reaches(p);
-            let left = residue_after(removals, Some(&reaches)).volume_mm3;
-            later.push(LaterCandidate {
-                setup,
-                up: clean(&d),
-                residue_mm3: Some(left),
-                refused: None,
-            });
-            (left, d)
-        })
-        .collect();
+    let dirs = next_directions(a, removals);
+    let done: &[Removal] = removals;
+    let lefts = a.work().map(&dirs, |&d| {
+        let map = HeightMap::along(a, d);
+        let reaches = |p: &Point3| map.reaches(p);
+        residue_after(done, Some(&reaches)).volume_mm3
+    });
+    let mut ranked: Vec<(f64, Vector3)> = lefts.into_iter().zip(dirs).collect();
+    later.extend(ranked.iter().map(|&(left, d)| LaterCandidate {
+        setup,
+        up: clean(&d),
+        residue_mm3: Some(left),
+        refused: None,
+    }));
     ranked.sort_by(|x, y| x.0.total_cmp(&y.0));
     for (_, d) in ranked.into_iter().take(MOST_EXACT_TRIES) {
         let r = match refused.removal_along(a, d) {

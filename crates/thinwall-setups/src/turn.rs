@@ -45,7 +45,15 @@ pub fn removals_along(a: &PartAnalysis, ups: &[Vector3]) -> Result<Vec<Removal>,
     ups.iter()
         .map(|&up| {
             let (frame, lo, hi) = frame_of(a, up);
-            Removal::new(a.part(), frame, &StockShape::Block { lo, hi }, &[], size)?.checked()
+            Removal::new(
+                a.part(),
+                frame,
+                &StockShape::Block { lo, hi },
+                &[],
+                size,
+                a.work(),
+            )?
+            .checked()
         })
         .collect()
 }

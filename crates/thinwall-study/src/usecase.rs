@@ -159,17 +159,19 @@ fn plan_in_turn<'p>(
     };
     sequence::in_turn(&mut removals);
     let residue = sequence::residue(&removals);
-    let mut plans = Vec::new();
-    for (k, r) in removals.iter().enumerate() {
+    stage(&setups_planned(removals.len()));
+    // Each set-up's plan needs the removals alone, so they are planned on
+    // the first set-up's threads.
+    let order: Vec<usize> = (0..removals.len()).collect();
+    let plans = first.analysis.work().map(&order, |&k| {
         let recognize = RecognizeRequest {
-            setup: setup_along(&req.recognize.setup, r),
+            setup: setup_along(&req.recognize.setup, &removals[k]),
             ..req.recognize.clone()
         };
-        stage(&setup_stage(k, removals.len(), &recognize.setup.up));
         let at = study.at(&recognize.setup)?;
         let outcome = at.outcome(&recognize).map_err(|e| recognition(study, e))?;
         let turn = thinwall_plan::InTurn {
-            this: r,
+            this: &removals[k],
             earlier: &removals[..k],
         };
         let plan = thinwall_plan::plan_in_turn(
@@ -179,9 +181,12 @@ fn plan_in_turn<'p>(
             &req.rules,
             Some(&turn),
         )?;
-        plans.push((at, outcome, plan));
-    }
-    let mut plans = plans.into_iter();
+        Ok::<_, StudyError>((at, outcome, plan))
+    });
+    let mut plans = plans
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()?
+        .into_iter();
     let (at, outcome, mut plan) = plans.next().expect("a set-up at least");
     let later: Vec<_> = plans.collect();
     plan.then = later.iter().map(|(_, _, p)| p.clone()).collect();
@@ -202,6 +207,11 @@ fn setups_stage(propose: bool) -> &'static str {
     } else {
         "the set-ups' removals"
     }
+}
+
+/// The plans of `n` set-ups begin.
+fn setups_planned(n: usize) -> String {
+    format!("planning {n} set-up(s)")
 }
 
 /// Set-up `k` (of `n`) along `up` begins.
