@@ -93,10 +93,18 @@ impl HeightMap {
                 0..0
             }
         };
+        // Only the squares near the triangle's run along each row are
+        // tested (a sliver across the footprint has a large box and few
+        // squares), each as before: the run is widened well past the
+        // test's own tolerance.
+        let margin = 1e-9 * ((x1 - x0) + (y1 - y0) + step[0] + step[1]);
         let mut covered = 0;
         for j in range(y0, y1, self.lo[1], self.n[1], step[1]) {
             let cy = self.lo[1] + (j as f64 + 0.5) * step[1];
-            for i in range(x0, x1, self.lo[0], self.n[0], step[0]) {
+            let Some((rx0, rx1)) = run([p, q, r], cy, margin) else {
+                continue;
+            };
+            for i in range(rx0, rx1, self.lo[0], self.n[0], step[0]) {
                 let cx = self.lo[0] + (i as f64 + 0.5) * step[0];
                 let u = ((q.x - cx) * (r.y - cy) - (r.x - cx) * (q.y - cy)) / det;
                 let v = ((r.x - cx) * (p.y - cy) - (p.x - cx) * (r.y - cy)) / det;
@@ -145,6 +153,33 @@ impl HeightMap {
         self.square(l.x, l.y)
             .is_none_or(|k| l.z >= self.top[k] - 1e-3 * self.step[0])
     }
+}
+
+/// The x extent of the triangle within `margin` of the line y = `cy`
+/// (its part in that band: where its edges enter and leave the band, and
+/// its corners in it), widened by `margin`; `None` when it misses the
+/// band.
+fn run([p, q, r]: [Vector3; 3], cy: f64, margin: f64) -> Option<(f64, f64)> {
+    let (lo, hi) = (cy - margin, cy + margin);
+    let mut x = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut take = |v: f64| x = (x.0.min(v), x.1.max(v));
+    for (a, b) in [(p, q), (q, r), (r, p)] {
+        let dy = b.y - a.y;
+        if dy == 0.0 {
+            if a.y >= lo && a.y <= hi {
+                take(a.x);
+                take(b.x);
+            }
+            continue;
+        }
+        let (t0, t1) = ((lo - a.y) / dy, (hi - a.y) / dy);
+        let (t0, t1) = (t0.min(t1).max(0.0), t0.max(t1).min(1.0));
+        if t0 <= t1 {
+            take(a.x + t0 * (b.x - a.x));
+            take(a.x + t1 * (b.x - a.x));
+        }
+    }
+    (x.0 <= x.1).then_some((x.0 - margin, x.1 + margin))
 }
 
 /// The part's volume from its mesh (the divergence theorem), mm³.
