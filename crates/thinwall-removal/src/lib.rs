@@ -21,6 +21,7 @@ pub mod facets;
 pub mod flux;
 mod fold;
 mod halving;
+mod inside;
 pub mod locate;
 pub mod moments;
 pub mod outline;

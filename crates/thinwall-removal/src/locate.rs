@@ -4,6 +4,7 @@
 //! blocks; whether a block of one was reached by the other is judged at
 //! points inside it, each located among the other's blocks.
 
+use crate::inside::PolygonIndex;
 use crate::{Grid, Removal};
 use geo::{Coord, Intersects, Point};
 use thinwall_geom::{Point3, Vector3};
@@ -28,7 +29,12 @@ pub struct Locator<'r> {
     by_cell: Vec<Vec<usize>>,
     /// The rectangle the cells cover (found once: every cell's box).
     area: geo::Rect<f64>,
+    /// Per cell with many corners, its rings' edges filed by height.
+    filed: Vec<Option<PolygonIndex>>,
 }
+
+/// A cell with more corners than this is tested through its filed edges.
+const FILED_CORNERS: usize = 64;
 
 impl<'r> Locator<'r> {
     pub fn new(removal: &'r Removal) -> Self {
@@ -38,11 +44,21 @@ impl<'r> Locator<'r> {
         }
         let area = footprint(removal);
         let grid = Grid::new(area, removal.cells.iter().map(|c| c.bbox), 0.0);
+        let filed = removal
+            .cells
+            .iter()
+            .map(|c| {
+                let corners = c.poly.exterior().0.len()
+                    + c.poly.interiors().iter().map(|h| h.0.len()).sum::<usize>();
+                (corners > FILED_CORNERS).then(|| PolygonIndex::new(&c.poly))
+            })
+            .collect();
         Self {
             removal,
             grid,
             by_cell,
             area,
+            filed,
         }
     }
 
@@ -61,13 +77,13 @@ impl<'r> Locator<'r> {
             return Place::Outside;
         }
         let pt = Point::new(x, y);
-        let Some(ci) = self
-            .grid
-            .at(x, y)
-            .iter()
-            .copied()
-            .find(|&ci| r.cells[ci].poly.intersects(&pt))
-        else {
+        let Some(ci) = self.grid.at(x, y).iter().copied().find(|&ci| {
+            inside_box(&r.cells[ci].bbox, x, y)
+                && match &self.filed[ci] {
+                    Some(index) => index.contains_or_touches(Coord { x, y }),
+                    None => r.cells[ci].poly.intersects(&pt),
+                }
+        }) else {
             return Place::Solid;
         };
         for &bi in &self.by_cell[ci] {
@@ -85,6 +101,13 @@ impl<'r> Locator<'r> {
         }
         Place::Solid
     }
+}
+
+/// Whether (x, y) lies in box `b` or on its sides (a cell's point lies
+/// in its box: the box rejects the others before the cell's rings are
+/// walked).
+fn inside_box(b: &geo::Rect<f64>, x: f64, y: f64) -> bool {
+    x >= b.min().x && x <= b.max().x && y >= b.min().y && y <= b.max().y
 }
 
 /// The rectangle the removal's cells cover (its arrangement's start).
