@@ -16,6 +16,7 @@
 //! components.
 
 use petgraph::algo::tarjan_scc;
+use petgraph::graph::{DiGraph, NodeIndex};
 use petgraph::graphmap::DiGraphMap;
 use std::collections::HashMap;
 
@@ -112,26 +113,37 @@ impl References {
     /// The entities of one reference cycle among the entities step-io
     /// follows (ascending, at most a dozen), if there is one.
     pub fn cycle(&self) -> Option<Vec<u64>> {
-        let followed = |i: usize| {
-            self.keywords[i]
-                .iter()
-                .any(|k| FOLLOWED.iter().any(|f| k.contains(f)))
-        };
+        // Each statement's keywords are matched once (they were matched
+        // again for every reference to it).
+        let followed: Vec<bool> = self
+            .keywords
+            .iter()
+            .map(|ks| ks.iter().any(|k| FOLLOWED.iter().any(|f| k.contains(f))))
+            .collect();
         let index: HashMap<u64, usize> = self
             .ids
             .iter()
             .enumerate()
             .map(|(i, id)| (*id, i))
             .collect();
-        let mut g: DiGraphMap<u64, ()> = DiGraphMap::new();
-        for (i, &id) in self.ids.iter().enumerate().filter(|(i, _)| followed(*i)) {
+        // A node per statement (its id the weight): no hashing per edge.
+        let mut g: DiGraph<u64, ()> = DiGraph::with_capacity(self.ids.len(), self.refs.len());
+        for &id in &self.ids {
+            g.add_node(id);
+        }
+        for i in (0..self.ids.len()).filter(|&i| followed[i]) {
             for &r in self.refs_of(i) {
-                if index.get(&r).is_some_and(|j| followed(*j)) {
-                    g.add_edge(id, r, ());
+                if let Some(&j) = index.get(&r).filter(|&&j| followed[j]) {
+                    g.add_edge(NodeIndex::new(i), NodeIndex::new(j), ());
                 }
             }
         }
-        first_cycle(&g)
+        tarjan_scc(&g)
+            .into_iter()
+            .filter(|c| c.len() > 1 || g.contains_edge(c[0], c[0]))
+            .map(|c| c.into_iter().map(|n| g[n]).collect())
+            .map(named)
+            .min_by_key(|c| c[0])
     }
 
     /// The entities of a cycle in the product structure: the product
@@ -171,12 +183,15 @@ fn first_cycle(g: &DiGraphMap<u64, ()>) -> Option<Vec<u64>> {
     tarjan_scc(g)
         .into_iter()
         .filter(|c| c.len() > 1 || g.contains_edge(c[0], c[0]))
-        .map(|mut c| {
-            c.sort_unstable();
-            c.truncate(NAMED_IN_A_CYCLE);
-            c
-        })
+        .map(named)
         .min_by_key(|c| c[0])
+}
+
+/// A cycle's ids as named: ascending, at most [`NAMED_IN_A_CYCLE`].
+fn named(mut c: Vec<u64>) -> Vec<u64> {
+    c.sort_unstable();
+    c.truncate(NAMED_IN_A_CYCLE);
+    c
 }
 
 /// `#1, #2 → #1` for messages.
@@ -359,6 +374,10 @@ mod tests {
             scan("#3 = SURFACE_CURVE('',#3,(),.PCURVE_S1.);").cycle(),
             Some(vec![3])
         );
+        // Of two cycles, the one with the smallest id is named.
+        let two = "#10 = SURFACE_CURVE('',#11,(),.PCURVE_S1.);\n#11 = SURFACE_CURVE('',#10,(),.PCURVE_S1.);\n\
+                   #4 = SURFACE_CURVE('',#3,(),.PCURVE_S1.);\n#3 = SURFACE_CURVE('',#4,(),.PCURVE_S1.);";
+        assert_eq!(scan(two).cycle(), Some(vec![3, 4]));
         // A PMI dimension whose datum feature is itself (NIST STC 07) is legal.
         let pmi = "#9 = DIMENSIONAL_SIZE_WITH_DATUM_FEATURE('a','b',#11,.T.,#9,'diameter');";
         assert_eq!(scan(pmi).cycle(), None);
