@@ -113,12 +113,19 @@ impl References {
     /// The entities of one reference cycle among the entities step-io
     /// follows (ascending, at most a dozen), if there is one.
     pub fn cycle(&self) -> Option<Vec<u64>> {
-        // Each statement's keywords are matched once (they were matched
-        // again for every reference to it).
+        // Each distinct keyword is matched once (they were matched again
+        // for every reference to a statement).
+        let mut known: HashMap<&str, bool> = HashMap::new();
         let followed: Vec<bool> = self
             .keywords
             .iter()
-            .map(|ks| ks.iter().any(|k| FOLLOWED.iter().any(|f| k.contains(f))))
+            .map(|ks| {
+                ks.iter().any(|k| {
+                    *known
+                        .entry(k.as_str())
+                        .or_insert_with(|| FOLLOWED.iter().any(|f| k.contains(f)))
+                })
+            })
             .collect();
         let index: HashMap<u64, usize> = self
             .ids
