@@ -17,7 +17,7 @@ pub struct FaceGeom<'a> {
     pub cylinder: Option<Cylinder>,
     pub bbox: BoundingBox,
     /// A point inside a planar face, found once when first asked.
-    inner: std::cell::OnceCell<Option<thinwall_geom::Point3>>,
+    inner: std::sync::OnceLock<Option<thinwall_geom::Point3>>,
 }
 
 impl<'a> FaceGeom<'a> {
@@ -36,7 +36,7 @@ impl<'a> FaceGeom<'a> {
                     planar: a.planar(f),
                     cylinder: a.cylinder(f),
                     bbox,
-                    inner: std::cell::OnceCell::new(),
+                    inner: std::sync::OnceLock::new(),
                 }
             })
             .collect()

@@ -124,6 +124,7 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
         })
         .collect();
     checks::volumes(req.part, req.volumes, &analyses)?;
+    let work = req.part.work();
     let vol_faces: Vec<Vec<FaceGeom>> = analyses.iter().map(FaceGeom::all).collect();
     checks::overlaps(&vol_faces, &up, &tol)?;
     let near = Near::new(&part_faces, &vol_faces, tol.lin);
@@ -142,8 +143,11 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
         preds[b].insert(a);
         preds[a].insert(b);
     }
-    let mut out = Vec::new();
-    for (vi, vol) in req.volumes.iter().enumerate() {
+    // Each volume is judged against the part and the others alone: on the
+    // part's threads, in the volumes' order.
+    let order: Vec<usize> = (0..req.volumes.len()).collect();
+    Ok(work.map(&order, |&vi| {
+        let vol = &req.volumes[vi];
         let predecessors = &preds[vi];
         let up = vol
             .up
@@ -173,9 +177,8 @@ pub fn classify(req: &Request) -> Result<Vec<Classification>, ClassifyError> {
             up: &up,
             tol: &tol,
         };
-        out.push(profile::shape(&ctx, vi, faces, &priority));
-    }
-    Ok(out)
+        profile::shape(&ctx, vi, faces, &priority)
+    }))
 }
 
 /// The part's and the volumes' faces indexed by their boxes.
