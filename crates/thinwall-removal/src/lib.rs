@@ -471,8 +471,9 @@ impl Columns<'_> {
     }
 
     /// The blocks over cell `ci` (stock intervals minus part intervals),
-    /// added to `column`.
-    fn blocks_over(&self, ci: usize, c: &cells::Cell, column: &mut Column) {
+    /// and what else its column holds.
+    fn blocks_over(&self, ci: usize, c: &cells::Cell) -> CellColumn {
+        let mut column = CellColumn::default();
         let (solid, stock_iv, alternate) = self.intervals(c);
         let width = mean_width(&c.poly);
         if !alternate && (width <= OUTLINE_LENS_MM || self.between_edges(c, width)) {
@@ -480,8 +481,8 @@ impl Columns<'_> {
             // between two outlines of one curve cut differently (a lens no
             // wider than two outline deviations): the column's volume by
             // its faces' fluxes, in no block.
-            column.sliver_volume += self.flux_volume(c);
-            return;
+            column.slivers.push(self.flux_volume(c));
+            return column;
         }
         // Part material outside the stock: the stock is too small.
         for (lo, hi) in &solid {
@@ -490,7 +491,7 @@ impl Columns<'_> {
                 .map(|(a, b)| (hi.0.min(b.0) - lo.0.max(a.0)).max(0.0))
                 .sum();
             if hi.0 - lo.0 - inside > 1e-6 * self.size {
-                column.missing += c.area;
+                column.missing.push(c.area);
             }
         }
         let top = stock_iv.last().map(|iv| iv.1 .0);
@@ -500,7 +501,7 @@ impl Columns<'_> {
             let vol = |b: &Bound| flux::flux(&b.height(self.part, self.stock_pieces), &c.poly);
             let volume = vol(&hi.1) - vol(&lo.1);
             if sliver {
-                column.sliver_volume += volume;
+                column.slivers.push(volume);
                 continue;
             }
             column.blocks.push(Block {
@@ -513,7 +514,18 @@ impl Columns<'_> {
                 volume,
             });
         }
+        column
     }
+}
+
+/// What one cell's column holds, in the order [`Column`] adds it up.
+#[derive(Default)]
+struct CellColumn {
+    blocks: Vec<Block>,
+    /// Areas where part material lies outside the stock, mm².
+    missing: Vec<f64>,
+    /// Volumes left out as slivers, mm³.
+    slivers: Vec<f64>,
 }
 
 /// A bound as an exact key (within one column, where a cut height is the
@@ -598,6 +610,7 @@ impl Removal {
                 start,
                 cells,
             },
+            work,
         )
     }
 
@@ -644,12 +657,13 @@ impl Removal {
                 start: footprint(stock, std::iter::empty(), self.size),
                 cells,
             },
+            work,
         ))
     }
 
     /// The removal over arranged cells: each cell's bands, its columns'
     /// blocks, and the check that they add up.
-    fn columns(part: &Part, x: Arranged) -> Result<Self, RemovalError> {
+    fn columns(part: &Part, x: Arranged, work: Work) -> Result<Self, RemovalError> {
         let Arranged {
             frame,
             stock,
@@ -678,9 +692,17 @@ impl Removal {
             missing: 0.0,
             sliver_volume: 0.0,
         };
-        for (ci, c) in cells.iter().enumerate() {
-            thinwall_analysis::parallel::check_deadline();
-            columns.blocks_over(ci, c, &mut column);
+        // Each cell's column alone, on `work`'s threads; added up in the
+        // cells' order (the same sums, bit for bit).
+        let order: Vec<usize> = (0..cells.len()).collect();
+        for one in work.map(&order, |&ci| columns.blocks_over(ci, &cells[ci])) {
+            column.blocks.extend(one.blocks);
+            for m in one.missing {
+                column.missing += m;
+            }
+            for v in one.slivers {
+                column.sliver_volume += v;
+            }
         }
         let Column {
             blocks,
