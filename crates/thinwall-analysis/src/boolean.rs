@@ -3,7 +3,7 @@
 //!
 //! | engine | serves |
 //! |---|---|
-//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `union_all`, `union_tiles`, `wound_region`, `even_odd_region`, `positive_region`) | a meshed face's region and a face's projection whose loops overlap (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`): unions of many grown triangles and slivers |
+//! | this module: i_overlay 9 directly (`union`, `difference`, `intersection`, `split`, `split_near`, `intersection_near`, `union_all`, `union_tiles`, `wound_region`, `even_odd_region`, `positive_region`) | a meshed face's region and a face's projection whose loops overlap (`thinwall-removal/src/pieces.rs`), reach of floors and their obstacles (`thinwall-access/src/reach/`), rest areas and fields of operations (`thinwall-ops/src/rest.rs`), the removal's cells when a meshed face is among its pieces (`thinwall-removal/src/cells.rs`): unions of many grown triangles and slivers |
 //! | geo's `BooleanOps` (i_overlay 4.5 inside geo 0.33) | face regions from loops (`polygon.rs`), wall overlaps of the recognizers (`walls.rs`, `curved.rs`, `offset.rs`), the removal's pieces, cells and cuts (`thinwall-removal`), flank-milling zones (`thinwall-access/src/zones.rs`), the order of operations (`thinwall-ops/src/order.rs`): few operands, made by our own code, whose outputs the snapshots pin |
 //!
 //! Why two: geo 0.33 pins i_overlay 4.5, whose hole binding panics (an
