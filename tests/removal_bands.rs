@@ -54,35 +54,6 @@ fn bands(lo: [f64; 3], hi: [f64; 3]) -> Vec<MultiPolygon<f64>> {
     ]
 }
 
-fn same(a: &Removal, b: &Removal, what: &str) {
-    assert_eq!(a.cells.len(), b.cells.len(), "{what}: cells");
-    for (k, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
-        assert_eq!(x.poly, y.poly, "{what}: cell {k}'s polygon");
-        assert_eq!(x.covers, y.covers, "{what}: cell {k}'s covers");
-        assert_eq!(
-            x.area.to_bits(),
-            y.area.to_bits(),
-            "{what}: cell {k}'s area"
-        );
-    }
-    assert_eq!(a.cell_bands, b.cell_bands, "{what}: bands");
-    assert_eq!(a.blocks.len(), b.blocks.len(), "{what}: blocks");
-    for (x, y) in a.blocks.iter().zip(&b.blocks) {
-        assert_eq!(
-            (x.cell, x.reachable, x.open_below, x.volume.to_bits()),
-            (y.cell, y.reachable, y.open_below, y.volume.to_bits()),
-            "{what}: a block"
-        );
-    }
-    assert_eq!(a.stock_volume.to_bits(), b.stock_volume.to_bits(), "{what}");
-    assert_eq!(a.part_volume.to_bits(), b.part_volume.to_bits(), "{what}");
-    assert_eq!(
-        a.sliver_volume.to_bits(),
-        b.sliver_volume.to_bits(),
-        "{what}"
-    );
-}
-
 #[test]
 fn bands_cut_after_are_bands_cut_from_the_start() {
     for name in PARTS {
@@ -111,7 +82,7 @@ fn bands_cut_after_are_bands_cut_from_the_start() {
                 direct.cells.len() > plain.cells.len(),
                 "{what}: the bands cut"
             );
-            same(&direct, &after, &what);
+            common::assert_same_removal(&direct, &after, &what);
             // Once banded, or for another block, it starts afresh.
             assert!(
                 after

@@ -28,30 +28,6 @@ fn read(name: &str) -> Part {
     thinwall_step::read_file(&path).unwrap().0
 }
 
-fn same(a: &Removal, b: &Removal, what: &str) {
-    assert_eq!(a.cells.len(), b.cells.len(), "{what}: cells");
-    for (k, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
-        assert_eq!(x.poly, y.poly, "{what}: cell {k}'s polygon");
-        assert_eq!(x.covers, y.covers, "{what}: cell {k}'s covers");
-    }
-    assert_eq!(a.blocks.len(), b.blocks.len(), "{what}: blocks");
-    for (x, y) in a.blocks.iter().zip(&b.blocks) {
-        assert_eq!(
-            (x.cell, x.reachable, x.open_below, x.volume.to_bits()),
-            (y.cell, y.reachable, y.open_below, y.volume.to_bits()),
-            "{what}: a block"
-        );
-    }
-    assert_eq!(a.part_pieces.len(), b.part_pieces.len(), "{what}: pieces");
-    assert_eq!(a.meshed, b.meshed, "{what}: meshed faces");
-    assert_eq!(a.part_volume.to_bits(), b.part_volume.to_bits(), "{what}");
-    assert_eq!(
-        a.sliver_volume.to_bits(),
-        b.sliver_volume.to_bits(),
-        "{what}"
-    );
-}
-
 #[test]
 fn a_removal_made_on_threads_is_the_one_made_on_one() {
     let budget = Budget::default();
@@ -79,7 +55,7 @@ fn a_removal_made_on_threads_is_the_one_made_on_one() {
             let many = Removal::new(&part, frame, &stock, &[], size, threads);
             match (one, many) {
                 (Ok(x), Ok(y)) => {
-                    same(&x, &y, &what);
+                    common::assert_same_removal(&x, &y, &what);
                     made += 1;
                     meshed += usize::from(!x.meshed.is_empty());
                 }

@@ -320,3 +320,40 @@ pub fn assert_relations_kept(
     }
     kept
 }
+
+/// Two removals are the same, bit for bit: cells (polygons, covers,
+/// areas), bands, blocks, pieces, meshed faces and volumes.
+pub fn assert_same_removal(
+    a: &thinwall_removal::Removal,
+    b: &thinwall_removal::Removal,
+    what: &str,
+) {
+    assert_eq!(a.cells.len(), b.cells.len(), "{what}: cells");
+    for (k, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
+        assert_eq!(x.poly, y.poly, "{what}: cell {k}'s polygon");
+        assert_eq!(x.covers, y.covers, "{what}: cell {k}'s covers");
+        assert_eq!(
+            x.area.to_bits(),
+            y.area.to_bits(),
+            "{what}: cell {k}'s area"
+        );
+    }
+    assert_eq!(a.cell_bands, b.cell_bands, "{what}: bands");
+    assert_eq!(a.blocks.len(), b.blocks.len(), "{what}: blocks");
+    for (x, y) in a.blocks.iter().zip(&b.blocks) {
+        assert_eq!(
+            (x.cell, x.reachable, x.open_below, x.volume.to_bits()),
+            (y.cell, y.reachable, y.open_below, y.volume.to_bits()),
+            "{what}: a block"
+        );
+    }
+    assert_eq!(a.part_pieces.len(), b.part_pieces.len(), "{what}: pieces");
+    assert_eq!(a.meshed, b.meshed, "{what}: meshed faces");
+    assert_eq!(a.stock_volume.to_bits(), b.stock_volume.to_bits(), "{what}");
+    assert_eq!(a.part_volume.to_bits(), b.part_volume.to_bits(), "{what}");
+    assert_eq!(
+        a.sliver_volume.to_bits(),
+        b.sliver_volume.to_bits(),
+        "{what}"
+    );
+}
