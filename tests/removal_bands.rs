@@ -1,16 +1,17 @@
-//! A removal cut into bands after one made without them
-//! (`Removal::with_bands`, what the plan does after the proposal) is the
-//! removal made with the bands from the start: the same cells, bit for
-//! bit, the same covers over each, the same bands and blocks; turned
-//! parts too. It refuses a removal that has bands already and another
-//! stock.
+//! Removals made two ways are the same, bit for bit. A removal cut into
+//! bands after one made without them (`Removal::with_bands`, what the plan
+//! does after the proposal) is the removal made with the bands from the
+//! start: the same cells, covers over each, bands and blocks; turned parts
+//! too. It refuses a removal that has bands already and another stock. A
+//! removal made on threads is the one made on the calling thread.
 
 mod common;
 
 use geo::{Coord, LineString, MultiPolygon, Polygon, Rect};
-use thinwall_analysis::parallel::Work;
+use thinwall_analysis::parallel::{Budget, Work};
 use thinwall_analysis::{PartAnalysis, Setup};
 use thinwall_brep::Part;
+use thinwall_geom::Vector3;
 use thinwall_removal::{frame_of, Removal, StockShape};
 
 /// Exact faces, pockets on both sides of a web with corner radii and floor
@@ -102,4 +103,58 @@ fn bands_cut_after_are_bands_cut_from_the_start() {
             );
         }
     }
+}
+
+/// A removal made on threads is the one made on the calling thread: the
+/// faces' pieces, the cells (each cover's cells cut apart and put back in
+/// order), the columns, bit for bit; and a direction the removal refuses
+/// is refused for the same face and reason (the first failing face in the
+/// part's order, though the faces after it are left unmade). Along the
+/// block's axes and a degree off them.
+#[test]
+fn a_removal_made_on_threads_is_the_one_made_on_one() {
+    let budget = Budget::default();
+    let threads = Work {
+        parallel: true,
+        budget: &budget,
+    };
+    let (mut made, mut refused, mut meshed) = (0, 0, 0);
+    let tilt = 1f64.to_radians();
+    // The turned frame is along the list; its twin as built is left out.
+    for name in PARTS
+        .iter()
+        .filter(|n| **n != "curved/frame_r400_holes.step")
+    {
+        let part = read(name);
+        let a = PartAnalysis::new(&part, Setup::default());
+        let size = a.bounding_box().diagonal();
+        for up in [
+            Vector3::new(0.0, 0.0, 1.0),
+            Vector3::new(0.0, 0.0, -1.0),
+            Vector3::new(1.0, 0.0, 0.0),
+            Vector3::new(tilt.sin(), 0.0, tilt.cos()),
+            Vector3::new(0.0, tilt.sin(), -tilt.cos()),
+        ] {
+            let what = format!("{name} up {up:?}");
+            let (frame, lo, hi) = frame_of(&a, up);
+            let stock = StockShape::Block { lo, hi };
+            let one = Removal::new(&part, frame, &stock, &[], size, Work::serial());
+            let many = Removal::new(&part, frame, &stock, &[], size, threads);
+            match (one, many) {
+                (Ok(x), Ok(y)) => {
+                    common::assert_same_removal(&x, &y, &what);
+                    made += 1;
+                    meshed += usize::from(!x.meshed.is_empty());
+                }
+                (Err(x), Err(y)) => {
+                    assert_eq!(x.to_string(), y.to_string(), "{what}");
+                    refused += 1;
+                }
+                (x, y) => panic!("{what}: {:?} and {:?}", x.err(), y.err()),
+            }
+        }
+    }
+    // Both kinds of face and both outcomes were tried.
+    assert!(made >= 20 && meshed >= 2, "{made} made, {meshed} meshed");
+    eprintln!("{made} made ({meshed} with triangles), {refused} refused");
 }
