@@ -56,32 +56,24 @@ pub fn split(
     split_shapes(&sa, &sb, None)
 }
 
-/// [`split`] of a small `a` by a large `b` whose corners' bounds are
-/// `b_bounds` ([`Bounds::of`]): the same result, bit for bit, from `b`'s
-/// rings near `a` only ([`near`]).
-pub fn split_near(
-    a: &MultiPolygon<f64>,
-    b: &MultiPolygon<f64>,
-    b_bounds: &Bounds,
-) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
+/// [`split`] of a small `a` by a large region prepared once
+/// ([`Near::of`]): the same result, bit for bit, from the region's rings
+/// near `a` only.
+pub fn split_near(a: &MultiPolygon<f64>, b: &Near) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
     let empty = || MultiPolygon::new(vec![]);
-    let Some((sa, sb, grid)) = near(a, b, b_bounds) else {
+    let Some((sa, sb, grid)) = b.by(a) else {
         return (empty(), empty());
     };
     split_shapes(&sa, &sb, Some(&grid))
 }
 
-/// [`intersection`] of a small `a` with a large `b` whose corners' bounds
-/// are `b_bounds`: the same result, bit for bit, from `b`'s rings near `a`
-/// only ([`near`]).
-pub fn intersection_near(
-    a: &MultiPolygon<f64>,
-    b: &MultiPolygon<f64>,
-    b_bounds: &Bounds,
-) -> MultiPolygon<f64> {
+/// [`intersection`] of a small `a` with a large region prepared once
+/// ([`Near::of`]): the same result, bit for bit, from the region's rings
+/// near `a` only.
+pub fn intersection_near(a: &MultiPolygon<f64>, b: &Near) -> MultiPolygon<f64> {
     use i_overlay::core::overlay::ShapeType;
     use i_overlay::float::overlay::FloatOverlay;
-    let Some((sa, sb, grid)) = near(a, b, b_bounds) else {
+    let Some((sa, sb, grid)) = b.by(a) else {
         return MultiPolygon::new(vec![]);
     };
     crate::parallel::check_deadline();
@@ -95,49 +87,90 @@ pub fn intersection_near(
     from_shapes(shapes)
 }
 
-/// `a`'s shapes, `b`'s rings whose boxes meet `a`'s (a polygon whose
-/// outline's box misses it goes whole, a hole that misses it goes from its
-/// polygon), and the bounds of both whole (`None` when `a` is empty). The
-/// rings left are `b`'s own, and the overlay's integer grid is the one the
-/// whole of both would give (it follows the bounds of all corners), so
-/// every segment that meets `a` is the same on the grid and a boolean of
-/// the two near `a` is the boolean of the whole, bit for bit.
-fn near(
-    a: &MultiPolygon<f64>,
-    b: &MultiPolygon<f64>,
-    b_bounds: &Bounds,
-) -> Option<(Shapes, Shapes, Bounds)> {
-    let sa = shapes(a);
-    let a_bounds = Bounds::of_shapes(&sa)?;
-    let meets = |r: &Vec<[f64; 2]>| {
-        Bounds::of_shapes(&vec![vec![r.clone()]]).is_some_and(|rb| rb.meets(&a_bounds))
-    };
-    let sb: Shapes = shapes(b)
-        .into_iter()
-        .filter(|rings| meets(&rings[0]))
-        .map(|rings| {
-            let mut rings = rings.into_iter();
-            let outline = rings.next().expect("a shape has its outline");
-            std::iter::once(outline)
-                .chain(rings.filter(meets))
-                .collect()
+/// A large region prepared for booleans with small ones near it: its
+/// rings as the overlay takes them, each with its box, and the bounds of
+/// all its corners.
+pub struct Near {
+    bounds: Bounds,
+    /// Per polygon, its rings (outline first) and their boxes.
+    shapes: Vec<Vec<(Bounds, Vec<[f64; 2]>)>>,
+}
+
+impl Near {
+    /// `region` prepared (`None` when it has no corners).
+    pub fn of(region: &MultiPolygon<f64>) -> Option<Self> {
+        let shapes = shapes(region);
+        let bounds = Bounds::of_shapes(&shapes)?;
+        let boxed = shapes
+            .into_iter()
+            .map(|rings| {
+                rings
+                    .into_iter()
+                    .filter_map(|r| Some((Bounds::of_ring(&r)?, r)))
+                    .collect()
+            })
+            .collect();
+        Some(Near {
+            bounds,
+            shapes: boxed,
         })
-        .collect();
-    Some((sa, sb, a_bounds.union(b_bounds)))
+    }
+
+    /// `a`'s shapes, the region's rings whose boxes meet `a`'s (a
+    /// polygon whose outline's box misses it goes whole, a hole that
+    /// misses it goes from its polygon), and the bounds of both whole
+    /// (`None` when `a` is empty). The rings left are the region's own,
+    /// and the overlay's integer grid is the one the whole of both would
+    /// give (it follows the bounds of all corners), so every segment that
+    /// meets `a` is the same on the grid and a boolean of the two near
+    /// `a` is the boolean of the whole, bit for bit.
+    fn by(&self, a: &MultiPolygon<f64>) -> Option<(Shapes, Shapes, Bounds)> {
+        let sa = shapes(a);
+        let a_bounds = Bounds::of_shapes(&sa)?;
+        let sb: Shapes = self
+            .shapes
+            .iter()
+            .filter(|rings| rings[0].0.meets(&a_bounds))
+            .map(|rings| {
+                rings
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, (b, _))| *k == 0 || b.meets(&a_bounds))
+                    .map(|(_, (_, r))| r.clone())
+                    .collect()
+            })
+            .collect();
+        Some((sa, sb, a_bounds.union(&self.bounds)))
+    }
 }
 
 /// The corners' bounds of a region: the overlay's integer grid is set by
 /// them.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bounds {
-    pub min: [f64; 2],
-    pub max: [f64; 2],
+struct Bounds {
+    min: [f64; 2],
+    max: [f64; 2],
 }
 
 impl Bounds {
     /// The bounds of `m`'s corners (`None` when it has none).
-    pub fn of(m: &MultiPolygon<f64>) -> Option<Self> {
+    #[cfg(test)]
+    fn of(m: &MultiPolygon<f64>) -> Option<Self> {
         Self::of_shapes(&shapes(m))
+    }
+
+    fn of_ring(r: &[[f64; 2]]) -> Option<Self> {
+        let first = *r.first()?;
+        Some(r.iter().fold(
+            Bounds {
+                min: first,
+                max: first,
+            },
+            |b, p| Bounds {
+                min: [b.min[0].min(p[0]), b.min[1].min(p[1])],
+                max: [b.max[0].max(p[0]), b.max[1].max(p[1])],
+            },
+        ))
     }
 
     fn of_shapes(s: &Shapes) -> Option<Self> {
@@ -445,7 +478,7 @@ mod tests {
                 .map(|p| MultiPolygon::new(vec![p]))
                 .collect(),
         );
-        let bounds = Bounds::of(&field).unwrap();
+        let near = Near::of(&field).unwrap();
         let (mut cut, mut left_out) = (0, 0);
         for _ in 0..200 {
             let (x, y, s) = (100.0 * next(), 100.0 * next(), 1.0 + 12.0 * next());
@@ -461,8 +494,8 @@ mod tests {
             let whole = split(&cell, &field);
             assert_eq!(whole.0, intersection(&cell, &field));
             assert_eq!(whole.1, difference(&cell, &field));
-            assert_eq!(split_near(&cell, &field, &bounds), whole);
-            assert_eq!(intersection_near(&cell, &field, &bounds), whole.0);
+            assert_eq!(split_near(&cell, &near), whole);
+            assert_eq!(intersection_near(&cell, &near), whole.0);
             cut += usize::from(!whole.0 .0.is_empty() && !whole.1 .0.is_empty());
             let near = Bounds::of(&cell).unwrap();
             left_out += field

@@ -27,7 +27,7 @@ use crate::tools::{CuttingTool, ToolLibrary};
 use petgraph::graph::NodeIndex;
 use serde::Serialize;
 use std::collections::HashMap;
-use thinwall_analysis::boolean::Bounds;
+use thinwall_analysis::boolean::Near;
 use thinwall_analysis::parallel::Work;
 use thinwall_removal::pieces::Meshed;
 use thinwall_removal::Removal;
@@ -439,12 +439,12 @@ pub(crate) fn tools_for(
     let at: Vec<usize> = (0..layers.len()).collect();
     work.map(&at, |&k| {
         let floor = &layers[k].floor_region;
-        let bounds = Bounds::of(floor);
+        let near = Near::of(floor);
         slots[k]
             .iter()
             .map(|slot| match *slot {
                 Slot::Drilled(h) => FieldTools::drilled(&holes[h].id),
-                Slot::Opened(i) => opened[i].on(floor, bounds.as_ref()),
+                Slot::Opened(i) => opened[i].on(near.as_ref()),
             })
             .collect()
     })

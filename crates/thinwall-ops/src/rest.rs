@@ -22,7 +22,7 @@ use geo::{Area, MultiPolygon};
 use serde::Serialize;
 use thinwall_access::reach::floor::{disk, opened};
 use thinwall_access::reach::stroke::stroked;
-use thinwall_analysis::boolean::{difference, intersection, intersection_near, union, Bounds};
+use thinwall_analysis::boolean::{difference, intersection, intersection_near, union, Near};
 use thinwall_analysis::polygon::without_slivers;
 
 /// One tool's share of a field, and its regions (Popma §4.3.4): the
@@ -272,7 +272,7 @@ pub fn select(
     floor: &MultiPolygon<f64>,
     min_share_mm2: f64,
 ) -> FieldTools {
-    open(field, mills, min_share_mm2).on(floor, Bounds::of(floor).as_ref())
+    open(field, mills, min_share_mm2).on(Near::of(floor).as_ref())
 }
 
 /// What the mills clear of one field, whatever lies under it: the part of
@@ -372,14 +372,14 @@ pub fn open(field: &CutterField, mills: &[&CuttingTool], min_share_mm2: f64) -> 
 
 impl Opened {
     /// The field's tools over `floor` (the part's floors at the layer's
-    /// bottom, x, y; `floor_bounds` its corners' bounds): each share's
-    /// floor area and the bottom adjacency. The floors near the field are
-    /// all that is cut (`boolean::intersection_near`: the same result), so
-    /// a layer's many fields over many floors cost no more than each
-    /// field's own.
-    pub fn on(&self, floor: &MultiPolygon<f64>, floor_bounds: Option<&Bounds>) -> FieldTools {
-        let floor = match floor_bounds {
-            Some(b) => intersection_near(&self.region, floor, b),
+    /// bottom, x, y, prepared once per layer; `None`: no floor): each
+    /// share's floor area and the bottom adjacency. The floors near the
+    /// field are all that is cut (`boolean::intersection_near`: the same
+    /// result), so a layer's many fields over many floors cost no more
+    /// than each field's own.
+    pub fn on(&self, floor: Option<&Near>) -> FieldTools {
+        let floor = match floor {
+            Some(f) => intersection_near(&self.region, f),
             None => MultiPolygon::new(vec![]),
         };
         let over = |c: &MultiPolygon<f64>| {
@@ -579,7 +579,7 @@ mod tests {
         ];
         let mut floor_areas = Vec::new();
         for floor in &floors {
-            let on = opened.on(floor, Bounds::of(floor).as_ref());
+            let on = opened.on(Near::of(floor).as_ref());
             assert_eq!(on.adjacency.bottom(), !floor.0.is_empty());
             floor_areas.push(on.shares.iter().map(|s| s.floor_mm2).sum::<f64>());
         }
@@ -594,7 +594,7 @@ mod tests {
             (floor_areas[2] - 3600.0 + opened.rest_mm2).abs() < 1e-6,
             "{floor_areas:?}"
         );
-        let whole = opened.on(&floors[2], Bounds::of(&floors[2]).as_ref());
+        let whole = opened.on(Near::of(&floors[2]).as_ref());
         assert!(whole.shares.len() > 1);
         for s in &whole.shares {
             assert!((s.floor_mm2 - s.cleared_mm2).abs() < 1e-6, "{s:?}");

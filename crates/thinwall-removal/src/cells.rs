@@ -6,7 +6,7 @@
 use super::flux::area;
 use crate::halving::{corners, halves};
 use geo::{BooleanOps, BoundingRect, LineString, MultiPolygon, Polygon, Rect};
-use thinwall_analysis::boolean::{self, Bounds};
+use thinwall_analysis::boolean::{self, Near};
 use thinwall_analysis::parallel::Work;
 
 /// A region that covers part of the plane.
@@ -71,7 +71,7 @@ pub fn arrange_on(
         // A many-cornered region is cut near each cell only (the same
         // result: `boolean::split_near`).
         let near = match (c.robust, &tiles) {
-            (true, None) if corners(c.region) > NEAR_CORNERS => Bounds::of(c.region),
+            (true, None) if corners(c.region) > NEAR_CORNERS => Near::of(c.region),
             _ => None,
         };
         let region = Region {
@@ -106,7 +106,7 @@ pub fn arrange_on(
 #[derive(Clone, Copy)]
 struct Region<'t> {
     tiles: Option<&'t Tiles>,
-    near: Option<&'t Bounds>,
+    near: Option<&'t Near>,
 }
 
 /// A region with more corners than this is cut near each cell only.
@@ -142,7 +142,7 @@ fn cut_cell(
     };
     let (inside, outside) = match (c.robust, bounds) {
         (true, Some(b)) => {
-            let (i, o) = boolean::split_near(&me, region, b);
+            let (i, o) = boolean::split_near(&me, b);
             (i, Some(o))
         }
         (true, None) => {
