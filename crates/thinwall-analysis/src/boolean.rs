@@ -160,21 +160,14 @@ impl Bounds {
     }
 
     fn of_ring(r: &[[f64; 2]]) -> Option<Self> {
-        let first = *r.first()?;
-        Some(r.iter().fold(
-            Bounds {
-                min: first,
-                max: first,
-            },
-            |b, p| Bounds {
-                min: [b.min[0].min(p[0]), b.min[1].min(p[1])],
-                max: [b.max[0].max(p[0]), b.max[1].max(p[1])],
-            },
-        ))
+        Self::of_points(r.iter())
     }
 
     fn of_shapes(s: &Shapes) -> Option<Self> {
-        let mut it = s.iter().flatten().flatten();
+        Self::of_points(s.iter().flatten().flatten())
+    }
+
+    fn of_points<'p>(mut it: impl Iterator<Item = &'p [f64; 2]>) -> Option<Self> {
         let first = *it.next()?;
         Some(it.fold(
             Bounds {

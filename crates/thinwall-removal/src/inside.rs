@@ -21,7 +21,6 @@ const EDGES_PER_BAND: usize = 4;
 struct Ring {
     coords: Vec<Coord<f64>>,
     bbox: Rect<f64>,
-    y0: f64,
     /// Height of a band (0 for a ring of no height: one band).
     band: f64,
     /// Per band, the edges (by their first corner) whose heights meet it.
@@ -42,41 +41,37 @@ impl Ring {
         let bbox = geo::BoundingRect::bounding_rect(ring)?;
         let n = coords.len().saturating_sub(1);
         let bands = (n / EDGES_PER_BAND).max(1);
-        let (y0, h) = (bbox.min().y, bbox.height());
-        let band = h / bands as f64;
-        let at = |y: f64| -> usize {
-            if band > 0.0 {
-                (((y - y0) / band) as usize).min(bands - 1)
-            } else {
-                0
-            }
+        let band = bbox.height() / bands as f64;
+        let mut ring = Ring {
+            coords,
+            bbox,
+            band,
+            edges: vec![Vec::new(); bands],
         };
-        let mut edges = vec![Vec::new(); bands];
         for k in 0..n {
-            let (a, b) = (coords[k].y, coords[k + 1].y);
-            for e in edges.iter_mut().take(at(a.max(b)) + 1).skip(at(a.min(b))) {
+            let (a, b) = (ring.coords[k].y, ring.coords[k + 1].y);
+            let (lo, hi) = (ring.band_index(a.min(b)), ring.band_index(a.max(b)));
+            for e in &mut ring.edges[lo..=hi] {
                 e.push(k as u32);
             }
         }
-        Some(Ring {
-            coords,
-            bbox,
-            y0,
-            band,
-            edges,
-        })
+        Some(ring)
     }
 
-    /// The band `y` falls in, or `None` outside the ring's heights.
+    /// The band height `y` (within the ring's heights) falls in.
+    fn band_index(&self, y: f64) -> usize {
+        match self.band > 0.0 {
+            true => (((y - self.bbox.min().y) / self.band) as usize).min(self.edges.len() - 1),
+            false => 0,
+        }
+    }
+
+    /// The edges filed at height `y`, or `None` outside the ring's heights.
     fn band_of(&self, y: f64) -> Option<&[u32]> {
         if y < self.bbox.min().y || y > self.bbox.max().y {
             return None;
         }
-        let k = match self.band > 0.0 {
-            true => (((y - self.y0) / self.band) as usize).min(self.edges.len() - 1),
-            false => 0,
-        };
-        Some(&self.edges[k])
+        Some(&self.edges[self.band_index(y)])
     }
 
     /// geo's winding-number rule (`coord_pos_relative_to_ring`) over the
